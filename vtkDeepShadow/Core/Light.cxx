@@ -1,0 +1,38 @@
+#include "Light.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace deepshadow
+{
+
+LightSample Light::At(const glm::dvec3& p) const
+{
+  LightSample sample;
+  if (!this->Positional)
+  {
+    sample.ToLight = glm::normalize(this->Position - this->FocalPoint);
+    sample.Diffuse = this->Diffuse;
+    sample.Specular = this->Specular;
+    return sample;
+  }
+  const glm::dvec3 fromLight = p - this->Position;
+  const double distance = glm::length(fromLight);
+  sample.ToLight = distance > 0.0 ? -fromLight / distance : glm::dvec3(0.0, 0.0, 1.0);
+  double attenuation = 1.0 /
+    (this->Attenuation.x + this->Attenuation.y * distance +
+      this->Attenuation.z * distance * distance);
+  if (this->ConeAngle < 90.0)
+  {
+    const glm::dvec3 axis = glm::normalize(this->FocalPoint - this->Position);
+    const double coneDot = glm::dot(-sample.ToLight, axis);
+    const double coneCos = std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0);
+    attenuation = coneDot >= coneCos ? attenuation * std::pow(coneDot, this->Exponent) : 0.0;
+  }
+  sample.Diffuse = attenuation * this->Diffuse;
+  sample.Specular = attenuation * this->Specular;
+  return sample;
+}
+
+}

@@ -1,0 +1,31 @@
+// Lights in world space, with VTK's semantics (vtkLight): directional unless positional;
+// positional lights attenuate by 1 / (c + l d + q d^2); a cone angle below 90 degrees makes a
+// spot light whose intensity falls off as cos^exponent inside the cone and is 0 outside.
+#ifndef deepshadow_Light_h
+#define deepshadow_Light_h
+
+#include "OpticalModel.h"
+#include "vtkDeepShadowCoreModule.h"
+
+#include <glm/vec3.hpp>
+
+namespace deepshadow
+{
+
+struct VTKDEEPSHADOWCORE_EXPORT Light
+{
+  bool Positional = false;
+  glm::dvec3 Position{ 0.0, 0.0, 1.0 };
+  glm::dvec3 FocalPoint{ 0.0 };
+  glm::dvec3 Diffuse{ 1.0 };  // colour x intensity
+  glm::dvec3 Specular{ 1.0 }; // colour x intensity
+  glm::dvec3 Attenuation{ 1.0, 0.0, 0.0 };
+  double ConeAngle = 180.0; // degrees; < 90 makes a spot light
+  double Exponent = 1.0;
+
+  /** Direction and colour of this light as seen from world point `p`. */
+  LightSample At(const glm::dvec3& p) const;
+};
+
+}
+#endif

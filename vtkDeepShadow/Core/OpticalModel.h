@@ -1,0 +1,99 @@
+// The optical model shared by the GPU ray caster and the CPU reference: emission and
+// absorption, front-to-back, with the opacity corrected for the step length, and Phong
+// shading of gradient normals. Every function here has a GLSL twin in
+// Shaders/vtkDeepShadowVolumeFS.glsl with the same name; tests compare them.
+#ifndef deepshadow_OpticalModel_h
+#define deepshadow_OpticalModel_h
+
+#include "vtkDeepShadowCoreModule.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace deepshadow
+{
+
+/**
+ * Opacity of a step of `stepLength` for a material whose opacity over `unitDistance` is
+ * `alpha`: 1 - (1 - alpha)^(stepLength / unitDistance). Exact for homogeneous media;
+ * alpha = 1 stays 1, alpha = 0 stays 0; clamped to [0, 1].
+ */
+inline double CorrectOpacity(double alpha, double stepLength, double unitDistance)
+{
+  alpha = std::clamp(alpha, 0.0, 1.0);
+  if (alpha <= 0.0 || alpha >= 1.0)
+  {
+    return alpha;
+  }
+  return 1.0 - std::pow(1.0 - alpha, stepLength / unitDistance);
+}
+
+/** Front-to-back "over" of a sample (straight colour, opacity) under what is accumulated. */
+inline void CompositeFrontToBack(glm::dvec4& accumulated, const glm::dvec3& color, double alpha)
+{
+  const double weight = (1.0 - accumulated.a) * alpha;
+  accumulated.r += weight * color.r;
+  accumulated.g += weight * color.g;
+  accumulated.b += weight * color.b;
+  accumulated.a += weight;
+}
+
+/** Surface-like material of a volume (vtkVolumeProperty's ambient/diffuse/specular). */
+struct Material
+{
+  double Ambient = 0.1;
+  double Diffuse = 0.7;
+  double Specular = 0.2;
+  double SpecularPower = 10.0;
+};
+
+/** What one light delivers at a point: direction to it and its colours after attenuation. */
+struct LightSample
+{
+  glm::dvec3 ToLight{ 0.0, 0.0, 1.0 }; // unit vector from the point towards the light
+  glm::dvec3 Diffuse{ 1.0 };
+  glm::dvec3 Specular{ 1.0 };
+};
+
+/**
+ * Phong term of one light (no ambient): kd C Ld |N.L| + ks Ls |N.H|^p with two-sided
+ * lighting, max(., 0) otherwise. A zero normal gives no diffuse and no specular light.
+ */
+inline glm::dvec3 PhongLight(const glm::dvec3& color, const glm::dvec3& normal,
+  const glm::dvec3& toViewer, const LightSample& light, const Material& material, bool twoSided)
+{
+  if (glm::dot(normal, normal) == 0.0)
+  {
+    return glm::dvec3(0.0);
+  }
+  const glm::dvec3 halfway = glm::normalize(light.ToLight + toViewer);
+  double nDotL = glm::dot(normal, light.ToLight);
+  double nDotH = glm::dot(normal, halfway);
+  if (twoSided)
+  {
+    nDotL = std::abs(nDotL);
+    nDotH = std::abs(nDotH);
+  }
+  nDotL = std::max(nDotL, 0.0);
+  nDotH = std::max(nDotH, 0.0);
+  const double specular = nDotH > 0.0 ? std::pow(nDotH, material.SpecularPower) : 0.0;
+  return material.Diffuse * nDotL * light.Diffuse * color +
+    material.Specular * specular * light.Specular;
+}
+
+/** Outward unit normal from a world-space gradient (zero stays zero). */
+inline glm::dvec3 NormalFromGradient(const glm::dvec3& gradient)
+{
+  const double length = glm::length(gradient);
+  return length > 0.0 ? -gradient / length : glm::dvec3(0.0);
+}
+
+/** Rays stop once accumulated opacity exceeds this (VTK's value: 1 - 1/255). */
+constexpr double DefaultTerminationOpacity = 1.0 - 1.0 / 255.0;
+
+}
+#endif

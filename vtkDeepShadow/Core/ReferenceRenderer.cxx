@@ -1,0 +1,133 @@
+#include "ReferenceRenderer.h"
+
+#include "Jitter.h"
+#include "Parallel.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace deepshadow
+{
+
+MarchSettings MarchSettings::GpuTwin(
+  double sampleDistance, int tableSize, bool jitter, uint32_t seed, double terminationOpacity)
+{
+  MarchSettings settings;
+  settings.SampleDistance = sampleDistance;
+  settings.Jitter = jitter;
+  settings.JitterSeed = seed;
+  settings.TerminationOpacity = terminationOpacity;
+  settings.TransferTableSize = tableSize;
+  return settings;
+}
+
+glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
+  const Ray& ray, double tLimit, double offset, const MarchSettings& settings,
+  const TransferTable* table)
+{
+  const VolumeGrid& grid = *volume.Grid;
+  double tEnter = 0.0, tExit = 0.0;
+  if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1),
+        tEnter, tExit))
+  {
+    return glm::dvec4(0.0);
+  }
+  const double t0 = std::max(tEnter, 0.0);
+  const double t1 = std::min(tExit, tLimit);
+  const double dt = settings.SampleDistance;
+  const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(ray.Origin, 1.0));
+  const glm::dvec3 indexDirection =
+    glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(ray.Direction, 0.0));
+
+  glm::dvec4 accumulated(0.0);
+  for (long k = 0;; ++k)
+  {
+    const double t = t0 + (static_cast<double>(k) + offset) * dt;
+    if (!(t < t1) || accumulated.a > settings.TerminationOpacity)
+    {
+      break;
+    }
+    const glm::dvec3 index = indexOrigin + t * indexDirection;
+    const double scalar = grid.Sample(index, volume.Sampling);
+
+    glm::dvec3 color;
+    double alpha;
+    if (table)
+    {
+      const glm::dvec4 entry = table->Lookup(scalar);
+      color = glm::dvec3(entry);
+      alpha = entry.a;
+    }
+    else
+    {
+      color = volume.Transfer.Color(scalar);
+      alpha = CorrectOpacity(volume.Transfer.Opacity.Evaluate(scalar), dt,
+        volume.Transfer.OpacityUnitDistance);
+    }
+    if (alpha <= 0.0)
+    {
+      continue;
+    }
+    if (volume.Shade)
+    {
+      const glm::dvec3 position = ray.Origin + t * ray.Direction;
+      const glm::dvec3 normal = NormalFromGradient(grid.WorldGradient(index, volume.Sampling));
+      glm::dvec3 lit = volume.Surface.Ambient * color * scene.AmbientLight;
+      for (const Light& light : scene.Lights)
+      {
+        lit += PhongLight(color, normal, -ray.Direction, light.At(position), volume.Surface,
+          scene.TwoSidedLighting);
+      }
+      color = glm::clamp(lit, 0.0, 1.0);
+    }
+    CompositeFrontToBack(accumulated, color, alpha);
+  }
+  return accumulated;
+}
+
+Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads)
+{
+  const int width = scene.View.GetWidth();
+  const int height = scene.View.GetHeight();
+  Image image(width, height);
+
+  std::vector<TransferTable> tables;
+  if (settings.TransferTableSize > 0)
+  {
+    for (const VolumeInstance& volume : scene.Volumes)
+    {
+      const glm::dvec2 range = volume.Grid->GetRange();
+      tables.push_back(TransferTable::Sample(
+        volume.Transfer, range.x, range.y, settings.TransferTableSize, settings.SampleDistance));
+    }
+  }
+
+  ParallelFor(
+    height,
+    [&](int y) {
+      for (int x = 0; x < width; ++x)
+      {
+        const Ray ray = scene.View.PixelRay(x, y);
+        const double offset = settings.Jitter
+          ? JitterOffset(static_cast<uint32_t>(x), static_cast<uint32_t>(y), settings.JitterSeed)
+          : UnjitteredOffset;
+        glm::dvec3 pixel = scene.Background;
+        for (size_t v = 0; v < scene.Volumes.size(); ++v)
+        {
+          const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], ray,
+            std::numeric_limits<double>::infinity(), offset, settings,
+            tables.empty() ? nullptr : &tables[v]);
+          pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+        }
+        image.Set(x, y, pixel);
+      }
+    },
+    threads);
+  return image;
+}
+
+}

@@ -1,0 +1,129 @@
+#include "VolumeGrid.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace deepshadow
+{
+
+NonFiniteCount CountNonFinite(const float* values, size_t count)
+{
+  NonFiniteCount result;
+  for (size_t i = 0; i < count; ++i)
+  {
+    const float v = values[i];
+    if (std::isnan(v))
+    {
+      ++result.NaN;
+    }
+    else if (std::isinf(v))
+    {
+      ++(v > 0 ? result.PositiveInfinity : result.NegativeInfinity);
+    }
+  }
+  return result;
+}
+
+void ReplaceNonFinite(float* values, size_t count)
+{
+  float lo = std::numeric_limits<float>::max();
+  float hi = std::numeric_limits<float>::lowest();
+  for (size_t i = 0; i < count; ++i)
+  {
+    if (std::isfinite(values[i]))
+    {
+      lo = std::min(lo, values[i]);
+      hi = std::max(hi, values[i]);
+    }
+  }
+  if (lo > hi)
+  {
+    lo = hi = 0.0f;
+  }
+  for (size_t i = 0; i < count; ++i)
+  {
+    float& v = values[i];
+    if (std::isnan(v))
+    {
+      v = lo;
+    }
+    else if (std::isinf(v))
+    {
+      v = v > 0 ? hi : lo;
+    }
+  }
+}
+
+VolumeGrid::VolumeGrid(
+  const glm::ivec3& dims, std::vector<float> scalars, const glm::dmat4& indexToWorld)
+  : Dims(dims)
+  , Scalars(std::move(scalars))
+  , IndexToWorld(indexToWorld)
+  , WorldToIndex(glm::inverse(indexToWorld))
+{
+  double lo = std::numeric_limits<double>::max();
+  double hi = std::numeric_limits<double>::lowest();
+  for (float v : this->Scalars)
+  {
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, static_cast<double>(v));
+      hi = std::max(hi, static_cast<double>(v));
+    }
+  }
+  this->Range = lo <= hi ? glm::dvec2(lo, hi) : glm::dvec2(0.0, 0.0);
+}
+
+double VolumeGrid::Sample(const glm::dvec3& index, Interpolation interpolation) const
+{
+  const glm::dvec3 maxIndex = glm::dvec3(this->Dims - 1);
+  const glm::dvec3 p = glm::clamp(index, glm::dvec3(0.0), maxIndex);
+  if (interpolation == Interpolation::Nearest)
+  {
+    // GL_NEAREST picks floor(texcoord * dims) = floor(index + 0.5).
+    const glm::ivec3 n = glm::min(glm::ivec3(glm::floor(p + 0.5)), this->Dims - 1);
+    return this->At(n.x, n.y, n.z);
+  }
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(p)), glm::max(this->Dims - 2, 0));
+  const glm::ivec3 i1 = glm::min(i0 + 1, this->Dims - 1);
+  const glm::dvec3 t = p - glm::dvec3(i0);
+  const double c000 = this->At(i0.x, i0.y, i0.z), c100 = this->At(i1.x, i0.y, i0.z);
+  const double c010 = this->At(i0.x, i1.y, i0.z), c110 = this->At(i1.x, i1.y, i0.z);
+  const double c001 = this->At(i0.x, i0.y, i1.z), c101 = this->At(i1.x, i0.y, i1.z);
+  const double c011 = this->At(i0.x, i1.y, i1.z), c111 = this->At(i1.x, i1.y, i1.z);
+  const double c00 = c000 + t.x * (c100 - c000), c10 = c010 + t.x * (c110 - c010);
+  const double c01 = c001 + t.x * (c101 - c001), c11 = c011 + t.x * (c111 - c011);
+  const double c0 = c00 + t.y * (c10 - c00), c1 = c01 + t.y * (c11 - c01);
+  return c0 + t.z * (c1 - c0);
+}
+
+glm::dvec3 VolumeGrid::IndexGradient(const glm::dvec3& index, Interpolation interpolation) const
+{
+  glm::dvec3 gradient;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    glm::dvec3 offset(0.0);
+    offset[axis] = 1.0;
+    gradient[axis] =
+      0.5 * (this->Sample(index + offset, interpolation) - this->Sample(index - offset, interpolation));
+  }
+  return gradient;
+}
+
+glm::dvec3 VolumeGrid::WorldGradient(const glm::dvec3& index, Interpolation interpolation) const
+{
+  return glm::transpose(glm::dmat3(this->WorldToIndex)) * this->IndexGradient(index, interpolation);
+}
+
+bool VolumeGrid::ContainsIndex(const glm::dvec3& index) const
+{
+  const glm::dvec3 maxIndex = glm::dvec3(this->Dims - 1);
+  return index.x >= 0.0 && index.y >= 0.0 && index.z >= 0.0 && index.x <= maxIndex.x &&
+    index.y <= maxIndex.y && index.z <= maxIndex.z;
+}
+
+}

@@ -1,0 +1,87 @@
+// A scalar volume on a regular grid, sampled exactly as an OpenGL 3D texture samples it.
+//
+// Positions are continuous voxel indices: voxel (i, j, k) sits at index (i, j, k), the
+// texture coordinate of index p is (p + 0.5) / Dims, and lookups clamp to the edge. So the
+// CPU reference and the GPU mapper read the same value at the same place.
+#ifndef deepshadow_VolumeGrid_h
+#define deepshadow_VolumeGrid_h
+
+#include "vtkDeepShadowCoreModule.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace deepshadow
+{
+
+enum class Interpolation
+{
+  Nearest,
+  Linear
+};
+
+/** Non-finite samples found in a scalar array. */
+struct NonFiniteCount
+{
+  size_t NaN = 0;
+  size_t PositiveInfinity = 0;
+  size_t NegativeInfinity = 0;
+  size_t Total() const { return NaN + PositiveInfinity + NegativeInfinity; }
+};
+
+VTKDEEPSHADOWCORE_EXPORT NonFiniteCount CountNonFinite(const float* values, size_t count);
+
+/**
+ * The defined treatment of non-finite samples when a user asks to render them anyway:
+ * NaN becomes the smallest finite value (empty space under the usual transfer functions),
+ * +Inf the largest, -Inf the smallest. An array with no finite value becomes all zeros.
+ */
+VTKDEEPSHADOWCORE_EXPORT void ReplaceNonFinite(float* values, size_t count);
+
+class VTKDEEPSHADOWCORE_EXPORT VolumeGrid
+{
+public:
+  VolumeGrid() = default;
+  /** `scalars` has x fastest; `indexToWorld` maps voxel indices to world coordinates. */
+  VolumeGrid(const glm::ivec3& dims, std::vector<float> scalars, const glm::dmat4& indexToWorld);
+
+  const glm::ivec3& GetDims() const { return this->Dims; }
+  const std::vector<float>& GetScalars() const { return this->Scalars; }
+  const glm::dmat4& GetIndexToWorld() const { return this->IndexToWorld; }
+  const glm::dmat4& GetWorldToIndex() const { return this->WorldToIndex; }
+  /** Smallest and largest (finite) scalar. */
+  const glm::dvec2& GetRange() const { return this->Range; }
+
+  float At(int i, int j, int k) const
+  {
+    return this->Scalars[static_cast<size_t>(i) +
+      static_cast<size_t>(this->Dims.x) *
+        (static_cast<size_t>(j) + static_cast<size_t>(this->Dims.y) * static_cast<size_t>(k))];
+  }
+
+  /** Value at a continuous index, as GL_NEAREST / GL_LINEAR with clamp-to-edge read it. */
+  double Sample(const glm::dvec3& index, Interpolation interpolation) const;
+
+  /** Central differences over +-1 voxel (the GPU's formula), per index unit. */
+  glm::dvec3 IndexGradient(const glm::dvec3& index, Interpolation interpolation) const;
+  /** The same gradient in world units: transpose(J) * g with J the world-to-index Jacobian. */
+  glm::dvec3 WorldGradient(const glm::dvec3& index, Interpolation interpolation) const;
+
+  /** True if a continuous index lies in the sampled box [0, Dims - 1]. */
+  bool ContainsIndex(const glm::dvec3& index) const;
+
+private:
+  glm::ivec3 Dims{ 0 };
+  std::vector<float> Scalars;
+  glm::dmat4 IndexToWorld{ 1.0 };
+  glm::dmat4 WorldToIndex{ 1.0 };
+  glm::dvec2 Range{ 0.0, 0.0 };
+};
+
+}
+#endif

@@ -1,0 +1,194 @@
+// Definitions of the GL/GLX/GLEW symbols that let Debian's GLX-only VTK render into a
+// headless context. See GLEntryPoints.h for why each exists.
+#include "GLEntryPoints.h"
+
+#include <GL/glew.h> // GL types, glewInit's declaration and error codes
+
+#include <atomic>
+#include <cstring>
+#include <dlfcn.h>
+#include <mutex>
+
+#define DEEPSHADOW_INTERPOSE extern "C" __attribute__((visibility("default")))
+
+namespace deepshadow
+{
+namespace headless
+{
+namespace
+{
+std::atomic<int> ActiveBackendValue{ static_cast<int>(Backend::None) };
+std::mutex BackendMutex;
+int LiveContexts = 0;
+
+// The definition that would have been used without us (libGLEW, libGLX, libOpenGL).
+GLProc NextDefinition(const char* name)
+{
+  return reinterpret_cast<GLProc>(dlsym(RTLD_NEXT, name));
+}
+
+GLProc Lookup(Backend backend, const char* name)
+{
+  switch (backend)
+  {
+    case Backend::OSMesa:
+      return OSMesaLookup(name);
+    case Backend::EGL:
+      return EGLLookup(name);
+    case Backend::None:
+      break;
+  }
+  return NextDefinition(name);
+}
+
+// One cache slot per backend and entry point, filled on first call.
+template <int Index>
+GLProc CachedLookup(const char* name)
+{
+  static std::atomic<GLProc> cache[3];
+  const int backend = ActiveBackendValue.load(std::memory_order_relaxed);
+  GLProc proc = cache[backend].load(std::memory_order_relaxed);
+  if (!proc)
+  {
+    proc = Lookup(static_cast<Backend>(backend), name);
+    cache[backend].store(proc, std::memory_order_relaxed);
+  }
+  return proc;
+}
+
+enum EntryIndex
+{
+#define ENTRY(ret, name, params, args) Index_##name,
+#include "GLCoreEntryPoints.def"
+#undef ENTRY
+  EntryCount
+};
+}
+
+bool AcquireBackend(Backend backend, std::string& error)
+{
+  std::lock_guard<std::mutex> lock(BackendMutex);
+  const auto active = static_cast<Backend>(ActiveBackendValue.load());
+  if (LiveContexts > 0 && active != backend)
+  {
+    error = std::string("a headless ") + BackendName(active) +
+      " context is alive in this process; GLEW's entry points are process-wide, so a " +
+      BackendName(backend) + " context cannot be used at the same time";
+    return false;
+  }
+  ActiveBackendValue.store(static_cast<int>(backend));
+  ++LiveContexts;
+  return true;
+}
+
+void ReleaseBackend(Backend backend)
+{
+  std::lock_guard<std::mutex> lock(BackendMutex);
+  if (LiveContexts > 0 && static_cast<Backend>(ActiveBackendValue.load()) == backend)
+  {
+    --LiveContexts;
+  }
+}
+
+Backend ActiveBackend()
+{
+  return static_cast<Backend>(ActiveBackendValue.load());
+}
+
+bool InterpositionIsEffective(std::string& error)
+{
+  // The file this function lives in: every forwarder must come from it too.
+  Dl_info self{};
+  if (!dladdr(reinterpret_cast<void*>(&InterpositionIsEffective), &self) || !self.dli_fname)
+  {
+    error = "cannot locate the vtkDeepShadowRendering library in memory";
+    return false;
+  }
+  static const char* const names[] = { "glewInit", "glXGetProcAddressARB", "glClear" };
+  for (const char* name : names)
+  {
+    Dl_info used{};
+    void* symbol = dlsym(RTLD_DEFAULT, name);
+    if (!symbol || !dladdr(symbol, &used) || !used.dli_fname ||
+      std::strcmp(used.dli_fname, self.dli_fname) != 0)
+    {
+      error = std::string("the process uses ") + name + " from " +
+        (used.dli_fname ? used.dli_fname : "nowhere") + " instead of " + self.dli_fname +
+        ": link vtkDeepShadowRendering before VTK's OpenGL libraries (or LD_PRELOAD it) so "
+        "that headless rendering reaches its context";
+      return false;
+    }
+  }
+  return true;
+}
+
+}
+}
+
+using deepshadow::headless::ActiveBackend;
+using deepshadow::headless::Backend;
+using deepshadow::headless::GLProc;
+
+// (2) GL 1.0/1.1 functions called directly by VTK.
+#define ENTRY(ret, name, params, args)                                                            \
+  DEEPSHADOW_INTERPOSE ret name params                                                            \
+  {                                                                                               \
+    using Fn = ret(GLAPIENTRY*) params;                                                           \
+    return reinterpret_cast<Fn>(                                                                  \
+      deepshadow::headless::CachedLookup<deepshadow::headless::Index_##name>(#name)) args;        \
+  }
+#include "GLCoreEntryPoints.def"
+#undef ENTRY
+
+// (3) With a headless context current there is no GLX display, whatever libGLX believes
+// (glvnd's answer is undefined while an EGL context is current).
+DEEPSHADOW_INTERPOSE void* glXGetCurrentDisplay()
+{
+  if (ActiveBackend() != Backend::None)
+  {
+    return nullptr;
+  }
+  using Fn = void* (*)();
+  static Fn next = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "glXGetCurrentDisplay"));
+  return next ? next() : nullptr;
+}
+
+// (1a) GLEW's loader: GL names come from the active backend.
+DEEPSHADOW_INTERPOSE GLProc glXGetProcAddressARB(const GLubyte* procName)
+{
+  const char* name = reinterpret_cast<const char*>(procName);
+  const Backend backend = ActiveBackend();
+  if (backend == Backend::None)
+  {
+    using Fn = GLProc (*)(const GLubyte*);
+    static Fn next = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "glXGetProcAddressARB"));
+    return next ? next(procName) : nullptr;
+  }
+  if (std::strncmp(name, "glX", 3) == 0)
+  {
+    // GLEW probes GLX only to learn there is no display.
+    return std::strcmp(name, "glXGetCurrentDisplay") == 0
+      ? reinterpret_cast<GLProc>(&glXGetCurrentDisplay)
+      : nullptr;
+  }
+  return backend == Backend::OSMesa ? deepshadow::headless::OSMesaLookup(name)
+                                    : deepshadow::headless::EGLLookup(name);
+}
+
+// (1b) "No GLX display" is the expected answer for a headless context: the GL entry points
+// were loaded before GLEW looked for GLX, so report success.
+DEEPSHADOW_INTERPOSE GLenum glewInit()
+{
+  using Fn = GLenum (*)();
+  static Fn next = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "glewInit"));
+  if (!next)
+  {
+    return GLEW_ERROR_NO_GL_VERSION;
+  }
+  const GLenum result = next();
+  if (result == GLEW_ERROR_NO_GLX_DISPLAY && ActiveBackend() != Backend::None)
+  {
+    return GLEW_OK;
+  }
+  return result;
+}

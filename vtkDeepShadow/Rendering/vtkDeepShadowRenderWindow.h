@@ -1,0 +1,125 @@
+/**
+ * @class   vtkDeepShadowRenderWindow
+ * @brief   Render window with no X server and no display: OSMesa or EGL, llvmpipe or GPU.
+ *
+ * A drop-in vtkRenderWindow for machines with no display. It renders VTK 9.1 (as Debian
+ * builds it, for GLX) into an OSMesa context (the default) or an EGL context with no surface
+ * (Mesa's surfaceless platform, or a GPU's device platform). Read the pixels the usual way
+ * (vtkWindowToImageFilter, GetPixelData, vtkRegressionTestImage).
+ *
+ * When this module is linked and the process has no display (neither DISPLAY nor
+ * WAYLAND_DISPLAY is set), `vtkRenderWindow::New()` returns this class, so an ordinary VTK
+ * pipeline renders headless unchanged. `VTK_DEEPSHADOW_HEADLESS=1` forces that override,
+ * `=0` turns it off. `VTK_DEEPSHADOW_BACKEND=osmesa|egl` picks the default backend.
+ *
+ * Only one backend can be in use in a process at a time (GLEW's entry points are global);
+ * asking for the other while a context of the first exists is an error.
+ */
+#ifndef vtkDeepShadowRenderWindow_h
+#define vtkDeepShadowRenderWindow_h
+
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkOpenGLRenderWindow.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+namespace deepshadow
+{
+namespace headless
+{
+class HeadlessContext;
+}
+}
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowRenderWindow : public vtkOpenGLRenderWindow
+{
+public:
+  static vtkDeepShadowRenderWindow* New();
+  vtkTypeMacro(vtkDeepShadowRenderWindow, vtkOpenGLRenderWindow);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum BackendType
+  {
+    OSMesa = 1,
+    EGL = 2
+  };
+
+  ///@{
+  /**
+   * Which context to create. Takes effect at the next context creation (first render, or
+   * after Finalize()). Default: VTK_DEEPSHADOW_BACKEND, else OSMesa.
+   */
+  vtkSetClampMacro(Backend, int, OSMesa, EGL);
+  vtkGetMacro(Backend, int);
+  void SetBackendToOSMesa() { this->SetBackend(OSMesa); }
+  void SetBackendToEGL() { this->SetBackend(EGL); }
+  const char* GetBackendAsString() const;
+  ///@}
+
+  /** Parses "osmesa" / "egl" (case-insensitive); returns 0 for anything else. */
+  static int BackendFromString(const char* name);
+  /** The backend a new window starts with (VTK_DEEPSHADOW_BACKEND, else OSMesa). */
+  static int GetDefaultBackend();
+
+  /** True once a context exists. */
+  bool HasContext() const;
+  /** Where the context came from ("OSMesa ...", "EGL surfaceless platform", ...). */
+  std::string GetContextDescription() const;
+  /** Why the last context creation failed; empty when it did not. */
+  const std::string& GetLastError() const { return this->LastError; }
+
+  // vtkRenderWindow / vtkOpenGLRenderWindow API.
+  void Initialize() override;
+  void Finalize() override;
+  void Start() override;
+  void Frame() override;
+  void MakeCurrent() override;
+  void ReleaseCurrent() override;
+  bool IsCurrent() override;
+  int SupportsOpenGL() override;
+  vtkTypeBool IsDirect() override { return 1; }
+  const char* ReportCapabilities() override;
+
+  void SetSize(int width, int height) override;
+  void SetSize(int a[2]) override { this->SetSize(a[0], a[1]); }
+  int* GetScreenSize() VTK_SIZEHINT(2) override;
+  void SetShowWindow(bool) override;
+
+  // A headless window has no native window, display or cursor.
+  void* GetGenericContext() override;
+  void* GetGenericWindowId() override { return nullptr; }
+  void* GetGenericDisplayId() override { return nullptr; }
+  void* GetGenericParentId() override { return nullptr; }
+  void* GetGenericDrawable() override { return nullptr; }
+  void SetDisplayId(void*) override {}
+  void SetWindowId(void*) override {}
+  void SetParentId(void*) override {}
+  void SetWindowInfo(const char*) override {}
+  void SetParentInfo(const char*) override {}
+  void SetNextWindowId(void*) override {}
+  void SetNextWindowInfo(const char*) override {}
+  void SetFullScreen(vtkTypeBool) override {}
+  void WindowRemap() override {}
+  vtkTypeBool GetEventPending() override { return 0; }
+  void HideCursor() override {}
+  void ShowCursor() override {}
+
+protected:
+  vtkDeepShadowRenderWindow();
+  ~vtkDeepShadowRenderWindow() override;
+
+  void CreateAWindow() override { this->Initialize(); }
+  void DestroyWindow() override { this->Finalize(); }
+
+  int Backend;
+  std::string LastError;
+  std::unique_ptr<deepshadow::headless::HeadlessContext> Context;
+  int ContextBackend = 0; // backend of Context, fixed at its creation
+
+private:
+  vtkDeepShadowRenderWindow(const vtkDeepShadowRenderWindow&) = delete;
+  void operator=(const vtkDeepShadowRenderWindow&) = delete;
+};
+
+#endif
