@@ -1,6 +1,7 @@
 #include "VolumeGrid.h"
 
 #include <glm/mat4x4.hpp>
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -56,6 +57,16 @@ void ReplaceNonFinite(float* values, size_t count)
       v = v > 0 ? hi : lo;
     }
   }
+}
+
+double DefaultSampleDistance(const glm::dmat4& indexToWorld)
+{
+  double shortest = std::numeric_limits<double>::max();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    shortest = std::min(shortest, glm::length(glm::dvec3(indexToWorld[axis])));
+  }
+  return 0.5 * shortest;
 }
 
 VolumeGrid::VolumeGrid(

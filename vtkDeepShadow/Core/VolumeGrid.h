@@ -43,6 +43,12 @@ VTKDEEPSHADOWCORE_EXPORT NonFiniteCount CountNonFinite(const float* values, size
  */
 VTKDEEPSHADOWCORE_EXPORT void ReplaceNonFinite(float* values, size_t count);
 
+/**
+ * Sample distance used when none is set: half the shortest world-space voxel edge of the
+ * grid (index-to-world includes spacing, direction and the prop's transform).
+ */
+VTKDEEPSHADOWCORE_EXPORT double DefaultSampleDistance(const glm::dmat4& indexToWorld);
+
 class VTKDEEPSHADOWCORE_EXPORT VolumeGrid
 {
 public:

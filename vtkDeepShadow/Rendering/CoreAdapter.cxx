@@ -1,0 +1,303 @@
+#include "CoreAdapter.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkCellData.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace deepshadow
+{
+namespace adapter
+{
+namespace
+{
+constexpr int DenseSamples = 4097;
+
+bool IsSupportedType(int type)
+{
+  return type == VTK_UNSIGNED_CHAR || type == VTK_SHORT || type == VTK_UNSIGNED_SHORT ||
+    type == VTK_FLOAT;
+}
+
+PiecewiseLinear FromVTK(vtkPiecewiseFunction* function)
+{
+  const int size = function ? function->GetSize() : 0;
+  if (size == 0)
+  {
+    return PiecewiseLinear({ { 0.0, 0.0 } });
+  }
+  bool linear = true;
+  std::vector<std::pair<double, double>> nodes;
+  for (int i = 0; i < size; ++i)
+  {
+    double node[4];
+    function->GetNodeValue(i, node);
+    nodes.emplace_back(node[0], node[1]);
+    linear = linear && node[2] == 0.5 && node[3] == 0.0;
+  }
+  if (!linear && size > 1)
+  {
+    const double x0 = nodes.front().first, x1 = nodes.back().first;
+    std::vector<double> table(DenseSamples);
+    function->GetTable(x0, x1, DenseSamples, table.data());
+    nodes.clear();
+    for (int i = 0; i < DenseSamples; ++i)
+    {
+      nodes.emplace_back(x0 + (x1 - x0) * i / (DenseSamples - 1.0), table[i]);
+    }
+  }
+  return PiecewiseLinear(std::move(nodes), function->GetClamping() != 0);
+}
+
+void FromVTK(vtkColorTransferFunction* function, TransferFunction& tf)
+{
+  std::vector<std::pair<double, double>> r, g, b;
+  const int size = function ? function->GetSize() : 0;
+  bool linear = function && function->GetColorSpace() == VTK_CTF_RGB;
+  for (int i = 0; i < size; ++i)
+  {
+    double node[6];
+    function->GetNodeValue(i, node);
+    r.emplace_back(node[0], node[1]);
+    g.emplace_back(node[0], node[2]);
+    b.emplace_back(node[0], node[3]);
+    linear = linear && node[4] == 0.5 && node[5] == 0.0;
+  }
+  if (size == 0)
+  {
+    // VTK's default: a grey ramp is not assumed; an absent colour function is white.
+    r = g = b = { { 0.0, 1.0 } };
+  }
+  else if (!linear && size > 1)
+  {
+    r.clear(), g.clear(), b.clear();
+    const double x0 = function->GetRange()[0], x1 = function->GetRange()[1];
+    for (int i = 0; i < DenseSamples; ++i)
+    {
+      const double x = x0 + (x1 - x0) * i / (DenseSamples - 1.0);
+      double rgb[3];
+      function->GetColor(x, rgb);
+      r.emplace_back(x, rgb[0]);
+      g.emplace_back(x, rgb[1]);
+      b.emplace_back(x, rgb[2]);
+    }
+  }
+  const bool clamp = !function || function->GetClamping() != 0;
+  tf.Red = PiecewiseLinear(std::move(r), clamp);
+  tf.Green = PiecewiseLinear(std::move(g), clamp);
+  tf.Blue = PiecewiseLinear(std::move(b), clamp);
+}
+
+glm::dvec3 ToGlm3(const double v[3])
+{
+  return { v[0], v[1], v[2] };
+}
+}
+
+glm::dmat4 ToGlm(const vtkMatrix4x4* matrix)
+{
+  glm::dmat4 m(1.0);
+  if (matrix)
+  {
+    for (int row = 0; row < 4; ++row)
+    {
+      for (int column = 0; column < 4; ++column)
+      {
+        m[column][row] = matrix->GetElement(row, column);
+      }
+    }
+  }
+  return m;
+}
+
+std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
+{
+  scalars = nullptr;
+  if (!image)
+  {
+    return "no input volume (call SetInputData or SetInputConnection)";
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || image->GetNumberOfPoints() == 0)
+  {
+    return "the input volume is empty (no points)";
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (dims[axis] < 2)
+    {
+      std::ostringstream why;
+      why << "the volume has zero extent along " << "xyz"[axis] << " (" << dims[0] << "x"
+          << dims[1] << "x" << dims[2] << " points); at least 2 points per axis are needed";
+      return why.str();
+    }
+  }
+  const double* spacing = image->GetSpacing();
+  const double* origin = image->GetOrigin();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (!std::isfinite(spacing[axis]) || spacing[axis] == 0.0 || !std::isfinite(origin[axis]))
+    {
+      return "the volume's spacing must be non-zero and finite, and its origin finite";
+    }
+  }
+  vtkDataArray* array = image->GetPointData()->GetScalars();
+  if (!array)
+  {
+    return image->GetCellData()->GetScalars()
+      ? "the volume has cell scalars only; convert them with vtkCellDataToPointData"
+      : "the volume has no point scalars";
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    return "the volume's scalars have " + std::to_string(array->GetNumberOfComponents()) +
+      " components; only single-component scalars are supported";
+  }
+  if (!IsSupportedType(array->GetDataType()))
+  {
+    return std::string("scalar type ") + array->GetDataTypeAsString() +
+      " is not supported (unsigned char, short, unsigned short or float)";
+  }
+  scalars = array;
+  return std::string();
+}
+
+glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix)
+{
+  vtkNew<vtkMatrix4x4> indexToPhysical;
+  image->ComputeIndexToPhysicalMatrix(image->GetOrigin(), image->GetSpacing(),
+    image->GetDirectionMatrix()->GetData(), indexToPhysical->GetData());
+  // VTK's index space starts at the extent's minimum, ours at the first point.
+  const int* extent = image->GetExtent();
+  const glm::dmat4 shift = glm::dmat4(1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0, 0,
+    extent[0], extent[2], extent[4], 1.0);
+  return ToGlm(propMatrix) * ToGlm(indexToPhysical) * shift;
+}
+
+std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4x4* propMatrix,
+  bool replaceNonFinite, std::string& error)
+{
+  vtkDataArray* scalars = nullptr;
+  error = CheckVolumeInput(image, scalars);
+  if (!error.empty())
+  {
+    return nullptr;
+  }
+  const vtkIdType count = scalars->GetNumberOfTuples();
+  std::vector<float> values(static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    values[static_cast<size_t>(i)] = static_cast<float>(scalars->GetComponent(i, 0));
+  }
+  const NonFiniteCount bad = CountNonFinite(values.data(), values.size());
+  if (bad.Total() > 0)
+  {
+    if (!replaceNonFinite)
+    {
+      std::ostringstream why;
+      why << "the volume has " << bad.NaN << " NaN, " << bad.PositiveInfinity << " +Inf and "
+          << bad.NegativeInfinity << " -Inf samples (allow replacing them to render anyway)";
+      error = why.str();
+      return nullptr;
+    }
+    ReplaceNonFinite(values.data(), values.size());
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  return std::make_shared<VolumeGrid>(
+    glm::ivec3(dims[0], dims[1], dims[2]), std::move(values), IndexToWorld(image, propMatrix));
+}
+
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property)
+{
+  TransferFunction tf;
+  tf.Opacity = FromVTK(property->GetScalarOpacity(0));
+  if (property->GetColorChannels(0) == 1)
+  {
+    tf.Red = tf.Green = tf.Blue = FromVTK(property->GetGrayTransferFunction(0));
+  }
+  else
+  {
+    FromVTK(property->GetRGBTransferFunction(0), tf);
+  }
+  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0);
+  return tf;
+}
+
+Material MakeMaterial(vtkVolumeProperty* property)
+{
+  Material material;
+  material.Ambient = property->GetAmbient(0);
+  material.Diffuse = property->GetDiffuse(0);
+  material.Specular = property->GetSpecular(0);
+  material.SpecularPower = property->GetSpecularPower(0);
+  return material;
+}
+
+std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
+{
+  std::vector<Light> lights;
+  if (truncated)
+  {
+    *truncated = false;
+  }
+  vtkLightCollection* collection = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
+    {
+      continue;
+    }
+    if (static_cast<int>(lights.size()) == MaxLights)
+    {
+      if (truncated)
+      {
+        *truncated = true;
+      }
+      break;
+    }
+    Light l;
+    l.Positional = light->GetPositional() != 0;
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    l.Position = ToGlm3(position);
+    l.FocalPoint = ToGlm3(focal);
+    l.Diffuse = ToGlm3(light->GetDiffuseColor()) * light->GetIntensity();
+    l.Specular = ToGlm3(light->GetSpecularColor()) * light->GetIntensity();
+    l.Attenuation = ToGlm3(light->GetAttenuationValues());
+    l.ConeAngle = light->GetConeAngle();
+    l.Exponent = light->GetExponent();
+    lights.push_back(l);
+  }
+  return lights;
+}
+
+Camera MakeCamera(vtkRenderer* renderer)
+{
+  int width = 0, height = 0, x = 0, y = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  const double aspect = renderer->GetTiledAspectRatio();
+  vtkMatrix4x4* worldToClip =
+    renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+  return Camera(ToGlm(worldToClip), std::max(width, 1), std::max(height, 1));
+}
+
+}
+}

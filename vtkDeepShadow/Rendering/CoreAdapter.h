@@ -1,0 +1,67 @@
+// Internal: VTK objects -> Core descriptions. The GPU mapper and the CPU reference both take
+// volumes, transfer functions, lights and the camera from here, so they see the same scene.
+#ifndef vtkDeepShadowCoreAdapter_h
+#define vtkDeepShadowCoreAdapter_h
+
+#include "Camera.h"
+#include "Light.h"
+#include "OpticalModel.h"
+#include "TransferFunction.h"
+#include "VolumeGrid.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkRenderer;
+class vtkVolumeProperty;
+
+namespace deepshadow
+{
+namespace adapter
+{
+
+/** Lights beyond this many (per renderer) are ignored, with a warning, on GPU and CPU alike. */
+constexpr int MaxLights = 8;
+
+glm::dmat4 ToGlm(const vtkMatrix4x4* matrix);
+
+/**
+ * Checks that `image` can be volume rendered: point scalars, one component, a supported type
+ * (unsigned char, short, unsigned short, float), at least 2 points per axis, positive finite
+ * spacing. Returns "" when it can, else one line saying why not. `scalars` is set on success.
+ */
+std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars);
+
+/** Voxel index -> world: the image's index-to-physical matrix, then the prop's matrix. */
+glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix);
+
+/**
+ * Float copy of a checked image's scalars as a VolumeGrid. Non-finite samples are an error
+ * (returns null, sets `error`) unless `replaceNonFinite`, which applies ReplaceNonFinite.
+ */
+std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4x4* propMatrix,
+  bool replaceNonFinite, std::string& error);
+
+/**
+ * Transfer function of component 0. Linear RGB nodes with default midpoint/sharpness are
+ * copied exactly; other shapes (midpoints, sharpness, HSV/Lab interpolation) are sampled at
+ * 4097 points, which makes them piecewise linear.
+ */
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property);
+Material MakeMaterial(vtkVolumeProperty* property);
+
+/** Switched-on lights of the renderer in world space (at most MaxLights). */
+std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated = nullptr);
+
+/** The renderer's active camera over its (tiled) viewport. */
+Camera MakeCamera(vtkRenderer* renderer);
+
+}
+}
+#endif

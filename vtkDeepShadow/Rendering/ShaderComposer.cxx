@@ -1,0 +1,94 @@
+#include "ShaderComposer.h"
+
+#include "vtkDeepShadowFeatureEmptySpace.h"
+#include "vtkDeepShadowFeatureJitter.h"
+#include "vtkDeepShadowFeatureOpaqueDepth.h"
+#include "vtkDeepShadowFeatureShading.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace deepshadow
+{
+
+ShaderFeature::ShaderFeature(std::string name, const std::string& source)
+  : Name(std::move(name))
+{
+  std::istringstream lines(source);
+  std::string line, part;
+  while (std::getline(lines, line))
+  {
+    if (line.rfind("//@", 0) == 0)
+    {
+      part = line.substr(3);
+      this->Parts[part];
+      continue;
+    }
+    if (!part.empty())
+    {
+      this->Parts[part] += line + "\n";
+    }
+  }
+}
+
+std::string ShaderFeature::Part(const std::string& part) const
+{
+  auto it = this->Parts.find(part);
+  return it == this->Parts.end() ? std::string() : it->second;
+}
+
+const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
+{
+  static const std::map<std::string, ShaderFeature> features = [] {
+    std::map<std::string, ShaderFeature> all;
+    auto add = [&all](const char* name, const char* source) { all[name] = ShaderFeature(name, source); };
+    add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
+    add("Jitter", vtkDeepShadowFeatureJitter);
+    add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
+    add("Shading", vtkDeepShadowFeatureShading);
+    return all;
+  }();
+  return features;
+}
+
+std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled)
+{
+  static const std::string prefix = "//DeepShadow::";
+  const auto& features = EmbeddedShaderFeatures();
+  std::string source = shaderTemplate;
+  // Expanded parts may hold tags of their own; bound the depth to catch cycles.
+  for (int depth = 0; depth < 8; ++depth)
+  {
+    bool expanded = false;
+    size_t at = source.find(prefix);
+    while (at != std::string::npos)
+    {
+      const size_t end = source.find_first_of("\r\n", at);
+      const std::string tag = source.substr(at + prefix.size(), end - at - prefix.size());
+      const size_t separator = tag.find("::");
+      const std::string feature = tag.substr(0, separator);
+      const std::string part = separator == std::string::npos ? "" : tag.substr(separator + 2);
+      std::string replacement;
+      if (enabled.count(feature))
+      {
+        auto it = features.find(feature);
+        if (it == features.end())
+        {
+          throw std::logic_error("shader feature " + feature + " is not embedded");
+        }
+        replacement = it->second.Part(part);
+      }
+      source.replace(at, end - at, replacement);
+      expanded = true;
+      // Tags inside the replacement are expanded by the next pass.
+      at = source.find(prefix, at + replacement.size());
+    }
+    if (!expanded)
+    {
+      return source;
+    }
+  }
+  throw std::logic_error("shader feature tags nest too deeply (a cycle?)");
+}
+
+}

@@ -1,0 +1,39 @@
+// Internal: composes GLSL from a template and the features in use.
+//
+// A template marks insertion points with tags `//DeepShadow::<Feature>::<Part>`. A feature is
+// a GLSL file (Shaders/Features/<Feature>.glsl) split into parts by `//@<Part>` lines. A tag
+// becomes the part's text when the feature is enabled and nothing otherwise, so code of a
+// feature that is off is never compiled. Tags inside spliced parts are expanded too.
+#ifndef vtkDeepShadowShaderComposer_h
+#define vtkDeepShadowShaderComposer_h
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace deepshadow
+{
+
+class ShaderFeature
+{
+public:
+  ShaderFeature() = default;
+  ShaderFeature(std::string name, const std::string& source);
+
+  const std::string& GetName() const { return this->Name; }
+  /** Text of a part, or "" if the feature has no such part. */
+  std::string Part(const std::string& part) const;
+
+private:
+  std::string Name;
+  std::map<std::string, std::string> Parts;
+};
+
+/** The features embedded in the library, by name (Jitter, Shading, ...). */
+const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
+
+/** Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing. */
+std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled);
+
+}
+#endif

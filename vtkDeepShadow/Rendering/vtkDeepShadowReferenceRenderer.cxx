@@ -1,0 +1,141 @@
+#include "vtkDeepShadowReferenceRenderer.h"
+
+#include "CoreAdapter.h"
+#include "ReferenceRenderer.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkImageData.h"
+#include "vtkLightCollection.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace adapter = deepshadow::adapter;
+
+vtkStandardNewMacro(vtkDeepShadowReferenceRenderer);
+
+void vtkDeepShadowReferenceRenderer::PrepareRenderer(vtkRenderer* renderer)
+{
+  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
+  {
+    renderer->CreateLight();
+  }
+  renderer->ResetCameraClippingRange();
+  renderer->UpdateLightsGeometryToFollowCamera();
+}
+
+bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::Image& image)
+{
+  this->LastError.clear();
+  deepshadow::Scene scene;
+  scene.View = adapter::MakeCamera(renderer);
+  scene.Lights = adapter::MakeLights(renderer);
+  double background[3], ambient[3];
+  renderer->GetBackground(background);
+  renderer->GetAmbient(ambient);
+  scene.Background = { background[0], background[1], background[2] };
+  scene.AmbientLight = { ambient[0], ambient[1], ambient[2] };
+  scene.TwoSidedLighting = renderer->GetTwoSidedLighting() != 0;
+
+  double sampleDistance = this->SampleDistance;
+  deepshadow::MarchSettings settings;
+  vtkVolumeCollection* volumes = renderer->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
+    if (!volume->GetVisibility() || !mapper)
+    {
+      continue;
+    }
+    if (mapper->GetNumberOfInputConnections(0) > 0)
+    {
+      mapper->Update();
+    }
+    std::string error;
+    auto grid = adapter::MakeVolumeGrid(vtkImageData::SafeDownCast(mapper->GetDataSetInput()),
+      volume->GetMatrix(), this->ReplaceNonFiniteScalars, error);
+    if (!grid)
+    {
+      this->LastError = error;
+      vtkErrorMacro(<< error);
+      return false;
+    }
+    deepshadow::VolumeInstance instance;
+    instance.Grid = grid;
+    vtkVolumeProperty* property = volume->GetProperty();
+    instance.Transfer = adapter::MakeTransferFunction(property);
+    instance.Surface = adapter::MakeMaterial(property);
+    instance.Shade = property->GetShade(0) != 0;
+    instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+      ? deepshadow::Interpolation::Nearest
+      : deepshadow::Interpolation::Linear;
+    scene.Volumes.push_back(instance);
+
+    // The GPU mapper's parameters, taken from the first volume that has one.
+    if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
+    {
+      if (sampleDistance <= 0.0)
+      {
+        sampleDistance = ours->GetSampleDistance();
+      }
+      if (this->GpuTwin && scene.Volumes.size() == 1)
+      {
+        settings = deepshadow::MarchSettings::GpuTwin(0.0, ours->GetTransferTableSize(),
+          ours->GetJitter(), ours->GetJitterSeed(), ours->GetTerminationOpacity());
+      }
+    }
+  }
+  if (scene.Volumes.empty())
+  {
+    image = deepshadow::Image(scene.View.GetWidth(), scene.View.GetHeight());
+    for (int y = 0; y < image.Height; ++y)
+    {
+      for (int x = 0; x < image.Width; ++x)
+      {
+        image.Set(x, y, scene.Background);
+      }
+    }
+    return true;
+  }
+  if (sampleDistance <= 0.0)
+  {
+    sampleDistance =
+      deepshadow::DefaultSampleDistance(scene.Volumes.front().Grid->GetIndexToWorld());
+  }
+  settings.SampleDistance = sampleDistance;
+  image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads);
+  return true;
+}
+
+bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* output)
+{
+  deepshadow::Image image;
+  if (!this->Render(renderer, image))
+  {
+    return false;
+  }
+  const std::vector<uint8_t> bytes = image.ToBytes();
+  output->SetDimensions(image.Width, image.Height, 1);
+  output->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetScalars());
+  std::copy(bytes.begin(), bytes.end(), scalars->GetPointer(0));
+  return true;
+}
+
+void vtkDeepShadowReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "GpuTwin: " << this->GpuTwin << "\n";
+  os << indent << "Threads: " << this->Threads << "\n";
+}

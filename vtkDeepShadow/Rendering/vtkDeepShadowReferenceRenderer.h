@@ -1,0 +1,93 @@
+/**
+ * @class   vtkDeepShadowReferenceRenderer
+ * @brief   Renders a vtkRenderer's volumes on the CPU, in double precision: the ground truth.
+ *
+ * Takes the renderer's volumes (any vtkVolumeMapper with a vtkImageData input), their
+ * vtkVolumeProperty, the lights, the active camera, the viewport size and the background,
+ * converts them with the same code the GPU mapper uses, and runs
+ * deepshadow::ReferenceRenderer. Use it after the renderer has rendered once (so the camera
+ * clipping range and the automatic headlight exist) or call PrepareRenderer() first.
+ *
+ * Two modes:
+ * - exact (default): transfer functions evaluated exactly, no early ray termination; this is
+ *   the ground truth every reported error is measured against;
+ * - GpuTwin: what vtkDeepShadowVolumeMapper computes (its transfer table, its termination
+ *   opacity, its jitter), to compare GPU and CPU formula by formula.
+ */
+#ifndef vtkDeepShadowReferenceRenderer_h
+#define vtkDeepShadowReferenceRenderer_h
+
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <string> // For std::string
+
+class vtkImageData;
+class vtkRenderer;
+
+namespace deepshadow
+{
+struct Image;
+}
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowReferenceRenderer : public vtkObject
+{
+public:
+  static vtkDeepShadowReferenceRenderer* New();
+  vtkTypeMacro(vtkDeepShadowReferenceRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** World distance between samples; 0 (default) takes each mapper's effective distance. */
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /** Reproduce the GPU mapper's approximations instead of the exact model (default off). */
+  vtkSetMacro(GpuTwin, bool);
+  vtkGetMacro(GpuTwin, bool);
+  vtkBooleanMacro(GpuTwin, bool);
+  ///@}
+
+  ///@{
+  /** Threads (0: all cores, or DEEPSHADOW_THREADS). */
+  vtkSetClampMacro(Threads, int, 0, 1024);
+  vtkGetMacro(Threads, int);
+  ///@}
+
+  ///@{
+  /** Replace non-finite samples instead of failing (see vtkDeepShadowVolumeMapper). */
+  vtkSetMacro(ReplaceNonFiniteScalars, bool);
+  vtkGetMacro(ReplaceNonFiniteScalars, bool);
+  ///@}
+
+  /** Creates the automatic headlight and resets the clipping range, as a render would. */
+  static void PrepareRenderer(vtkRenderer* renderer);
+
+  /**
+   * Renders into `image` (RGB, unsigned char, viewport-sized). Returns false and sets
+   * GetLastError() (also vtkErrorMacro) when the scene cannot be rendered.
+   */
+  bool Render(vtkRenderer* renderer, vtkImageData* image);
+  /** The same, as linear double RGB. */
+  bool Render(vtkRenderer* renderer, deepshadow::Image& image);
+
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  vtkDeepShadowReferenceRenderer() = default;
+  ~vtkDeepShadowReferenceRenderer() override = default;
+
+  double SampleDistance = 0.0;
+  bool GpuTwin = false;
+  int Threads = 0;
+  bool ReplaceNonFiniteScalars = false;
+  std::string LastError;
+
+private:
+  vtkDeepShadowReferenceRenderer(const vtkDeepShadowReferenceRenderer&) = delete;
+  void operator=(const vtkDeepShadowReferenceRenderer&) = delete;
+};
+
+#endif

@@ -1,0 +1,677 @@
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "CoreAdapter.h"
+#include "EmptySpace.h"
+#include "ShaderComposer.h"
+#include "TransferFunction.h"
+#include "vtkDeepShadowVolumeFS.h"
+#include "vtkDeepShadowVolumeVS.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace adapter = deepshadow::adapter;
+
+vtkStandardNewMacro(vtkDeepShadowVolumeMapper);
+
+namespace
+{
+constexpr int BlockSize = 8;
+
+void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat4& matrix)
+{
+  glm::mat4 m(matrix);
+  program->SetUniformMatrix4x4(name, glm::value_ptr(m));
+}
+
+void SetMatrix(vtkShaderProgram* program, const char* name, const glm::dmat3& matrix)
+{
+  glm::mat3 m(matrix);
+  program->SetUniformMatrix3x3(name, glm::value_ptr(m));
+}
+
+void SetVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
+{
+  const float f[3] = { static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z) };
+  program->SetUniform3f(name, f);
+}
+
+// Visible props other than volumes that draw opaque geometry into the depth buffer.
+bool HasOpaqueGeometry(vtkRenderer* renderer)
+{
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) && prop->HasOpaqueGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// vtkTextureObject depth format of the read framebuffer's depth attachment, or
+// DepthStencilFormat when it also has stencil bits.
+constexpr int DepthStencilFormat = -2;
+int ReadFramebufferDepthFormat()
+{
+  GLint depthBits = 0, stencilBits = 0, componentType = 0;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+    GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
+  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+    GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
+  glGetError(); // a framebuffer without stencil attachment may flag the last query
+  if (stencilBits > 0)
+  {
+    return DepthStencilFormat;
+  }
+  if (componentType == GL_FLOAT)
+  {
+    return vtkTextureObject::Float32;
+  }
+  return depthBits <= 16 ? vtkTextureObject::Fixed16
+                         : depthBits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32;
+}
+
+vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  return texture;
+}
+}
+
+class vtkDeepShadowVolumeMapper::Internals
+{
+public:
+  // The uploaded volume and what it was made from.
+  vtkSmartPointer<vtkTextureObject> Volume;
+  vtkImageData* VolumeSource = nullptr;
+  vtkMTimeType VolumeTime = 0;
+  bool VolumeReplaceNonFinite = false;
+  glm::ivec3 Dims{ 0 };
+  glm::dvec2 Range{ 0.0 };
+  glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel value -> scalar
+  double EffectiveStep = 0.0; // world sample distance of the last frame
+  deepshadow::BlockRanges Blocks;
+  std::string DataError;
+
+  // Transfer-function table and what it depends on.
+  vtkSmartPointer<vtkTextureObject> Transfer;
+  vtkMTimeType TransferPropertyTime = 0;
+  int TransferUploadCount = -1;
+  double TransferStep = 0.0;
+  int TransferSize = 0;
+  deepshadow::TransferTable Table;
+
+  // Empty-space block map.
+  vtkSmartPointer<vtkTextureObject> Occupancy;
+  vtkMTimeType OccupancyPropertyTime = 0;
+  int OccupancyUploadCount = -1;
+  bool AnyEmptyBlock = false;
+
+  // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
+  vtkSmartPointer<vtkTextureObject> Depth;
+  vtkSmartPointer<vtkTextureObject> DepthColor;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+  int DepthFormat = -1;
+
+  // Proxy geometry.
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
+  vtkSmartPointer<vtkOpenGLBufferObject> Corners;
+  vtkSmartPointer<vtkOpenGLBufferObject> Triangles;
+  vtkShaderProgram* BoundProgram = nullptr;
+
+  std::string LastSource;
+
+  void Release(vtkWindow* window)
+  {
+    for (vtkTextureObject* texture : { this->Volume.Get(), this->Transfer.Get(),
+           this->Occupancy.Get(), this->Depth.Get(), this->DepthColor.Get() })
+    {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
+    }
+    if (this->DepthFramebuffer)
+    {
+      this->DepthFramebuffer->ReleaseGraphicsResources(window);
+    }
+    if (this->VertexArray)
+    {
+      this->VertexArray->ReleaseGraphicsResources();
+    }
+    if (this->Corners)
+    {
+      this->Corners->ReleaseGraphicsResources();
+    }
+    if (this->Triangles)
+    {
+      this->Triangles->ReleaseGraphicsResources();
+    }
+    const std::string lastSource = this->LastSource;
+    *this = Internals();
+    this->LastSource = lastSource; // what was composed is independent of GL resources
+  }
+};
+
+vtkDeepShadowVolumeMapper::vtkDeepShadowVolumeMapper()
+  : TerminationOpacity(deepshadow::DefaultTerminationOpacity)
+  , Impl(new Internals)
+{
+}
+
+vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper() = default;
+
+int vtkDeepShadowVolumeMapper::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+void vtkDeepShadowVolumeMapper::ReportError(const std::string& message)
+{
+  if (message != this->LastError)
+  {
+    vtkErrorMacro(<< message);
+  }
+  this->LastError = message;
+}
+
+vtkImageData* vtkDeepShadowVolumeMapper::GetImageInput()
+{
+  return vtkImageData::SafeDownCast(this->GetDataSetInput());
+}
+
+double vtkDeepShadowVolumeMapper::GetEffectiveSampleDistance()
+{
+  return this->Impl->EffectiveStep;
+}
+
+void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Impl->Release(window);
+}
+
+void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    this->ReportError("vtkDeepShadowVolumeMapper needs an OpenGL render window");
+    return;
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->Update();
+  }
+  vtkImageData* input = this->GetImageInput();
+  vtkVolumeProperty* property = volume->GetProperty();
+  Internals& impl = *this->Impl;
+
+  // 1. The volume texture: re-uploaded only when the data changed.
+  const bool dataChanged = input != impl.VolumeSource || !input ||
+    input->GetMTime() != impl.VolumeTime || !impl.Volume ||
+    impl.VolumeReplaceNonFinite != this->ReplaceNonFiniteScalars;
+  if (dataChanged)
+  {
+    impl.Release(window);
+    impl.VolumeSource = input;
+    impl.VolumeTime = input ? input->GetMTime() : 0;
+    impl.VolumeReplaceNonFinite = this->ReplaceNonFiniteScalars;
+
+    std::string error;
+    auto grid = adapter::MakeVolumeGrid(input, nullptr, this->ReplaceNonFiniteScalars, error);
+    if (grid)
+    {
+      GLint max3D = 0;
+      glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+      const glm::ivec3 dims = grid->GetDims();
+      if (std::max({ dims.x, dims.y, dims.z }) > max3D)
+      {
+        error = "the volume (" + std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
+          std::to_string(dims.z) + ") exceeds this GL's 3D texture limit of " +
+          std::to_string(max3D) + " per axis";
+        grid.reset();
+      }
+    }
+    if (!grid)
+    {
+      impl.DataError = error;
+    }
+    else
+    {
+      if (this->ReplaceNonFiniteScalars)
+      {
+        vtkDataArray* scalars = input->GetPointData()->GetScalars();
+        if (scalars->GetDataType() == VTK_FLOAT)
+        {
+          const auto bad = deepshadow::CountNonFinite(
+            static_cast<const float*>(scalars->GetVoidPointer(0)), scalars->GetNumberOfTuples());
+          if (bad.Total() > 0)
+          {
+            vtkWarningMacro(<< bad.Total() << " non-finite samples replaced (NaN by the smallest "
+                                              "finite value, +-Inf by the largest/smallest)");
+          }
+        }
+      }
+      impl.DataError.clear();
+      impl.Dims = grid->GetDims();
+      impl.Range = grid->GetRange();
+      impl.Blocks = deepshadow::BlockRanges::Compute(*grid, BlockSize);
+
+      // Native formats where exact (8/16 bit normalized), float otherwise.
+      vtkDataArray* scalars = input->GetPointData()->GetScalars();
+      impl.Volume = NewTexture(window);
+      std::vector<uint16_t> shifted;
+      const void* texels = scalars->GetVoidPointer(0);
+      int vtkType = scalars->GetDataType();
+      switch (vtkType)
+      {
+        case VTK_UNSIGNED_CHAR:
+          impl.Volume->SetInternalFormat(GL_R8);
+          impl.ScalarMap = { 255.0, 0.0 };
+          break;
+        case VTK_UNSIGNED_SHORT:
+          impl.Volume->SetInternalFormat(GL_R16);
+          impl.ScalarMap = { 65535.0, 0.0 };
+          break;
+        case VTK_SHORT:
+        {
+          // Shifted into unsigned range so every value is exact in a 16-bit unorm texture.
+          const auto* values = static_cast<const int16_t*>(texels);
+          shifted.resize(grid->GetScalars().size());
+          for (size_t i = 0; i < shifted.size(); ++i)
+          {
+            shifted[i] = static_cast<uint16_t>(static_cast<int>(values[i]) + 32768);
+          }
+          texels = shifted.data();
+          vtkType = VTK_UNSIGNED_SHORT;
+          impl.Volume->SetInternalFormat(GL_R16);
+          impl.ScalarMap = { 65535.0, -32768.0 };
+          break;
+        }
+        default: // float: the checked (and, if asked, repaired) copy
+          texels = grid->GetScalars().data();
+          impl.Volume->SetInternalFormat(GL_R32F);
+          impl.ScalarMap = { 1.0, 0.0 };
+          break;
+      }
+      impl.Volume->Create3DFromRaw(static_cast<unsigned int>(impl.Dims.x), static_cast<unsigned int>(impl.Dims.y),
+        static_cast<unsigned int>(impl.Dims.z), 1, vtkType, const_cast<void*>(texels));
+      ++this->VolumeUploads;
+    }
+  }
+  if (!impl.DataError.empty())
+  {
+    this->ReportError(impl.DataError);
+    return;
+  }
+
+  const glm::dmat4 indexToWorld = adapter::IndexToWorld(input, volume->GetMatrix());
+  const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
+  const double step = this->SampleDistance > 0.0 ? this->SampleDistance
+                                                 : deepshadow::DefaultSampleDistance(indexToWorld);
+  impl.EffectiveStep = step;
+  const vtkMTimeType propertyTime = property->GetMTime();
+  const bool shade = property->GetShade(0) != 0;
+  const int filter =
+    property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION ? vtkTextureObject::Nearest
+                                                                   : vtkTextureObject::Linear;
+  impl.Volume->SetMinificationFilter(filter);
+  impl.Volume->SetMagnificationFilter(filter);
+
+  // 2. Transfer table: colour and step-corrected opacity (deepshadow::TransferTable).
+  if (!impl.Transfer || impl.TransferPropertyTime != propertyTime ||
+    impl.TransferUploadCount != this->VolumeUploads || impl.TransferStep != step ||
+    impl.TransferSize != this->TransferTableSize)
+  {
+    impl.Table = deepshadow::TransferTable::Sample(adapter::MakeTransferFunction(property),
+      impl.Range.x, impl.Range.y, this->TransferTableSize, step);
+    impl.Transfer = NewTexture(window);
+    impl.Transfer->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.Transfer->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.Transfer->Create2DFromRaw(
+      impl.Table.Size, 1, 4, VTK_FLOAT, static_cast<void*>(impl.Table.RGBA.data()));
+    impl.TransferPropertyTime = propertyTime;
+    impl.TransferUploadCount = this->VolumeUploads;
+    impl.TransferStep = step;
+    impl.TransferSize = this->TransferTableSize;
+    ++this->TransferTableBuilds;
+  }
+
+  // 3. Empty-space block map: depends on the data and the opacity function only.
+  if (this->EmptySpaceSkipping &&
+    (!impl.Occupancy || impl.OccupancyPropertyTime != propertyTime ||
+      impl.OccupancyUploadCount != this->VolumeUploads))
+  {
+    const auto opacity = adapter::MakeTransferFunction(property).Opacity;
+    std::vector<uint8_t> occupancy = impl.Blocks.Occupancy(opacity);
+    const auto empty = std::count(occupancy.begin(), occupancy.end(), uint8_t(0));
+    impl.AnyEmptyBlock = empty > 0;
+    this->EmptyBlockFraction = occupancy.empty() ? 0.0 : double(empty) / occupancy.size();
+    for (uint8_t& v : occupancy)
+    {
+      v = v ? 255 : 0;
+    }
+    impl.Occupancy = NewTexture(window);
+    impl.Occupancy->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.Occupancy->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.Occupancy->Create3DFromRaw(static_cast<unsigned int>(impl.Blocks.BlockCount.x),
+      static_cast<unsigned int>(impl.Blocks.BlockCount.y), static_cast<unsigned int>(impl.Blocks.BlockCount.z), 1,
+      VTK_UNSIGNED_CHAR, occupancy.data());
+    impl.OccupancyPropertyTime = propertyTime;
+    impl.OccupancyUploadCount = this->VolumeUploads;
+    ++this->OccupancyBuilds;
+  }
+  const bool skipEmpty = this->EmptySpaceSkipping && impl.AnyEmptyBlock;
+  if (!this->EmptySpaceSkipping)
+  {
+    this->EmptyBlockFraction = 0.0;
+  }
+
+  // 4. Viewport, matrices, lights.
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  const deepshadow::Camera camera = adapter::MakeCamera(renderer);
+  bool truncated = false;
+  const std::vector<deepshadow::Light> lights =
+    shade ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
+  if (truncated)
+  {
+    vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
+  }
+  const bool needDepth = HasOpaqueGeometry(renderer);
+
+  // 5. Shader for the features in use.
+  std::set<std::string> features;
+  if (shade)
+  {
+    features.insert("Shading");
+  }
+  if (this->Jitter)
+  {
+    features.insert("Jitter");
+  }
+  if (skipEmpty)
+  {
+    features.insert("EmptySpace");
+  }
+  if (needDepth)
+  {
+    features.insert("OpaqueDepth");
+  }
+  const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features);
+  if (source != impl.LastSource)
+  {
+    impl.LastSource = source;
+    this->FragmentShaderSource = source;
+    this->ShaderFeatures.assign(features.begin(), features.end());
+    ++this->ShaderCompositions;
+  }
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkDeepShadowVolumeVS, source.c_str(), "");
+  if (!program)
+  {
+    this->ReportError("the volume shader failed to compile (see the messages above)");
+    return;
+  }
+
+  vtkOpenGLState* state = window->GetState();
+  if (needDepth)
+  {
+    if (!impl.Depth)
+    {
+      impl.Depth = NewTexture(window);
+      impl.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+      impl.DepthColor = NewTexture(window);
+      impl.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      impl.DepthFramebuffer->SetContext(window);
+    }
+    // A depth blit needs identical formats: match whatever the current framebuffer has.
+    const int depthFormat = ReadFramebufferDepthFormat();
+    if (!impl.Depth->GetHandle() || depthFormat != impl.DepthFormat)
+    {
+      impl.Depth->ReleaseGraphicsResources(window);
+      impl.DepthColor->ReleaseGraphicsResources(window);
+      impl.DepthFramebuffer->ReleaseGraphicsResources(window);
+      impl.DepthFormat = depthFormat;
+      if (depthFormat == DepthStencilFormat)
+      {
+        impl.Depth->AllocateDepthStencil(width, height);
+      }
+      else
+      {
+        impl.Depth->AllocateDepth(width, height, depthFormat);
+      }
+      impl.DepthColor->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      state->PushDrawFramebufferBinding();
+      impl.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+      impl.DepthFramebuffer->AddDepthAttachment(impl.Depth);
+      impl.DepthFramebuffer->AddColorAttachment(0, impl.DepthColor);
+      state->PopDrawFramebufferBinding();
+    }
+    impl.Depth->Resize(width, height);
+    impl.DepthColor->Resize(width, height);
+    state->PushDrawFramebufferBinding();
+    impl.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    state->vtkglBlitFramebuffer(x0, y0, x0 + width, y0 + height, 0, 0, width, height,
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    state->PopDrawFramebufferBinding();
+  }
+
+  // 6. Uniforms.
+  impl.Volume->Activate();
+  impl.Transfer->Activate();
+  program->SetUniformi("u_volume", impl.Volume->GetTextureUnit());
+  program->SetUniformi("u_transfer", impl.Transfer->GetTextureUnit());
+  const float scalarMap[2] = { static_cast<float>(impl.ScalarMap.x),
+    static_cast<float>(impl.ScalarMap.y) };
+  program->SetUniform2f("u_scalarMap", scalarMap);
+  // table coordinate = (index + 0.5) / size with index = (s - min) / (max - min) * (size - 1)
+  const double tableScale = (impl.Table.Size - 1.0) / (impl.Table.RangeMax - impl.Table.RangeMin);
+  const float tableMap[2] = { static_cast<float>(tableScale / impl.Table.Size),
+    static_cast<float>((0.5 - impl.Table.RangeMin * tableScale) / impl.Table.Size) };
+  program->SetUniform2f("u_tableMap", tableMap);
+  SetVector(program, "u_dims", glm::dvec3(impl.Dims));
+  SetVector(program, "u_boxMax", glm::dvec3(impl.Dims - 1));
+  SetMatrix(program, "u_worldToIndex", worldToIndex);
+  SetMatrix(program, "u_clipToWorld", camera.GetInverseViewProjection());
+  SetMatrix(program, "u_indexToClip", camera.GetViewProjection() * indexToWorld);
+  const float viewport[4] = { static_cast<float>(x0), static_cast<float>(y0),
+    static_cast<float>(width), static_cast<float>(height) };
+  program->SetUniform4f("u_viewport", viewport);
+  program->SetUniformf("u_step", static_cast<float>(step));
+  program->SetUniformf("u_terminationOpacity", static_cast<float>(this->TerminationOpacity));
+  if (this->Jitter)
+  {
+    program->SetUniformi("u_jitterSeed", static_cast<int>(this->JitterSeed));
+  }
+  if (skipEmpty)
+  {
+    impl.Occupancy->Activate();
+    program->SetUniformi("u_occupancy", impl.Occupancy->GetTextureUnit());
+    program->SetUniformf("u_blockSize", static_cast<float>(BlockSize));
+  }
+  if (needDepth)
+  {
+    impl.Depth->Activate();
+    program->SetUniformi("u_opaqueDepth", impl.Depth->GetTextureUnit());
+  }
+  if (shade)
+  {
+    const int count = static_cast<int>(lights.size());
+    float directions[adapter::MaxLights][3] = {}, positions[adapter::MaxLights][3] = {},
+          diffuse[adapter::MaxLights][3] = {}, specular[adapter::MaxLights][3] = {},
+          attenuation[adapter::MaxLights][3] = {};
+    float coneCos[adapter::MaxLights] = {}, exponent[adapter::MaxLights] = {};
+    int positional[adapter::MaxLights] = {};
+    for (int i = 0; i < count; ++i)
+    {
+      const deepshadow::Light& light = lights[i];
+      // Directional: towards the light. Positional: the spot axis, from the light.
+      const glm::dvec3 direction = light.Positional
+        ? glm::normalize(light.FocalPoint - light.Position)
+        : glm::normalize(light.Position - light.FocalPoint);
+      for (int c = 0; c < 3; ++c)
+      {
+        directions[i][c] = static_cast<float>(direction[c]);
+        positions[i][c] = static_cast<float>(light.Position[c]);
+        diffuse[i][c] = static_cast<float>(light.Diffuse[c]);
+        specular[i][c] = static_cast<float>(light.Specular[c]);
+        attenuation[i][c] = static_cast<float>(light.Attenuation[c]);
+      }
+      positional[i] = light.Positional ? 1 : 0;
+      coneCos[i] = light.ConeAngle < 90.0
+        ? static_cast<float>(std::cos(light.ConeAngle * 3.14159265358979323846 / 180.0))
+        : -2.0f;
+      exponent[i] = static_cast<float>(light.Exponent);
+    }
+    program->SetUniformi("u_lightCount", count);
+    if (count > 0)
+    {
+      program->SetUniform1iv("u_lightPositional", count, positional);
+      program->SetUniform3fv("u_lightPosition", count, positions);
+      program->SetUniform3fv("u_lightDirection", count, directions);
+      program->SetUniform3fv("u_lightDiffuse", count, diffuse);
+      program->SetUniform3fv("u_lightSpecular", count, specular);
+      program->SetUniform3fv("u_lightAttenuation", count, attenuation);
+      program->SetUniform1fv("u_lightConeCos", count, coneCos);
+      program->SetUniform1fv("u_lightExponent", count, exponent);
+    }
+    double ambient[3];
+    renderer->GetAmbient(ambient);
+    SetVector(program, "u_ambientLight", glm::dvec3(ambient[0], ambient[1], ambient[2]));
+    const deepshadow::Material material = adapter::MakeMaterial(property);
+    const float materialUniform[4] = { static_cast<float>(material.Ambient),
+      static_cast<float>(material.Diffuse), static_cast<float>(material.Specular),
+      static_cast<float>(material.SpecularPower) };
+    program->SetUniform4f("u_material", materialUniform);
+    program->SetUniformi("u_twoSidedLighting", renderer->GetTwoSidedLighting() ? 1 : 0);
+    SetMatrix(program, "u_indexGradientToWorld", glm::transpose(glm::dmat3(worldToIndex)));
+  }
+
+  // 7. Draw the back faces of the box.
+  if (!impl.VertexArray)
+  {
+    impl.VertexArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    impl.Corners = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    impl.Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    std::vector<float> corners;
+    for (int i = 0; i < 8; ++i)
+    {
+      corners.insert(corners.end(),
+        { float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1) });
+    }
+    // Counter-clockwise seen from outside (outward normals).
+    const std::vector<unsigned int> triangles = { 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5,
+      0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6 };
+    impl.Corners->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
+    impl.Triangles->Upload(triangles, vtkOpenGLBufferObject::ElementArrayBuffer);
+  }
+  const bool programChanged = impl.BoundProgram != program;
+  if (programChanged)
+  {
+    impl.VertexArray->ShaderProgramChanged(); // drops the VAO: rebind before adding arrays
+  }
+  impl.VertexArray->Bind();
+  if (programChanged)
+  {
+    impl.VertexArray->AddAttributeArray(
+      program, impl.Corners, "a_corner", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    impl.BoundProgram = program;
+  }
+  impl.Triangles->Bind();
+
+  {
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    // A mirroring index-to-world transform turns the box inside out.
+    const bool mirrored = glm::determinant(glm::dmat3(indexToWorld)) < 0.0;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+    glEnable(GL_DEPTH_CLAMP);
+    glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_DEPTH_CLAMP);
+    glFrontFace(GL_CCW);
+    state->vtkglCullFace(GL_BACK);
+  }
+
+  impl.Triangles->Release();
+  impl.VertexArray->Release();
+  impl.Volume->Deactivate();
+  impl.Transfer->Deactivate();
+  if (skipEmpty)
+  {
+    impl.Occupancy->Deactivate();
+  }
+  if (needDepth)
+  {
+    impl.Depth->Deactivate();
+  }
+  this->GPUMemoryBytes = static_cast<long long>(impl.Dims.x) * impl.Dims.y * impl.Dims.z *
+      (impl.ScalarMap.x == 255.0 ? 1 : impl.ScalarMap.x == 1.0 ? 4 : 2) +
+    static_cast<long long>(impl.Table.Size) * 16 +
+    (this->EmptySpaceSkipping ? static_cast<long long>(impl.Blocks.Min.size()) : 0);
+  this->LastError.clear();
+  ++this->RenderCount;
+}
+
+void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SampleDistance: " << this->SampleDistance << " (0 = half the smallest spacing)\n";
+  os << indent << "Jitter: " << this->Jitter << " (seed " << this->JitterSeed << ")\n";
+  os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
+  os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";
+  os << indent << "ReplaceNonFiniteScalars: " << this->ReplaceNonFiniteScalars << "\n";
+  os << indent << "RenderCount: " << this->RenderCount << "\n";
+  os << indent << "VolumeUploads: " << this->VolumeUploads << "\n";
+  os << indent << "TransferTableBuilds: " << this->TransferTableBuilds << "\n";
+  os << indent << "OccupancyBuilds: " << this->OccupancyBuilds << "\n";
+  os << indent << "ShaderCompositions: " << this->ShaderCompositions << "\n";
+}

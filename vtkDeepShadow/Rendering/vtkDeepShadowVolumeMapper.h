@@ -1,0 +1,155 @@
+/**
+ * @class   vtkDeepShadowVolumeMapper
+ * @brief   GPU ray-casting volume mapper of vtkDeepShadow (composite blending).
+ *
+ * Renders a single-component vtkImageData (unsigned char, short, unsigned short or float
+ * point scalars) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
+ * scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
+ * gradient with the renderer's lights. Honours the image's spacing, origin and direction and
+ * the vtkVolume's transform. Opaque geometry already drawn ends the rays (depth buffer).
+ *
+ * The optical model is the one of the CPU reference (deepshadow::ReferenceRenderer): samples
+ * every SampleDistance world units from the ray's entry into the volume (at the middle of
+ * each step, or jittered), opacity corrected for the step, front-to-back compositing, early
+ * termination once opacity exceeds TerminationOpacity. Empty-space skipping jumps over
+ * blocks of zero opacity exactly (the samples taken are the same).
+ *
+ * The shader is composed from the features in use (Shading, Jitter, EmptySpace,
+ * OpaqueDepth): see GetShaderFeatures() and GetFragmentShaderSource(). Work is redone only
+ * when what it depends on changed; the counters below make that observable.
+ *
+ * Bad input (no input, empty or flat volume, unsupported type or component count,
+ * non-finite samples, a volume larger than the GL's 3D texture limit) is reported once per
+ * change with vtkErrorMacro (also in GetLastError()) and the volume is not drawn.
+ */
+#ifndef vtkDeepShadowVolumeMapper_h
+#define vtkDeepShadowVolumeMapper_h
+
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkNew.h"                       // For vtkNew
+#include "vtkVolumeMapper.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkOpenGLRenderWindow;
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkVolumeMapper
+{
+public:
+  static vtkDeepShadowVolumeMapper* New();
+  vtkTypeMacro(vtkDeepShadowVolumeMapper, vtkVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * World distance between samples along a ray. 0 (the default) means
+   * deepshadow::DefaultSampleDistance: half the shortest world-space voxel edge.
+   */
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+  /** The distance used in the last frame (0 before the first). */
+  double GetEffectiveSampleDistance();
+
+  ///@{
+  /** Jitter each ray's first sample by a hash of the pixel and JitterSeed (off by default). */
+  vtkSetMacro(Jitter, bool);
+  vtkGetMacro(Jitter, bool);
+  vtkBooleanMacro(Jitter, bool);
+  vtkSetMacro(JitterSeed, unsigned int);
+  vtkGetMacro(JitterSeed, unsigned int);
+  ///@}
+
+  ///@{
+  /** Stop a ray once its opacity exceeds this (default 1 - 1/255, as VTK); 1 never stops. */
+  vtkSetClampMacro(TerminationOpacity, double, 0.0, 1.0);
+  vtkGetMacro(TerminationOpacity, double);
+  ///@}
+
+  ///@{
+  /** Skip blocks of zero opacity (on by default; exact). */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  ///@{
+  /** Texels of the transfer-function table over the scalar range (default 4096). */
+  vtkSetClampMacro(TransferTableSize, int, 2, 65536);
+  vtkGetMacro(TransferTableSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Non-finite samples (NaN, +-Inf in float data) are an error by default. On, they are
+   * replaced as deepshadow::ReplaceNonFinite says (NaN -> smallest finite value, +-Inf ->
+   * largest / smallest) and rendering goes on with a warning.
+   */
+  vtkSetMacro(ReplaceNonFiniteScalars, bool);
+  vtkGetMacro(ReplaceNonFiniteScalars, bool);
+  vtkBooleanMacro(ReplaceNonFiniteScalars, bool);
+  ///@}
+
+  /** The input as image data (only vtkImageData inputs are accepted). */
+  vtkImageData* GetImageInput();
+
+  void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /** Observability: what the last frames did and built. */
+  vtkGetMacro(RenderCount, int);          // frames drawn
+  vtkGetMacro(VolumeUploads, int);        // 3D texture (re)uploads: data changed
+  vtkGetMacro(TransferTableBuilds, int);  // TF table rebuilds: TF, range or step changed
+  vtkGetMacro(OccupancyBuilds, int);      // empty-space block maps: data or opacity changed
+  vtkGetMacro(ShaderCompositions, int);   // distinct shader sources composed
+  /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
+  const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
+  const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }
+  /** Fraction of empty-space blocks that are skipped (0 when skipping is off). */
+  vtkGetMacro(EmptyBlockFraction, double);
+  /** GPU memory of the volume, table and block map, in bytes. */
+  vtkGetMacro(GPUMemoryBytes, long long);
+  ///@}
+
+  /** Why the volume was last not drawn; empty after a successful frame. */
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  vtkDeepShadowVolumeMapper();
+  ~vtkDeepShadowVolumeMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  double SampleDistance = 0.0;
+  bool Jitter = false;
+  unsigned int JitterSeed = 0;
+  double TerminationOpacity;
+  bool EmptySpaceSkipping = true;
+  int TransferTableSize = 4096;
+  bool ReplaceNonFiniteScalars = false;
+
+  int RenderCount = 0;
+  int VolumeUploads = 0;
+  int TransferTableBuilds = 0;
+  int OccupancyBuilds = 0;
+  int ShaderCompositions = 0;
+  std::vector<std::string> ShaderFeatures;
+  std::string FragmentShaderSource;
+  double EmptyBlockFraction = 0.0;
+  long long GPUMemoryBytes = 0;
+  std::string LastError;
+
+private:
+  vtkDeepShadowVolumeMapper(const vtkDeepShadowVolumeMapper&) = delete;
+  void operator=(const vtkDeepShadowVolumeMapper&) = delete;
+
+  void ReportError(const std::string& message);
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

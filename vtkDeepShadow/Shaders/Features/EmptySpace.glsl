@@ -1,0 +1,26 @@
+// Feature EmptySpace: blocks of u_blockSize^3 voxels whose scalar range has zero opacity are
+// skipped whole, in whole steps so that the samples taken are exactly those of an
+// unskipping ray (deepshadow::StepsToLeaveBlock in Core/EmptySpace.cxx is the CPU twin).
+//@Dec
+uniform sampler3D u_occupancy; // 1 where a block can be visible (R8, nearest)
+uniform float u_blockSize;
+int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
+{
+  vec3 lo = block * u_blockSize;
+  vec3 hi = lo + u_blockSize;
+  vec3 exitPlane = mix(lo, hi, greaterThan(indexStep, vec3(0.0)));
+  vec3 steps = (exitPlane - index) / indexStep;
+  steps = mix(steps, vec3(1e30), equal(indexStep, vec3(0.0)));
+  return max(1, int(ceil(min(min(steps.x, steps.y), steps.z))));
+}
+//@Init
+  vec3 indexStep = indexDirection * u_step;
+//@Impl
+    {
+      vec3 block = floor(index / u_blockSize);
+      if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
+      {
+        k += stepsToLeaveBlock(index, indexStep, block) - 1;
+        continue;
+      }
+    }

@@ -1,0 +1,99 @@
+#version 330 core
+// Composite ray casting of one volume; the GPU twin of deepshadow::ReferenceRenderer::MarchRay
+// (vtkDeepShadow/Core/ReferenceRenderer.cxx). Optional features are spliced in at the
+// //DeepShadow::<Feature>::<Part> tags by vtkDeepShadowShaderComposer; a feature that is off
+// leaves its tags empty, so its code is not compiled at all.
+//
+// Conventions shared with the CPU: positions are continuous voxel indices (voxel i at i,
+// texture coordinate (i + 0.5) / Dims); t is world distance along the ray from the near
+// plane; samples sit at t0 + (k + offset) * u_step.
+
+layout(location = 0) out vec4 fragColor;
+
+uniform sampler3D u_volume;      // scalars, normalized to [0, 1] by the texture format
+uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
+uniform vec2 u_scalarMap;        // scalar = texel * u_scalarMap.x + u_scalarMap.y
+uniform vec2 u_tableMap;         // table coordinate = scalar * u_tableMap.x + u_tableMap.y
+uniform vec3 u_dims;
+uniform mat4 u_worldToIndex;
+uniform mat4 u_clipToWorld;      // inverse view-projection
+uniform vec4 u_viewport;         // x, y, width, height in window pixels
+uniform float u_step;            // world distance between samples
+uniform float u_terminationOpacity;
+
+vec3 unproject(vec2 ndc, float z)
+{
+  vec4 p = u_clipToWorld * vec4(ndc, z, 1.0);
+  return p.xyz / p.w;
+}
+
+float sampleScalar(vec3 index)
+{
+  return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
+}
+
+// Front-to-back "over" (deepshadow::CompositeFrontToBack).
+void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
+{
+  float weight = (1.0 - accumulated.a) * alpha;
+  accumulated += vec4(weight * color, weight);
+}
+
+// Declarations of the features in use (they may call the helpers above).
+//DeepShadow::Jitter::Dec
+//DeepShadow::OpaqueDepth::Dec
+//DeepShadow::EmptySpace::Dec
+//DeepShadow::Shading::Dec
+
+void main()
+{
+  vec2 pixel = gl_FragCoord.xy - u_viewport.xy;
+  vec2 ndc = 2.0 * pixel / u_viewport.zw - 1.0;
+  vec3 rayOrigin = unproject(ndc, -1.0);
+  vec3 rayDirection = normalize(unproject(ndc, 1.0) - rayOrigin);
+
+  // Box [0, Dims - 1] in index space; t stays world distance (deepshadow::IntersectBox).
+  vec3 indexOrigin = (u_worldToIndex * vec4(rayOrigin, 1.0)).xyz;
+  vec3 indexDirection = (u_worldToIndex * vec4(rayDirection, 0.0)).xyz;
+  vec3 inverseDirection = 1.0 / indexDirection;
+  vec3 tA = (vec3(0.0) - indexOrigin) * inverseDirection;
+  vec3 tB = (u_dims - 1.0 - indexOrigin) * inverseDirection;
+  vec3 tLow = min(tA, tB);
+  vec3 tHigh = max(tA, tB);
+  float t0 = max(max(max(tLow.x, tLow.y), tLow.z), 0.0);
+  float t1 = min(min(tHigh.x, tHigh.y), tHigh.z);
+
+  //DeepShadow::OpaqueDepth::Impl
+
+  if (!(t0 < t1))
+  {
+    discard;
+  }
+
+  float offset = 0.5;
+  //DeepShadow::Jitter::Impl
+
+  vec4 accumulated = vec4(0.0);
+  //DeepShadow::EmptySpace::Init
+  for (int k = 0;; ++k)
+  {
+    float t = t0 + (float(k) + offset) * u_step;
+    if (!(t < t1) || accumulated.a > u_terminationOpacity)
+    {
+      break;
+    }
+    vec3 index = indexOrigin + t * indexDirection;
+    //DeepShadow::EmptySpace::Impl
+
+    float scalar = sampleScalar(index);
+    vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+    if (transfer.a <= 0.0)
+    {
+      continue;
+    }
+    vec3 color = transfer.rgb;
+    //DeepShadow::Shading::Impl
+    compositeFrontToBack(accumulated, color, transfer.a);
+  }
+  fragColor = accumulated; // premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA)
+}
