@@ -1,0 +1,76 @@
+/**
+ * @class   vtkDeepShadowVolumeReader
+ * @brief   Reads a volume from a file, choosing VTK's reader by the file's extension.
+ *
+ * Extensions (case-insensitive): .vti (vtkXMLImageDataReader), .mhd and .mha
+ * (vtkMetaImageReader), .nrrd and .nhdr (vtkNrrdReader). The output is a vtkImageData whose
+ * active point scalars are the volume (the file's active scalars, else its first point array).
+ *
+ * Bad input (no file name, missing or unreadable file, unknown extension, a file the chosen
+ * reader cannot parse, no point scalars) is reported with one vtkErrorMacro line that names the
+ * file and the problem; the request then fails and the output stays empty. The same line is
+ * kept in GetLastError() for command-line tools. Messages of the underlying VTK reader are
+ * collected rather than printed; the first one becomes the reason on that line. Missing data
+ * files and truncated raw data of NRRD and MetaImage files (which VTK's readers only warn
+ * about) are caught before reading.
+ */
+#ifndef vtkDeepShadowVolumeReader_h
+#define vtkDeepShadowVolumeReader_h
+
+#include "vtkDeepShadowScenesModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+#include "vtkSmartPointer.h" // For the delegate reader
+
+#include <string> // For GetLastError
+#include <vector> // For GetSupportedExtensions
+
+class vtkCommand;
+
+class VTKDEEPSHADOWSCENES_EXPORT vtkDeepShadowVolumeReader : public vtkImageAlgorithm
+{
+public:
+  static vtkDeepShadowVolumeReader* New();
+  vtkTypeMacro(vtkDeepShadowVolumeReader, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The file to read. */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /** Supported extensions, lower case with the dot: .vti, .mhd, .mha, .nrrd, .nhdr. */
+  static std::vector<std::string> GetSupportedExtensions();
+
+  /** True if the file exists, has a supported extension and its reader accepts it. */
+  static bool CanReadFile(const char* fileName);
+
+  /** The one-line reason of the last failure; empty after a successful read. */
+  const std::string& GetLastError() const { return this->LastError; }
+
+protected:
+  vtkDeepShadowVolumeReader();
+  ~vtkDeepShadowVolumeReader() override;
+
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /** Checks the file and makes the delegate reader; false (with the error reported) if bad. */
+  bool PrepareReader();
+
+  /** Reports `problem` about the file as the one-line error. */
+  void Fail(const std::string& problem);
+
+  char* FileName = nullptr;
+  std::string LastError;
+  vtkSmartPointer<vtkAlgorithm> Reader;
+  vtkSmartPointer<vtkCommand> Errors; // collects the delegate's messages
+
+private:
+  vtkDeepShadowVolumeReader(const vtkDeepShadowVolumeReader&) = delete;
+  void operator=(const vtkDeepShadowVolumeReader&) = delete;
+};
+
+#endif
