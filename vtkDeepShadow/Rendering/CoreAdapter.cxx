@@ -210,7 +210,8 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
     {
       std::ostringstream why;
       why << "the volume has " << bad.NaN << " NaN, " << bad.PositiveInfinity << " +Inf and "
-          << bad.NegativeInfinity << " -Inf samples (allow replacing them to render anyway)";
+          << bad.NegativeInfinity
+          << " -Inf samples (SetReplaceNonFiniteScalars, or the tool's --replace-nonfinite, renders them)";
       error = why.str();
       return nullptr;
     }

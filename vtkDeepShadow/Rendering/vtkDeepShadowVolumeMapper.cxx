@@ -7,6 +7,7 @@
 #include "vtkDeepShadowVolumeFS.h"
 #include "vtkDeepShadowVolumeVS.h"
 
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -19,6 +20,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -33,6 +35,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -131,7 +134,7 @@ public:
 
   // Transfer-function table and what it depends on.
   vtkSmartPointer<vtkTextureObject> Transfer;
-  vtkMTimeType TransferPropertyTime = 0;
+  std::array<double, 3> TransferKey{ { -1.0, -1.0, -1.0 } }; // colour, opacity times; unit distance
   int TransferUploadCount = -1;
   double TransferStep = 0.0;
   int TransferSize = 0;
@@ -139,9 +142,10 @@ public:
 
   // Empty-space block map.
   vtkSmartPointer<vtkTextureObject> Occupancy;
-  vtkMTimeType OccupancyPropertyTime = 0;
+  vtkMTimeType OccupancyOpacityTime = 0;
   int OccupancyUploadCount = -1;
   bool AnyEmptyBlock = false;
+  double EmptyBlockFraction = 0.0;
 
   // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
   vtkSmartPointer<vtkTextureObject> Depth;
@@ -222,6 +226,18 @@ double vtkDeepShadowVolumeMapper::GetEffectiveSampleDistance()
   return this->Impl->EffectiveStep;
 }
 
+void vtkDeepShadowVolumeMapper::Update()
+{
+  if (this->GetNumberOfInputConnections(0) == 0)
+  {
+    // vtkVolume updates its mapper every frame, then skips drawing without an input.
+    vtkDataArray* none = nullptr;
+    this->ReportError(adapter::CheckVolumeInput(nullptr, none));
+    return;
+  }
+  this->Superclass::Update();
+}
+
 void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Impl->Release(window);
@@ -235,10 +251,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->ReportError("vtkDeepShadowVolumeMapper needs an OpenGL render window");
     return;
   }
-  if (this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->Update();
-  }
+  this->Update();
   vtkImageData* input = this->GetImageInput();
   vtkVolumeProperty* property = volume->GetProperty();
   Internals& impl = *this->Impl;
@@ -347,7 +360,13 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance
                                                  : deepshadow::DefaultSampleDistance(indexToWorld);
   impl.EffectiveStep = step;
-  const vtkMTimeType propertyTime = property->GetMTime();
+  // What the table and the block map depend on: the functions themselves, not the property.
+  vtkObject* colorFunction = property->GetColorChannels(0) == 1
+    ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+    : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
+  const vtkMTimeType opacityTime = property->GetScalarOpacity(0)->GetMTime();
+  const std::array<double, 3> transferKey{ { static_cast<double>(colorFunction->GetMTime()),
+    static_cast<double>(opacityTime), property->GetScalarOpacityUnitDistance(0) } };
   const bool shade = property->GetShade(0) != 0;
   const int filter =
     property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION ? vtkTextureObject::Nearest
@@ -356,7 +375,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   impl.Volume->SetMagnificationFilter(filter);
 
   // 2. Transfer table: colour and step-corrected opacity (deepshadow::TransferTable).
-  if (!impl.Transfer || impl.TransferPropertyTime != propertyTime ||
+  if (!impl.Transfer || impl.TransferKey != transferKey ||
     impl.TransferUploadCount != this->VolumeUploads || impl.TransferStep != step ||
     impl.TransferSize != this->TransferTableSize)
   {
@@ -367,7 +386,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.Transfer->SetMagnificationFilter(vtkTextureObject::Linear);
     impl.Transfer->Create2DFromRaw(
       impl.Table.Size, 1, 4, VTK_FLOAT, static_cast<void*>(impl.Table.RGBA.data()));
-    impl.TransferPropertyTime = propertyTime;
+    impl.TransferKey = transferKey;
     impl.TransferUploadCount = this->VolumeUploads;
     impl.TransferStep = step;
     impl.TransferSize = this->TransferTableSize;
@@ -376,14 +395,14 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // 3. Empty-space block map: depends on the data and the opacity function only.
   if (this->EmptySpaceSkipping &&
-    (!impl.Occupancy || impl.OccupancyPropertyTime != propertyTime ||
+    (!impl.Occupancy || impl.OccupancyOpacityTime != opacityTime ||
       impl.OccupancyUploadCount != this->VolumeUploads))
   {
     const auto opacity = adapter::MakeTransferFunction(property).Opacity;
     std::vector<uint8_t> occupancy = impl.Blocks.Occupancy(opacity);
     const auto empty = std::count(occupancy.begin(), occupancy.end(), uint8_t(0));
     impl.AnyEmptyBlock = empty > 0;
-    this->EmptyBlockFraction = occupancy.empty() ? 0.0 : double(empty) / occupancy.size();
+    impl.EmptyBlockFraction = occupancy.empty() ? 0.0 : double(empty) / occupancy.size();
     for (uint8_t& v : occupancy)
     {
       v = v ? 255 : 0;
@@ -394,15 +413,12 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.Occupancy->Create3DFromRaw(static_cast<unsigned int>(impl.Blocks.BlockCount.x),
       static_cast<unsigned int>(impl.Blocks.BlockCount.y), static_cast<unsigned int>(impl.Blocks.BlockCount.z), 1,
       VTK_UNSIGNED_CHAR, occupancy.data());
-    impl.OccupancyPropertyTime = propertyTime;
+    impl.OccupancyOpacityTime = opacityTime;
     impl.OccupancyUploadCount = this->VolumeUploads;
     ++this->OccupancyBuilds;
   }
   const bool skipEmpty = this->EmptySpaceSkipping && impl.AnyEmptyBlock;
-  if (!this->EmptySpaceSkipping)
-  {
-    this->EmptyBlockFraction = 0.0;
-  }
+  this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.EmptyBlockFraction : 0.0;
 
   // 4. Viewport, matrices, lights.
   int width = 0, height = 0, x0 = 0, y0 = 0;

@@ -96,6 +96,10 @@ public:
   vtkImageData* GetImageInput();
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /** Without any input, reports our one clear error instead of the pipeline's. */
+  using Superclass::Update;
+  void Update() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
@@ -104,7 +108,7 @@ public:
   vtkGetMacro(VolumeUploads, int);        // 3D texture (re)uploads: data changed
   vtkGetMacro(TransferTableBuilds, int);  // TF table rebuilds: TF, range or step changed
   vtkGetMacro(OccupancyBuilds, int);      // empty-space block maps: data or opacity changed
-  vtkGetMacro(ShaderCompositions, int);   // distinct shader sources composed
+  vtkGetMacro(ShaderCompositions, int);   // times the composed shader source changed
   /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
   const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
   const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }

@@ -1,8 +1,8 @@
 #version 330 core
 // Composite ray casting of one volume; the GPU twin of deepshadow::ReferenceRenderer::MarchRay
-// (vtkDeepShadow/Core/ReferenceRenderer.cxx). Optional features are spliced in at the
-// //DeepShadow::<Feature>::<Part> tags by vtkDeepShadowShaderComposer; a feature that is off
-// leaves its tags empty, so its code is not compiled at all.
+// (vtkDeepShadow/Core/ReferenceRenderer.cxx). Optional features (Shaders/Features/*.glsl)
+// are spliced in at their tags by ShaderComposer; a feature that is off leaves its tags
+// empty, so its code is not compiled at all.
 //
 // Conventions shared with the CPU: positions are continuous voxel indices (voxel i at i,
 // texture coordinate (i + 0.5) / Dims); t is world distance along the ray from the near
