@@ -1,0 +1,153 @@
+// deepshadow bench: vtkDeepShadowVolumeMapper against VTK's vtkGPUVolumeRayCastMapper, in one
+// run, on the same scenes, views, lights and sample distance. Ratios of median frame times.
+#include "Commands.h"
+#include "Json.h"
+#include "SceneSetup.h"
+
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace deepshadow
+{
+namespace tool
+{
+namespace
+{
+struct BenchCase
+{
+  std::string Scene;
+  double Scale;
+  bool Shade;
+};
+
+// Median frame time of `mapper` over a short orbit, after two warm-up frames.
+double TimeMapper(vtkDeepShadowRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume,
+  vtkVolumeMapper* mapper, vtkDeepShadowStandardScene* scene, int frames)
+{
+  volume->SetMapper(mapper);
+  scene->ApplyCamera(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange();
+  RenderFrame(window);
+  RenderFrame(window);
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f)
+  {
+    renderer->GetActiveCamera()->Azimuth(2.0);
+    renderer->ResetCameraClippingRange();
+    times.push_back(RenderFrame(window));
+  }
+  return Median(times);
+}
+}
+
+int RunBench(const Options& options)
+{
+  vtkNew<vtkDeepShadowRenderWindow> window;
+  if (!options.Backend.empty())
+  {
+    window->SetBackend(vtkDeepShadowRenderWindow::BackendFromString(options.Backend.c_str()));
+  }
+  window->SetSize(options.Width, options.Height);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.08, 0.09, 0.12);
+  window->AddRenderer(renderer);
+
+  std::vector<BenchCase> cases;
+  for (int size : options.BenchSizes)
+  {
+    // spheres: sparse, native 128^3; head: dense CT-like, native 256x256x160.
+    cases.push_back({ "spheres", size / 128.0, true });
+    cases.push_back({ "head", size / 256.0, true });
+    cases.push_back({ "head", size / 256.0, false });
+  }
+
+  std::printf("%-8s %-13s %-6s %8s %10s %10s %7s %8s\n", "scene", "dims", "shade", "step",
+    "ours_ms", "vtk_ms", "ratio", "empty");
+  std::vector<Json> rows;
+  for (const BenchCase& c : cases)
+  {
+    vtkNew<vtkDeepShadowStandardScene> scene;
+    scene->SetScene(c.Scene);
+    scene->SetResolutionScale(std::clamp(c.Scale, 0.01, 2.0));
+    vtkImageData* data = scene->GetVolume();
+    vtkVolumeProperty* property = scene->GetVolumeProperty();
+    property->SetShade(c.Shade ? 1 : 0);
+    const double step = scene->GetSuggestedSampleDistance();
+
+    renderer->RemoveAllViewProps();
+    renderer->RemoveAllLights();
+    vtkNew<vtkVolume> volume;
+    volume->SetProperty(property);
+    renderer->AddVolume(volume);
+    double direction[3], center[3];
+    scene->GetLightDirection(direction);
+    data->GetCenter(center);
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetFocalPoint(center);
+    light->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
+    renderer->AddLight(light);
+
+    vtkNew<vtkDeepShadowVolumeMapper> ours;
+    ours->SetInputData(data);
+    ours->SetSampleDistance(step);
+    vtkNew<vtkGPUVolumeRayCastMapper> theirs;
+    theirs->SetInputData(data);
+    theirs->SetAutoAdjustSampleDistances(0);
+    theirs->SetSampleDistance(step);
+    theirs->SetUseJittering(0);
+
+    const double oursMs = TimeMapper(window, renderer, volume, ours, scene, options.Frames);
+    if (!ours->GetLastError().empty())
+    {
+      throw UsageError("bench: " + ours->GetLastError());
+    }
+    const double vtkMs = TimeMapper(window, renderer, volume, theirs, scene, options.Frames);
+    volume->SetMapper(nullptr);
+    int dims[3];
+    data->GetDimensions(dims);
+    const std::string dimsText =
+      std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
+    std::printf("%-8s %-13s %-6s %8.3f %10.1f %10.1f %7.3f %8.2f\n", c.Scene.c_str(),
+      dimsText.c_str(), c.Shade ? "yes" : "no", step, oursMs, vtkMs, oursMs / vtkMs,
+      ours->GetEmptyBlockFraction());
+    std::fflush(stdout);
+    Json row;
+    row.Set("scene", c.Scene)
+      .Set("dims", dimsText)
+      .Set("shade", c.Shade)
+      .Set("sample_distance", step)
+      .Set("ours_ms", oursMs)
+      .Set("vtk_ms", vtkMs)
+      .Set("ratio", oursMs / vtkMs)
+      .Set("empty_block_fraction", ours->GetEmptyBlockFraction());
+    rows.push_back(row);
+  }
+  if (!options.Json.empty())
+  {
+    Json all;
+    all.Set("width", options.Width)
+      .Set("height", options.Height)
+      .Set("frames", options.Frames)
+      .Set("backend", window->GetBackendAsString())
+      .Set("rows", rows);
+    all.Write(options.Json);
+  }
+  return 0;
+}
+
+}
+}

@@ -1,0 +1,238 @@
+#include "Commands.h"
+
+#include "Json.h"
+#include "SceneSetup.h"
+
+#include "Image.h"
+#include "vtkDeepShadowReferenceRenderer.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace deepshadow
+{
+namespace tool
+{
+namespace
+{
+std::string RendererString(vtkDeepShadowRenderWindow* window)
+{
+  std::istringstream report(window->ReportCapabilities());
+  std::string line;
+  const std::string key = "OpenGL renderer string:";
+  while (std::getline(report, line))
+  {
+    if (line.rfind(key, 0) == 0)
+    {
+      return line.substr(line.find_first_not_of(' ', key.size()));
+    }
+  }
+  return "unknown";
+}
+
+Image GrabImage(vtkDeepShadowRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* pixels = grab->GetOutput();
+  const int* dims = pixels->GetDimensions();
+  return Image::FromBytes(
+    static_cast<const uint8_t*>(pixels->GetScalarPointer()), dims[0], dims[1], 3);
+}
+
+vtkSmartPointer<vtkImageData> ToVTK(const Image& image)
+{
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetDimensions(image.Width, image.Height, 1);
+  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  const std::vector<uint8_t> bytes = image.ToBytes();
+  std::copy(bytes.begin(), bytes.end(),
+    vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetScalars())->GetPointer(0));
+  return data;
+}
+
+struct GpuRun
+{
+  double FirstFrameMs = 0.0;
+  std::vector<double> FrameMs;
+  Json Stats;
+};
+
+// One warm-up frame (uploads, shader compilation), then timed frames of the same view.
+GpuRun RenderGPU(SceneSetup& setup, const Options& options)
+{
+  GpuRun run;
+  run.FirstFrameMs = RenderFrame(setup.Window);
+  RequireDrawn(setup);
+  for (int f = 0; f < options.Frames; ++f)
+  {
+    run.FrameMs.push_back(RenderFrame(setup.Window));
+  }
+  vtkDeepShadowVolumeMapper* mapper = setup.Mapper;
+  run.Stats.Set("command", options.Command)
+    .Set("scene", setup.Name)
+    .Set("technique", options.Technique)
+    .Set("width", options.Width)
+    .Set("height", options.Height)
+    .Set("frames", options.Frames)
+    .Set("build_ms", 0.0) // shadow-structure build: no technique builds one yet
+    .Set("render_ms", Median(run.FrameMs))
+    .Set("render_ms_frames", run.FrameMs)
+    .Set("first_frame_ms", run.FirstFrameMs)
+    .Set("shadow_bytes", 0)
+    .Set("shadow_builds", 0)
+    .Set("passes", std::vector<std::string>{ "volume" })
+    .Set("shader_features", mapper->GetShaderFeatures())
+    .Set("sample_distance", mapper->GetEffectiveSampleDistance())
+    .Set("empty_block_fraction", mapper->GetEmptyBlockFraction())
+    .Set("volume_uploads", mapper->GetVolumeUploads())
+    .Set("transfer_table_builds", mapper->GetTransferTableBuilds())
+    .Set("shader_compositions", mapper->GetShaderCompositions())
+    .Set("gpu_memory_bytes", mapper->GetGPUMemoryBytes())
+    .Set("generation_ms", 1000.0 * setup.GenerationSeconds)
+    .Set("backend", setup.Window->GetBackendAsString())
+    .Set("context", setup.Window->GetContextDescription())
+    .Set("gl_renderer", RendererString(setup.Window));
+  return run;
+}
+
+Image RenderReference(SceneSetup& setup, const Options& options, double& milliseconds)
+{
+  vtkDeepShadowReferenceRenderer::PrepareRenderer(setup.Renderer);
+  vtkNew<vtkDeepShadowReferenceRenderer> reference;
+  reference->SetGpuTwin(options.GpuTwin);
+  reference->SetThreads(options.Threads);
+  reference->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
+  Image image;
+  const auto start = std::chrono::steady_clock::now();
+  if (!reference->Render(setup.Renderer, image))
+  {
+    throw UsageError("cannot render " + setup.Name + ": " + reference->GetLastError());
+  }
+  milliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return image;
+}
+}
+
+int RunRender(const Options& options)
+{
+  SceneSetup setup = SceneSetup::Build(options);
+  GpuRun run = RenderGPU(setup, options);
+  WritePNG(setup.Window, options.Out);
+  if (!options.Json.empty())
+  {
+    run.Stats.Write(options.Json);
+  }
+  std::printf("%s: %dx%d, median %.1f ms over %d frames (first %.1f ms) -> %s\n",
+    setup.Name.c_str(), options.Width, options.Height, Median(run.FrameMs), options.Frames,
+    run.FirstFrameMs, options.Out.c_str());
+  return 0;
+}
+
+int RunReference(const Options& options)
+{
+  SceneSetup setup = SceneSetup::Build(options);
+  double milliseconds = 0.0;
+  const Image image = RenderReference(setup, options, milliseconds);
+  WritePNG(ToVTK(image), options.Out);
+  if (!options.Json.empty())
+  {
+    Json stats;
+    stats.Set("command", options.Command)
+      .Set("scene", setup.Name)
+      .Set("technique", options.Technique)
+      .Set("renderer", options.GpuTwin ? "cpu-reference-gpu-twin" : "cpu-reference-exact")
+      .Set("width", options.Width)
+      .Set("height", options.Height)
+      .Set("frames", 1)
+      .Set("build_ms", 0.0)
+      .Set("render_ms", milliseconds)
+      .Set("shadow_bytes", 0)
+      .Set("shadow_builds", 0)
+      .Set("threads", options.Threads)
+      .Set("sample_distance", setup.Mapper->GetSampleDistance());
+    stats.Write(options.Json);
+  }
+  std::printf("%s: CPU reference (%s) %dx%d in %.0f ms -> %s\n", setup.Name.c_str(),
+    options.GpuTwin ? "GPU twin" : "exact", options.Width, options.Height, milliseconds,
+    options.Out.c_str());
+  return 0;
+}
+
+int RunAll(const Options& options)
+{
+  if (mkdir(options.OutDir.c_str(), 0755) != 0 && errno != EEXIST)
+  {
+    throw UsageError("cannot create directory " + options.OutDir);
+  }
+  std::vector<Json> summary;
+  std::printf("%-8s %10s %10s %12s %10s %10s\n", "scene", "gpu_ms", "first_ms", "reference_ms",
+    "rmse", "max_abs");
+  for (const std::string& name : vtkDeepShadowStandardScene::GetSceneNames())
+  {
+    Options sceneOptions = options;
+    sceneOptions.Scene = name;
+    sceneOptions.VolumeFile.clear();
+    SceneSetup setup = SceneSetup::Build(sceneOptions);
+    GpuRun run = RenderGPU(setup, sceneOptions);
+    const std::string stem = options.OutDir + "/" + name;
+    WritePNG(setup.Window, stem + ".png");
+    const Image gpu = GrabImage(setup.Window);
+
+    double referenceMs = 0.0;
+    const Image reference = RenderReference(setup, sceneOptions, referenceMs);
+    WritePNG(ToVTK(reference), stem + "-reference.png");
+    WritePNG(ToVTK(AbsoluteDifference(gpu, reference, 10.0)), stem + "-difference-x10.png");
+    const ImageDifference error = Compare(gpu, reference, 2.0 / 255.0);
+
+    run.Stats.Set("reference_ms", referenceMs)
+      .Set("rmse_vs_reference", error.RMSE)
+      .Set("max_abs_vs_reference", error.MaxAbs)
+      .Set("fraction_above_2_of_255", error.FractionAbove);
+    run.Stats.Write(stem + ".json");
+    summary.push_back(run.Stats);
+    std::printf("%-8s %10.1f %10.1f %12.0f %10.5f %10.4f\n", name.c_str(), Median(run.FrameMs),
+      run.FirstFrameMs, referenceMs, error.RMSE, error.MaxAbs);
+    std::fflush(stdout);
+  }
+  Json all;
+  all.Set("scenes", summary);
+  all.Write(options.OutDir + "/summary.json");
+  std::printf("images, references, differences (x10) and statistics in %s\n",
+    options.OutDir.c_str());
+  return 0;
+}
+
+int RunScenes(const Options&)
+{
+  for (const std::string& name : vtkDeepShadowStandardScene::GetSceneNames())
+  {
+    vtkNew<vtkDeepShadowStandardScene> scene;
+    scene->SetScene(name);
+    int dims[3];
+    scene->GetDimensions(dims);
+    std::printf("%-8s %4dx%4dx%4d  %s\n", name.c_str(), dims[0], dims[1], dims[2],
+      vtkDeepShadowStandardScene::GetSceneDescription(name).c_str());
+  }
+  return 0;
+}
+
+}
+}

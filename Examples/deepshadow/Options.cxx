@@ -1,0 +1,317 @@
+#include "Options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+namespace deepshadow
+{
+namespace tool
+{
+namespace
+{
+double ParseNumber(const std::string& option, const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+  {
+    throw UsageError(option + " expects a number, got '" + text + "'");
+  }
+  return value;
+}
+
+int ParseInteger(const std::string& option, const std::string& text, int lo, int hi)
+{
+  const double value = ParseNumber(option, text);
+  if (value != std::floor(value) || value < lo || value > hi)
+  {
+    throw UsageError(option + " expects a whole number in [" + std::to_string(lo) + ", " +
+      std::to_string(hi) + "], got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+std::vector<std::string> Split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, separator))
+  {
+    parts.push_back(part);
+  }
+  return parts;
+}
+}
+
+std::string Options::Usage()
+{
+  return R"(deepshadow: volume rendering with shadows, headless (vtkDeepShadow)
+
+Usage:
+  deepshadow render    [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json] [--frames N]
+  deepshadow reference [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json]
+                       [--gpu-twin] [--threads N]
+  deepshadow all       --out DIR [VIEW] [--frames N]
+  deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
+  deepshadow scenes
+  deepshadow --help
+
+Commands:
+  render      GPU ray casting with vtkDeepShadowVolumeMapper; writes the image and, with
+              --json, the frame statistics.
+  reference   The same scene rendered by the CPU reference in double precision (the ground
+              truth of every reported error); --gpu-twin reproduces the GPU's approximations
+              (transfer table, early termination) instead of the exact model.
+  all         Renders every standard scene into DIR (DIR/<scene>.png and .json), with the
+              CPU reference and the error against it.
+  bench       Our mapper against VTK's vtkGPUVolumeRayCastMapper in one run, same scenes,
+              same sample distance; prints the ratio of median frame times.
+  scenes      Lists the standard scenes.
+
+SCENE (default: --scene box):
+  --scene NAME            a standard scene (see `deepshadow scenes`)
+  --scale S               voxels per axis of the scene times S (0.01-2, default 1)
+  --volume FILE           a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr
+  --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing
+
+VIEW:
+  --size WxH              image size (default 512x512)
+  --light-dir X,Y,Z       one directional light from that direction (world; towards the
+                          light). Default: the scene's key light; the headlight for files.
+
+RENDERING:
+  --sample-distance D     world distance between samples (default: half the smallest voxel edge)
+  --technique NAME        shadow technique: none (default)
+  --no-shading            no gradient shading (emission and absorption only)
+  --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
+  --no-empty-space-skipping
+  --backend osmesa|egl    headless OpenGL backend (default: VTK_DEEPSHADOW_BACKEND or osmesa)
+
+OUTPUT:
+  --out FILE|DIR          PNG to write (render, reference) or directory (all)
+  --json FILE             statistics as JSON: technique, width, height, frames, build_ms,
+                          render_ms (median over frames after a warm-up, GL finished),
+                          first_frame_ms, shadow_bytes, shadow_builds, and more
+  --frames N              timed frames after one warm-up frame (default 5)
+  --verbose               also print VTK's own error and warning messages
+
+Exit codes: 0 success, 2 bad arguments or input (one line on stderr), 1 other failures.
+)";
+}
+
+Options Options::Parse(int argc, char* argv[])
+{
+  Options o;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty())
+  {
+    throw UsageError("no command given (try deepshadow --help)");
+  }
+  size_t i = 0;
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help")
+  {
+    o.Command = "help";
+    return o;
+  }
+  if (args[0].rfind("--", 0) == 0)
+  {
+    // Only options: render is the default command.
+    o.Command = "render";
+  }
+  else
+  {
+    o.Command = args[0];
+    i = 1;
+  }
+  static const char* const commands[] = { "render", "reference", "all", "bench", "scenes" };
+  bool known = false;
+  for (const char* c : commands)
+  {
+    known = known || o.Command == c;
+  }
+  if (!known)
+  {
+    throw UsageError("unknown command '" + o.Command + "' (try deepshadow --help)");
+  }
+
+  bool sawScene = false;
+  for (; i < args.size(); ++i)
+  {
+    std::string key = args[i];
+    std::string value;
+    bool hasInlineValue = false;
+    const size_t equals = key.find('=');
+    if (key.rfind("--", 0) == 0 && equals != std::string::npos)
+    {
+      value = key.substr(equals + 1);
+      key = key.substr(0, equals);
+      hasInlineValue = true;
+    }
+    auto next = [&]() -> std::string {
+      if (hasInlineValue)
+      {
+        return value;
+      }
+      if (i + 1 >= args.size())
+      {
+        throw UsageError(key + " needs a value");
+      }
+      return args[++i];
+    };
+
+    if (key == "--help" || key == "-h")
+    {
+      o.Command = "help";
+      return o;
+    }
+    else if (key == "--scene")
+    {
+      o.Scene = next();
+      sawScene = true;
+    }
+    else if (key == "--volume")
+    {
+      o.VolumeFile = next();
+    }
+    else if (key == "--scale")
+    {
+      o.SceneScale = ParseNumber(key, next());
+      if (o.SceneScale < 0.01 || o.SceneScale > 2.0)
+      {
+        throw UsageError("--scale must be in [0.01, 2]");
+      }
+    }
+    else if (key == "--size")
+    {
+      const std::string text = next();
+      const auto parts = Split(text, 'x');
+      if (parts.size() != 2)
+      {
+        throw UsageError("--size expects WxH, got '" + text + "'");
+      }
+      o.Width = ParseInteger(key, parts[0], 1, 16384);
+      o.Height = ParseInteger(key, parts[1], 1, 16384);
+    }
+    else if (key == "--sample-distance")
+    {
+      o.SampleDistance = ParseNumber(key, next());
+      if (!(o.SampleDistance > 0.0))
+      {
+        throw UsageError("--sample-distance must be positive");
+      }
+    }
+    else if (key == "--light-dir")
+    {
+      const std::string text = next();
+      const auto parts = Split(text, ',');
+      if (parts.size() != 3)
+      {
+        throw UsageError("--light-dir expects X,Y,Z, got '" + text + "'");
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        o.LightDirection[c] = ParseNumber(key, parts[c]);
+      }
+      const double length = std::sqrt(o.LightDirection[0] * o.LightDirection[0] +
+        o.LightDirection[1] * o.LightDirection[1] + o.LightDirection[2] * o.LightDirection[2]);
+      if (!(length > 0.0))
+      {
+        throw UsageError("--light-dir must not be the zero vector");
+      }
+      o.HasLightDirection = true;
+    }
+    else if (key == "--technique")
+    {
+      o.Technique = next();
+      if (o.Technique != "none")
+      {
+        throw UsageError("unknown technique '" + o.Technique + "' (available: none)");
+      }
+    }
+    else if (key == "--no-shading")
+    {
+      o.Shade = false;
+    }
+    else if (key == "--jitter")
+    {
+      o.Jitter = true;
+      o.JitterSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
+    }
+    else if (key == "--no-empty-space-skipping")
+    {
+      o.EmptySpaceSkipping = false;
+    }
+    else if (key == "--replace-nonfinite")
+    {
+      o.ReplaceNonFinite = true;
+    }
+    else if (key == "--backend")
+    {
+      o.Backend = next();
+      if (o.Backend != "osmesa" && o.Backend != "egl")
+      {
+        throw UsageError("--backend must be osmesa or egl, got '" + o.Backend + "'");
+      }
+    }
+    else if (key == "--out")
+    {
+      o.Out = next();
+    }
+    else if (key == "--json")
+    {
+      o.Json = next();
+    }
+    else if (key == "--frames")
+    {
+      o.Frames = ParseInteger(key, next(), 1, 100000);
+    }
+    else if (key == "--verbose")
+    {
+      o.Verbose = true;
+    }
+    else if (key == "--gpu-twin")
+    {
+      o.GpuTwin = true;
+    }
+    else if (key == "--threads")
+    {
+      o.Threads = ParseInteger(key, next(), 0, 1024);
+    }
+    else if (key == "--bench-sizes")
+    {
+      o.BenchSizes.clear();
+      for (const auto& part : Split(next(), ','))
+      {
+        o.BenchSizes.push_back(ParseInteger(key, part, 2, 2048));
+      }
+    }
+    else
+    {
+      throw UsageError("unknown option '" + args[i] + "' (try deepshadow --help)");
+    }
+  }
+
+  if (sawScene && !o.VolumeFile.empty())
+  {
+    throw UsageError("give either --scene or --volume, not both");
+  }
+  if (o.Scene.empty() && o.VolumeFile.empty())
+  {
+    o.Scene = "box";
+  }
+  if ((o.Command == "render" || o.Command == "reference" || o.Command == "all") && o.Out.empty())
+  {
+    throw UsageError(o.Command + " needs --out");
+  }
+  if (o.Command == "all")
+  {
+    o.OutDir = o.Out;
+  }
+  return o;
+}
+
+}
+}

@@ -1,0 +1,48 @@
+// Builds the VTK scene a command renders: headless window, renderer, volume, light, camera.
+#ifndef deepshadow_tool_SceneSetup_h
+#define deepshadow_tool_SceneSetup_h
+
+#include "Options.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkDeepShadowRenderWindow;
+class vtkDeepShadowVolumeMapper;
+class vtkImageData;
+class vtkRenderer;
+class vtkVolume;
+
+namespace deepshadow
+{
+namespace tool
+{
+
+struct SceneSetup
+{
+  vtkSmartPointer<vtkDeepShadowRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkVolume> Volume;
+  vtkSmartPointer<vtkDeepShadowVolumeMapper> Mapper;
+  vtkSmartPointer<vtkImageData> Data;
+  std::string Name; // scene name or file name
+  double GenerationSeconds = 0.0;
+
+  /** Loads or generates the volume and sets up the view; throws UsageError on bad input. */
+  static SceneSetup Build(const Options& options);
+};
+
+/** Renders one frame and waits for the GPU; returns wall milliseconds. */
+double RenderFrame(vtkDeepShadowRenderWindow* window);
+
+/** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
+void RequireDrawn(const SceneSetup& setup);
+
+/** Writes the window's pixels as PNG; throws UsageError if the file cannot be written. */
+void WritePNG(vtkDeepShadowRenderWindow* window, const std::string& path);
+void WritePNG(vtkImageData* image, const std::string& path);
+
+}
+}
+#endif

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The deepshadow tool's contract: --help, defaults, the JSON fields, and exit code 2 with one
+# line on stderr for bad arguments, unreadable files and unsupported data.
+# Usage: TestCommandLine.sh path/to/deepshadow work-directory
+set -u
+tool=$1
+work=$2
+mkdir -p "$work"
+cd "$work" || exit 1
+failures=0
+
+expect() { # expect CODE DESCRIPTION -- command...
+  local code=$1 what=$2
+  shift 3
+  "$@" > out.txt 2> err.txt
+  local got=$?
+  if [ "$got" -ne "$code" ]; then
+    echo "FAILED: $what: exit $got, expected $code"; cat err.txt; failures=$((failures + 1))
+  elif [ "$code" -eq 2 ] && { [ "$(wc -l < err.txt)" -ne 1 ] || ! grep -q "^deepshadow: " err.txt; }; then
+    echo "FAILED: $what: expected one 'deepshadow: ...' line on stderr"; cat err.txt; failures=$((failures + 1))
+  else
+    echo "ok: $what${code:+ (exit $code)}$( [ "$code" -eq 2 ] && echo ": $(cat err.txt)")"
+  fi
+}
+
+# A raw MetaImage volume: write_mhd NAME ELEMENTTYPE "DIMS" BYTES-GENERATOR
+write_mhd() {
+  printf 'ObjectType = Image\nNDims = 3\nDimSize = %s\nElementType = %s\nElementDataFile = %s.raw\n' \
+    "$3" "$2" "$1" > "$1.mhd"
+  eval "$4" > "$1.raw"
+}
+
+expect 0 "--help" -- "$tool" --help
+grep -q "deepshadow render" out.txt || { echo "FAILED: --help lacks the render usage"; failures=$((failures + 1)); }
+expect 2 "no arguments" -- "$tool"
+expect 2 "unknown command" -- "$tool" paint --out x.png
+expect 2 "unknown option" -- "$tool" render --colour red --out x.png
+expect 2 "missing --out" -- "$tool" render
+expect 2 "bad size" -- "$tool" render --size 12 --out x.png
+expect 2 "bad number" -- "$tool" render --sample-distance fast --out x.png
+expect 2 "negative sample distance" -- "$tool" render --sample-distance -1 --out x.png
+expect 2 "zero light direction" -- "$tool" render --light-dir 0,0,0 --out x.png
+expect 2 "unknown scene" -- "$tool" render --scene teapot --out x.png
+expect 2 "unknown technique" -- "$tool" render --technique magic --out x.png
+expect 2 "scene and volume" -- "$tool" render --scene box --volume a.vti --out x.png
+expect 2 "missing file" -- "$tool" render --volume does-not-exist.vti --out x.png
+echo "not a volume" > garbage.vti
+expect 2 "unreadable file" -- "$tool" render --volume garbage.vti --out x.png
+echo "1 2 3" > volume.xyz
+expect 2 "unsupported extension" -- "$tool" render --volume volume.xyz --out x.png
+
+write_mhd int32 MET_INT "4 4 4" "head -c 256 /dev/zero"
+expect 2 "unsupported scalar type" -- "$tool" render --volume int32.mhd --out x.png
+write_mhd flat MET_UCHAR "4 4 1" "head -c 16 /dev/zero"
+expect 2 "zero extent" -- "$tool" render --volume flat.mhd --out x.png
+# A float volume whose first sample is NaN (0x7fc00000, little endian), the rest 1.0.
+write_mhd nan MET_FLOAT "4 4 4" "printf '\x00\x00\xc0\x7f'; for i in \$(seq 63); do printf '\x00\x00\x80\x3f'; done"
+expect 2 "NaN samples" -- "$tool" render --volume nan.mhd --out x.png
+expect 0 "NaN samples, replaced" -- "$tool" render --volume nan.mhd --replace-nonfinite --size 64x64 --frames 1 --out nan.png
+
+# The defaults: a standard scene, a PNG and the JSON statistics.
+expect 0 "render with defaults" -- "$tool" render --size 96x96 --frames 2 --out default.png --json default.json
+[ -s default.png ] || { echo "FAILED: no default.png"; failures=$((failures + 1)); }
+for field in technique width height frames build_ms render_ms shadow_bytes first_frame_ms shadow_builds; do
+  grep -q "\"$field\":" default.json || { echo "FAILED: default.json lacks $field"; failures=$((failures + 1)); }
+done
+grep -q '"frames": 2' default.json || { echo "FAILED: frames not recorded"; failures=$((failures + 1)); }
+expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
+grep -q '"render_ms":' reference.json || { echo "FAILED: reference.json lacks render_ms"; failures=$((failures + 1)); }
+expect 0 "scenes" -- "$tool" scenes
+[ "$(wc -l < out.txt)" -eq 6 ] || { echo "FAILED: expected 6 scenes"; failures=$((failures + 1)); }
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
