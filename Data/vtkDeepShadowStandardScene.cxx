@@ -77,6 +77,26 @@ inline double Clamp01(double x)
   return Clamp(x, 0.0, 1.0);
 }
 
+// Squared distance from p to the segment a-b.
+double SegmentDistanceSquared(const double p[3], const double a[3], const double b[3])
+{
+  double e[3], q[3], ee = 0.0, qe = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    e[c] = b[c] - a[c];
+    q[c] = p[c] - a[c];
+    ee += e[c] * e[c];
+    qe += q[c] * e[c];
+  }
+  const double t = Clamp01(qe / ee);
+  double d2 = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    d2 += (q[c] - t * e[c]) * (q[c] - t * e[c]);
+  }
+  return d2;
+}
+
 inline double Lerp(double a, double b, double t)
 {
   return a + (b - a) * t;
@@ -327,22 +347,7 @@ void GenerateBucky(const Grid& g, unsigned char* out)
         double bond = 0.0;
         for (const auto& b : bonds)
         {
-          const auto& a0 = atoms[b[0]];
-          const auto& a1 = atoms[b[1]];
-          double e[3], q[3], ee = 0.0, qe = 0.0;
-          for (int c = 0; c < 3; ++c)
-          {
-            e[c] = a1[c] - a0[c];
-            q[c] = p[c] - a0[c];
-            ee += e[c] * e[c];
-            qe += q[c] * e[c];
-          }
-          const double t = Clamp01(qe / ee);
-          double d2 = 0.0;
-          for (int c = 0; c < 3; ++c)
-          {
-            d2 += (q[c] - t * e[c]) * (q[c] - t * e[c]);
-          }
+          const double d2 = SegmentDistanceSquared(p, atoms[b[0]].data(), atoms[b[1]].data());
           if (d2 < bondCut2)
           {
             bond = std::max(bond, DetExp(d2 * bondK)); // max: no bright spots where bonds meet
@@ -566,21 +571,7 @@ double EllipseDistance(double x, double y, double cx, double cy, double rx, doub
 // Distance to a capsule (segment a-b, radius r).
 double CapsuleDistance(const double p[3], const double a[3], const double b[3], double r)
 {
-  double e[3], q[3], ee = 0.0, qe = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    e[c] = b[c] - a[c];
-    q[c] = p[c] - a[c];
-    ee += e[c] * e[c];
-    qe += q[c] * e[c];
-  }
-  const double t = Clamp01(qe / ee);
-  double d2 = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    d2 += (q[c] - t * e[c]) * (q[c] - t * e[c]);
-  }
-  return std::sqrt(d2) - r;
+  return std::sqrt(SegmentDistanceSquared(p, a, b)) - r;
 }
 
 // True if p is farther than `margin` outside the ellipsoid's bounding box (cheap rejection).

@@ -4,6 +4,7 @@
 #include "SceneSetup.h"
 
 #include "Image.h"
+#include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
@@ -11,10 +12,7 @@
 
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
 #include "vtkRenderer.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <chrono>
 #include <cstdio>
@@ -41,30 +39,6 @@ std::string RendererString(vtkDeepShadowRenderWindow* window)
     }
   }
   return "unknown";
-}
-
-Image GrabImage(vtkDeepShadowRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* pixels = grab->GetOutput();
-  const int* dims = pixels->GetDimensions();
-  return Image::FromBytes(
-    static_cast<const uint8_t*>(pixels->GetScalarPointer()), dims[0], dims[1], 3);
-}
-
-vtkSmartPointer<vtkImageData> ToVTK(const Image& image)
-{
-  auto data = vtkSmartPointer<vtkImageData>::New();
-  data->SetDimensions(image.Width, image.Height, 1);
-  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  const std::vector<uint8_t> bytes = image.ToBytes();
-  std::copy(bytes.begin(), bytes.end(),
-    vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetScalars())->GetPointer(0));
-  return data;
 }
 
 struct GpuRun
@@ -151,7 +125,7 @@ int RunReference(const Options& options)
   SceneSetup setup = SceneSetup::Build(options);
   double milliseconds = 0.0;
   const Image image = RenderReference(setup, options, milliseconds);
-  WritePNG(ToVTK(image), options.Out);
+  WritePNG(ToImageData(image), options.Out);
   if (!options.Json.empty())
   {
     Json stats;
@@ -194,12 +168,12 @@ int RunAll(const Options& options)
     GpuRun run = RenderGPU(setup, sceneOptions);
     const std::string stem = options.OutDir + "/" + name;
     WritePNG(setup.Window, stem + ".png");
-    const Image gpu = GrabImage(setup.Window);
+    const Image gpu = CaptureWindow(setup.Window);
 
     double referenceMs = 0.0;
     const Image reference = RenderReference(setup, sceneOptions, referenceMs);
-    WritePNG(ToVTK(reference), stem + "-reference.png");
-    WritePNG(ToVTK(AbsoluteDifference(gpu, reference, 10.0)), stem + "-difference-x10.png");
+    WritePNG(ToImageData(reference), stem + "-reference.png");
+    WritePNG(ToImageData(AbsoluteDifference(gpu, reference, 10.0)), stem + "-difference-x10.png");
     const ImageDifference error = Compare(gpu, reference, 2.0 / 255.0);
 
     run.Stats.Set("reference_ms", referenceMs)

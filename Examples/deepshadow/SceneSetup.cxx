@@ -1,5 +1,6 @@
 #include "SceneSetup.h"
 
+#include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -10,18 +11,15 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 
 namespace deepshadow
 {
@@ -177,24 +175,15 @@ void RequireDrawn(const SceneSetup& setup)
 
 void WritePNG(vtkImageData* image, const std::string& path)
 {
-  if (!std::ofstream(path, std::ios::binary))
+  if (!deepshadow::WritePNG(image, path))
   {
     throw UsageError("cannot write " + path);
   }
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
 }
 
 void WritePNG(vtkDeepShadowRenderWindow* window, const std::string& path)
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  WritePNG(grab->GetOutput(), path);
+  WritePNG(ToImageData(CaptureWindow(window)), path);
 }
 
 }

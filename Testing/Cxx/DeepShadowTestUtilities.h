@@ -4,6 +4,7 @@
 #define DeepShadowTestUtilities_h
 
 #include "Image.h"
+#include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 
 #include "vtkCamera.h"
@@ -12,14 +13,11 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
-#include "vtkPNGWriter.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkSmartPointer.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <glm/common.hpp>
 
@@ -39,15 +37,7 @@ namespace testing
 /** The window's pixels as linear RGB in [0, 1]. */
 inline Image Grab(vtkRenderWindow* window)
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* pixels = grab->GetOutput();
-  const int* dims = pixels->GetDimensions();
-  return Image::FromBytes(
-    static_cast<const uint8_t*>(pixels->GetScalarPointer()), dims[0], dims[1], 3);
+  return CaptureWindow(window);
 }
 
 /** The CPU reference of the renderer's scene (exact, or the GPU's twin). */
@@ -71,21 +61,6 @@ inline double CoveredFraction(const Image& image, const glm::dvec3& background)
       covered += (std::max({ d.x, d.y, d.z }) > 2.0 / 255.0) ? 1 : 0;
     }
   return static_cast<double>(covered) / (static_cast<double>(image.Width) * image.Height);
-}
-
-/** Writes an image as PNG (for looking at what a test compared). */
-inline void WritePNG(const Image& image, const std::string& path)
-{
-  vtkNew<vtkImageData> data;
-  data->SetDimensions(image.Width, image.Height, 1);
-  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  const std::vector<uint8_t> bytes = image.ToBytes();
-  std::copy(bytes.begin(), bytes.end(),
-    vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetScalars())->GetPointer(0));
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->Write();
 }
 
 /**

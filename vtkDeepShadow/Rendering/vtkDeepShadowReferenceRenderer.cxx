@@ -2,6 +2,7 @@
 
 #include "CoreAdapter.h"
 #include "ReferenceRenderer.h"
+#include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkImageData.h"
@@ -9,7 +10,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeMapper.h"
@@ -124,11 +124,7 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData*
   {
     return false;
   }
-  const std::vector<uint8_t> bytes = image.ToBytes();
-  output->SetDimensions(image.Width, image.Height, 1);
-  output->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* scalars = vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetScalars());
-  std::copy(bytes.begin(), bytes.end(), scalars->GetPointer(0));
+  output->DeepCopy(deepshadow::ToImageData(image));
   return true;
 }
 

@@ -1,0 +1,31 @@
+/**
+ * Conversions between the Core's linear-RGB images (deepshadow::Image, what errors are
+ * measured on) and VTK: a render window's pixels, vtkImageData, PNG files.
+ */
+#ifndef vtkDeepShadowImageConversion_h
+#define vtkDeepShadowImageConversion_h
+
+#include "Image.h"                        // For deepshadow::Image
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkSmartPointer.h"              // For vtkSmartPointer
+
+#include <string> // For std::string
+
+class vtkImageData;
+class vtkRenderWindow;
+
+namespace deepshadow
+{
+
+/** The window's current pixels (back buffer, RGB) as an Image. */
+VTKDEEPSHADOWRENDERING_EXPORT Image CaptureWindow(vtkRenderWindow* window);
+
+/** An 8-bit RGB vtkImageData of the image (values rounded and clamped). */
+VTKDEEPSHADOWRENDERING_EXPORT vtkSmartPointer<vtkImageData> ToImageData(const Image& image);
+
+/** Writes a PNG; returns false if the file cannot be written. */
+VTKDEEPSHADOWRENDERING_EXPORT bool WritePNG(const Image& image, const std::string& path);
+VTKDEEPSHADOWRENDERING_EXPORT bool WritePNG(vtkImageData* image, const std::string& path);
+
+}
+#endif
