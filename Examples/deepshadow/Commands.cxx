@@ -8,6 +8,7 @@
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkImageData.h"
@@ -65,12 +66,12 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("width", options.Width)
     .Set("height", options.Height)
     .Set("frames", options.Frames)
-    .Set("build_ms", 0.0) // shadow-structure build: no technique builds one yet
+    .Set("build_ms", setup.Technique ? setup.Technique->GetLastBuildMilliseconds() : 0.0)
     .Set("render_ms", Median(run.FrameMs))
     .Set("render_ms_frames", run.FrameMs)
     .Set("first_frame_ms", run.FirstFrameMs)
-    .Set("shadow_bytes", 0)
-    .Set("shadow_builds", 0)
+    .Set("shadow_bytes", setup.Technique ? setup.Technique->GetShadowBytes() : 0LL)
+    .Set("shadow_builds", mapper->GetShadowBuilds())
     .Set("passes", std::vector<std::string>{ "volume" })
     .Set("shader_features", mapper->GetShaderFeatures())
     .Set("sample_distance", mapper->GetEffectiveSampleDistance())
@@ -93,6 +94,8 @@ Image RenderReference(SceneSetup& setup, const Options& options, double& millise
   reference->SetGpuTwin(options.GpuTwin);
   reference->SetThreads(options.Threads);
   reference->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
+  reference->SetShadows(options.GroundTruth ? vtkDeepShadowReferenceRenderer::GroundTruthShadows
+                                            : vtkDeepShadowReferenceRenderer::TechniqueShadows);
   Image image;
   const auto start = std::chrono::steady_clock::now();
   if (!reference->Render(setup.Renderer, image))
@@ -133,6 +136,7 @@ int RunReference(const Options& options)
       .Set("scene", setup.Name)
       .Set("technique", options.Technique)
       .Set("renderer", options.GpuTwin ? "cpu-reference-gpu-twin" : "cpu-reference-exact")
+      .Set("shadows", options.GroundTruth ? "ground-truth" : options.Technique)
       .Set("width", options.Width)
       .Set("height", options.Height)
       .Set("frames", 1)

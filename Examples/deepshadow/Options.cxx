@@ -1,5 +1,6 @@
 #include "Options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -46,6 +47,86 @@ std::vector<std::string> Split(const std::string& text, char separator)
 }
 }
 
+std::vector<std::string> TechniqueNames()
+{
+  return { "none", "rays", "rays-opaque", "rays-cached", "rays-opaque-cached", "shadowmap" };
+}
+
+namespace
+{
+std::array<double, 3> ParseVector(const std::string& option, const std::string& text)
+{
+  const auto parts = Split(text, ',');
+  if (parts.size() != 3)
+  {
+    throw UsageError(option + " expects X,Y,Z, got '" + text + "'");
+  }
+  std::array<double, 3> v;
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = ParseNumber(option, parts[c]);
+  }
+  return v;
+}
+
+// dir:X,Y,Z[:I] | pos:X,Y,Z[:I] | spot:X,Y,Z:ANGLE[:I]
+LightSpec ParseLight(const std::string& text)
+{
+  const auto parts = Split(text, ':');
+  LightSpec light;
+  if (parts.size() < 2)
+  {
+    throw UsageError("--light expects dir:X,Y,Z, pos:X,Y,Z or spot:X,Y,Z:ANGLE (optionally :INTENSITY), got '" + text + "'");
+  }
+  size_t next = 2;
+  if (parts[0] == "dir")
+  {
+    light.Kind = LightSpec::Directional;
+  }
+  else if (parts[0] == "pos")
+  {
+    light.Kind = LightSpec::Positional;
+  }
+  else if (parts[0] == "spot")
+  {
+    light.Kind = LightSpec::Spot;
+    if (parts.size() < 3)
+    {
+      throw UsageError("--light spot:X,Y,Z:ANGLE needs the cone angle");
+    }
+    light.ConeAngle = ParseNumber("--light", parts[2]);
+    if (!(light.ConeAngle > 0.0 && light.ConeAngle < 90.0))
+    {
+      throw UsageError("--light spot cone angle must be in (0, 90) degrees");
+    }
+    next = 3;
+  }
+  else
+  {
+    throw UsageError("--light type must be dir, pos or spot, got '" + parts[0] + "'");
+  }
+  light.Vector = ParseVector("--light", parts[1]);
+  if (parts.size() > next)
+  {
+    light.Intensity = ParseNumber("--light", parts[next]);
+    if (light.Intensity < 0.0)
+    {
+      throw UsageError("--light intensity must not be negative");
+    }
+  }
+  if (parts.size() > next + 1)
+  {
+    throw UsageError("--light has too many fields: '" + text + "'");
+  }
+  if (light.Kind == LightSpec::Directional &&
+    light.Vector[0] == 0.0 && light.Vector[1] == 0.0 && light.Vector[2] == 0.0)
+  {
+    throw UsageError("--light dir must not be the zero vector");
+  }
+  return light;
+}
+}
+
 std::string Options::Usage()
 {
   return R"(deepshadow: volume rendering with shadows, headless (vtkDeepShadow)
@@ -53,7 +134,7 @@ std::string Options::Usage()
 Usage:
   deepshadow render    [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json] [--frames N]
   deepshadow reference [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json]
-                       [--gpu-twin] [--threads N]
+                       [--gpu-twin | --ground-truth] [--threads N]
   deepshadow all       --out DIR [VIEW] [--frames N]
   deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
   deepshadow scenes
@@ -63,8 +144,10 @@ Commands:
   render      GPU ray casting with vtkDeepShadowVolumeMapper; writes the image and, with
               --json, the frame statistics.
   reference   The same scene rendered by the CPU reference in double precision (the ground
-              truth of every reported error); --gpu-twin reproduces the GPU's approximations
-              (transfer table, early termination) instead of the exact model.
+              truth of every reported error), with the CPU twin of the chosen technique;
+              --gpu-twin reproduces the GPU's approximations (transfer table, early
+              termination) instead of the exact model; --ground-truth renders the exact
+              shadows (translucent shadow rays at a quarter step) whatever the technique.
   all         Renders every standard scene into DIR (DIR/<scene>.png and .json), with the
               CPU reference and the error against it.
   bench       Our mapper against VTK's vtkGPUVolumeRayCastMapper in one run, same scenes,
@@ -79,12 +162,25 @@ SCENE (default: --scene box):
 
 VIEW:
   --size WxH              image size (default 512x512)
-  --light-dir X,Y,Z       one directional light from that direction (world; towards the
-                          light). Default: the scene's key light; the headlight for files.
+  --light-dir X,Y,Z       a directional light from that direction (world; towards the light)
+  --light-pos X,Y,Z       a positional (point) light at that world position
+  --light SPEC            a light: dir:X,Y,Z | pos:X,Y,Z | spot:X,Y,Z:ANGLE, each with an
+                          optional :INTENSITY; spots aim at the volume's centre. Repeatable;
+                          all light options add up. Default: the scene's key light (the
+                          headlight for files).
 
 RENDERING:
   --sample-distance D     world distance between samples (default: half the smallest voxel edge)
-  --technique NAME        shadow technique: none (default)
+  --technique NAME        shadow technique: none (default), rays (translucent shadow
+                          rays), rays-opaque, rays-cached, rays-opaque-cached, shadowmap
+  --shadow-threshold T    opaque occluder threshold in [0, 1] (default 0.5): opacity, or
+                          the normalized scalar with --threshold-on scalar
+  --threshold-on opacity|scalar
+  --shadow-step-factor F  feeler / light-ray step as a factor of the sample distance (default 1)
+  --shadow-volume-size N  rays-cached: shadow volume nodes along the longest axis (default 128)
+  --shadow-map-size N     shadowmap: texels per side (default 512)
+  --pcf none|2x2|3x3|poisson   shadowmap filter (default 3x3)
+  --bias B                shadowmap depth bias in feeler steps (default 2)
   --no-shading            no gradient shading (emission and absorption only)
   --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
   --no-empty-space-skipping
@@ -205,31 +301,91 @@ Options Options::Parse(int argc, char* argv[])
     }
     else if (key == "--light-dir")
     {
-      const std::string text = next();
-      const auto parts = Split(text, ',');
-      if (parts.size() != 3)
-      {
-        throw UsageError("--light-dir expects X,Y,Z, got '" + text + "'");
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        o.LightDirection[c] = ParseNumber(key, parts[c]);
-      }
-      const double length = std::sqrt(o.LightDirection[0] * o.LightDirection[0] +
-        o.LightDirection[1] * o.LightDirection[1] + o.LightDirection[2] * o.LightDirection[2]);
-      if (!(length > 0.0))
+      LightSpec light;
+      light.Vector = ParseVector(key, next());
+      if (light.Vector[0] == 0.0 && light.Vector[1] == 0.0 && light.Vector[2] == 0.0)
       {
         throw UsageError("--light-dir must not be the zero vector");
       }
-      o.HasLightDirection = true;
+      o.Lights.push_back(light);
+    }
+    else if (key == "--light-pos")
+    {
+      LightSpec light;
+      light.Kind = LightSpec::Positional;
+      light.Vector = ParseVector(key, next());
+      o.Lights.push_back(light);
+    }
+    else if (key == "--light")
+    {
+      o.Lights.push_back(ParseLight(next()));
     }
     else if (key == "--technique")
     {
       o.Technique = next();
-      if (o.Technique != "none")
+      const auto names = TechniqueNames();
+      if (std::find(names.begin(), names.end(), o.Technique) == names.end())
       {
-        throw UsageError("unknown technique '" + o.Technique + "' (available: none)");
+        std::string list;
+        for (const auto& name : names)
+        {
+          list += (list.empty() ? "" : ", ") + name;
+        }
+        throw UsageError("unknown technique '" + o.Technique + "' (available: " + list + ")");
       }
+    }
+    else if (key == "--shadow-threshold")
+    {
+      o.ShadowThreshold = ParseNumber(key, next());
+      if (o.ShadowThreshold < 0.0 || o.ShadowThreshold > 1.0)
+      {
+        throw UsageError("--shadow-threshold must be in [0, 1]");
+      }
+    }
+    else if (key == "--threshold-on")
+    {
+      const std::string mode = next();
+      if (mode != "opacity" && mode != "scalar")
+      {
+        throw UsageError("--threshold-on must be opacity or scalar, got '" + mode + "'");
+      }
+      o.ThresholdOnScalar = mode == "scalar";
+    }
+    else if (key == "--shadow-step-factor")
+    {
+      o.ShadowStepFactor = ParseNumber(key, next());
+      if (o.ShadowStepFactor < 0.01 || o.ShadowStepFactor > 100.0)
+      {
+        throw UsageError("--shadow-step-factor must be in [0.01, 100]");
+      }
+    }
+    else if (key == "--shadow-volume-size")
+    {
+      o.ShadowVolumeSize = ParseInteger(key, next(), 2, 2048);
+    }
+    else if (key == "--shadow-map-size")
+    {
+      o.ShadowMapSize = ParseInteger(key, next(), 1, 65536);
+    }
+    else if (key == "--pcf")
+    {
+      o.Filter = next();
+      if (o.Filter != "none" && o.Filter != "2x2" && o.Filter != "3x3" && o.Filter != "poisson")
+      {
+        throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + o.Filter + "'");
+      }
+    }
+    else if (key == "--bias")
+    {
+      o.Bias = ParseNumber(key, next());
+      if (o.Bias < 0.0)
+      {
+        throw UsageError("--bias must not be negative");
+      }
+    }
+    else if (key == "--ground-truth")
+    {
+      o.GroundTruth = true;
     }
     else if (key == "--no-shading")
     {

@@ -18,6 +18,24 @@ struct UsageError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/** A light given on the command line (--light-dir, --light-pos, --light). */
+struct LightSpec
+{
+  enum Type
+  {
+    Directional, // Vector: direction towards the light
+    Positional,  // Vector: position
+    Spot         // Vector: position; aims at the volume's centre with ConeAngle
+  };
+  Type Kind = Directional;
+  std::array<double, 3> Vector{ { 0.0, 0.0, 1.0 } };
+  double ConeAngle = 30.0;
+  double Intensity = 1.0;
+};
+
+/** Techniques the tool can choose (see --technique). */
+std::vector<std::string> TechniqueNames();
+
 struct Options
 {
   std::string Command; // render | reference | bench | all | scenes | help
@@ -29,14 +47,20 @@ struct Options
   int Width = 512;
   int Height = 512;
   double SampleDistance = 0.0; // 0: the mapper's default
-  bool HasLightDirection = false;
-  std::array<double, 3> LightDirection{ { 0.0, 0.0, 1.0 } };
+  std::vector<LightSpec> Lights; // empty: the scene's key light, or the headlight for files
   bool Shade = true;
   bool Jitter = false;
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;
   bool ReplaceNonFinite = false;
   std::string Technique = "none";
+  double ShadowThreshold = 0.5;
+  bool ThresholdOnScalar = false;
+  double ShadowStepFactor = 1.0;
+  int ShadowVolumeSize = 128;
+  int ShadowMapSize = 512;
+  std::string Filter = "3x3";
+  double Bias = 2.0;
   std::string Backend; // "" = VTK_DEEPSHADOW_BACKEND or OSMesa
 
   // Outputs and measurement.
@@ -48,6 +72,7 @@ struct Options
 
   // reference
   bool GpuTwin = false;
+  bool GroundTruth = false; // translucent shadow rays at a fine step, whatever the technique
   int Threads = 0;
 
   // bench

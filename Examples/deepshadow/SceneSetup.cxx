@@ -1,7 +1,9 @@
 #include "SceneSetup.h"
 
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowShadowMapTechnique.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumeMapper.h"
 #include "vtkDeepShadowVolumeReader.h"
@@ -55,6 +57,39 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 }
 }
 
+vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
+{
+  vtkSmartPointer<vtkDeepShadowTechnique> technique;
+  const std::string& name = options.Technique;
+  if (name.rfind("rays", 0) == 0)
+  {
+    auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
+    rays->SetOpaque(name.find("opaque") != std::string::npos);
+    rays->SetCached(name.find("cached") != std::string::npos);
+    rays->SetShadowVolumeSize(options.ShadowVolumeSize);
+    technique = rays;
+  }
+  else if (name == "shadowmap")
+  {
+    auto map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
+    map->SetMapSize(options.ShadowMapSize);
+    map->SetBias(options.Bias);
+    map->SetFilter(options.Filter == "none" ? vtkDeepShadowShadowMapTechnique::NoFilter
+        : options.Filter == "2x2"           ? vtkDeepShadowShadowMapTechnique::PCF2x2
+        : options.Filter == "3x3"           ? vtkDeepShadowShadowMapTechnique::PCF3x3
+                                            : vtkDeepShadowShadowMapTechnique::PoissonDisc);
+    technique = map;
+  }
+  if (technique)
+  {
+    technique->SetThreshold(options.ShadowThreshold);
+    technique->SetThresholdMode(options.ThresholdOnScalar ? vtkDeepShadowTechnique::ScalarThreshold
+                                                          : vtkDeepShadowTechnique::OpacityThreshold);
+    technique->SetStepFactor(options.ShadowStepFactor);
+  }
+  return technique;
+}
+
 SceneSetup SceneSetup::Build(const Options& options)
 {
   SceneSetup setup;
@@ -69,9 +104,7 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Window->AddRenderer(setup.Renderer);
 
   vtkSmartPointer<vtkVolumeProperty> property;
-  double lightDirection[3] = { options.LightDirection[0], options.LightDirection[1],
-    options.LightDirection[2] };
-  bool keyLight = options.HasLightDirection;
+  std::vector<LightSpec> lights = options.Lights;
   vtkNew<vtkDeepShadowStandardScene> scene;
   if (!options.VolumeFile.empty())
   {
@@ -103,10 +136,11 @@ SceneSetup SceneSetup::Build(const Options& options)
     setup.GenerationSeconds = scene->GetLastGenerationTime();
     setup.Name = options.Scene;
     property = scene->GetVolumeProperty();
-    if (!keyLight)
+    if (lights.empty())
     {
-      scene->GetLightDirection(lightDirection);
-      keyLight = true;
+      LightSpec key;
+      scene->GetLightDirection(key.Vector.data());
+      lights.push_back(key);
     }
   }
   property->SetShade(options.Shade ? 1 : 0);
@@ -118,6 +152,8 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Mapper->SetJitterSeed(options.JitterSeed);
   setup.Mapper->SetEmptySpaceSkipping(options.EmptySpaceSkipping);
   setup.Mapper->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
+  setup.Technique = MakeTechnique(options);
+  setup.Mapper->SetShadowTechnique(setup.Technique);
   setup.Volume = vtkSmartPointer<vtkVolume>::New();
   setup.Volume->SetMapper(setup.Mapper);
   setup.Volume->SetProperty(property);
@@ -138,16 +174,28 @@ SceneSetup SceneSetup::Build(const Options& options)
   }
   setup.Renderer->ResetCameraClippingRange();
 
-  if (keyLight)
+  // The lights asked for (the renderer's ambient keeps unlit parts readable); none: VTK's
+  // automatic headlight.
+  const double* centre = setup.Volume->GetCenter();
+  for (const LightSpec& spec : lights)
   {
-    // One directional key light; the renderer's ambient keeps shadowed parts readable.
-    const double* center = setup.Volume->GetCenter();
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
-    light->SetPositional(false);
-    light->SetFocalPoint(center);
-    light->SetPosition(center[0] + lightDirection[0], center[1] + lightDirection[1],
-      center[2] + lightDirection[2]);
+    light->SetIntensity(spec.Intensity);
+    const double* v = spec.Vector.data();
+    if (spec.Kind == LightSpec::Directional)
+    {
+      light->SetPositional(false);
+      light->SetFocalPoint(centre);
+      light->SetPosition(centre[0] + v[0], centre[1] + v[1], centre[2] + v[2]);
+    }
+    else
+    {
+      light->SetPositional(true);
+      light->SetPosition(v[0], v[1], v[2]);
+      light->SetFocalPoint(centre);
+      light->SetConeAngle(spec.Kind == LightSpec::Spot ? spec.ConeAngle : 180.0);
+    }
     setup.Renderer->AddLight(light);
   }
   return setup;

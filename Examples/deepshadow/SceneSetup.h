@@ -9,6 +9,7 @@
 #include <string>
 
 class vtkDeepShadowRenderWindow;
+class vtkDeepShadowTechnique;
 class vtkDeepShadowVolumeMapper;
 class vtkImageData;
 class vtkRenderer;
@@ -25,6 +26,7 @@ struct SceneSetup
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkDeepShadowVolumeMapper> Mapper;
+  vtkSmartPointer<vtkDeepShadowTechnique> Technique; // null for --technique none
   vtkSmartPointer<vtkImageData> Data;
   std::string Name; // scene name or file name
   double GenerationSeconds = 0.0;
@@ -32,6 +34,9 @@ struct SceneSetup
   /** Loads or generates the volume and sets up the view; throws UsageError on bad input. */
   static SceneSetup Build(const Options& options);
 };
+
+/** The technique --technique names, with its parameters (null for none). */
+vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options);
 
 /** Renders one frame and waits for the GPU; returns wall milliseconds. */
 double RenderFrame(vtkDeepShadowRenderWindow* window);

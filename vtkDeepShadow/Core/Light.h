@@ -22,6 +22,8 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
   glm::dvec3 Attenuation{ 1.0, 0.0, 0.0 };
   double ConeAngle = 180.0; // degrees; < 90 makes a spot light
   double Exponent = 1.0;
+  /** vtkLight::ShadowAttenuation: 0 casts no shadow, 1 full shadows (the default). */
+  double ShadowAttenuation = 1.0;
 
   /** Direction and colour of this light as seen from world point `p`. */
   LightSample At(const glm::dvec3& p) const;

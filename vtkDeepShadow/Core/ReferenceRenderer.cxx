@@ -25,10 +25,43 @@ MarchSettings MarchSettings::GpuTwin(
   return settings;
 }
 
+std::vector<std::unique_ptr<LightShadow>> ReferenceRenderer::BuildShadows(const Scene& scene,
+  const VolumeInstance& volume, const MarchSettings& settings, TransferTable* feelerTable,
+  int threads)
+{
+  std::vector<std::unique_ptr<LightShadow>> shadows(scene.Lights.size());
+  if (volume.Shadows.Kind == ShadowKind::None)
+  {
+    return shadows;
+  }
+  ShadowCaster caster;
+  caster.Grid = volume.Grid.get();
+  caster.Transfer = &volume.Transfer;
+  caster.Sampling = volume.Sampling;
+  if (settings.TransferTableSize > 0 && feelerTable)
+  {
+    const glm::dvec2 range = volume.Grid->GetRange();
+    *feelerTable = TransferTable::Sample(volume.Transfer, range.x, range.y,
+      settings.TransferTableSize, volume.Shadows.StepFactor * settings.SampleDistance);
+    caster.FeelerTable = feelerTable;
+  }
+  for (size_t l = 0; l < scene.Lights.size(); ++l)
+  {
+    if (scene.Lights[l].ShadowAttenuation > 0.0)
+    {
+      shadows[l] = MakeLightShadow(
+        volume.Shadows, caster, scene.Lights[l], settings.SampleDistance, threads);
+    }
+  }
+  return shadows;
+}
+
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const Ray& ray, double tLimit, double offset, const MarchSettings& settings,
-  const TransferTable* table)
+  const TransferTable* table, const std::vector<std::unique_ptr<LightShadow>>* shadows)
 {
+  const bool shadowed = volume.Shadows.Kind != ShadowKind::None && shadows;
+  const bool lit = volume.Shade || shadowed;
   const VolumeGrid& grid = *volume.Grid;
   double tEnter = 0.0, tExit = 0.0;
   if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1),
@@ -72,17 +105,27 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     {
       continue;
     }
-    if (volume.Shade)
+    if (lit)
     {
       const glm::dvec3 position = ray.Origin + t * ray.Direction;
-      const glm::dvec3 normal = NormalFromGradient(grid.WorldGradient(index, volume.Sampling));
-      glm::dvec3 lit = volume.Surface.Ambient * color * scene.AmbientLight;
-      for (const Light& light : scene.Lights)
+      const glm::dvec3 normal = volume.Shade
+        ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling))
+        : glm::dvec3(0.0);
+      glm::dvec3 light = volume.Surface.Ambient * color * scene.AmbientLight;
+      for (size_t l = 0; l < scene.Lights.size(); ++l)
       {
-        lit += PhongLight(color, normal, -ray.Direction, light.At(position), volume.Surface,
-          scene.TwoSidedLighting);
+        const LightSample sample = scene.Lights[l].At(position);
+        glm::dvec3 contribution = volume.Shade
+          ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
+          : volume.Surface.Diffuse * sample.Diffuse * color;
+        if (shadowed && (*shadows)[l] && contribution != glm::dvec3(0.0))
+        {
+          const double visibility = (*shadows)[l]->Visibility(position);
+          contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+        }
+        light += contribution;
       }
-      color = glm::clamp(lit, 0.0, 1.0);
+      color = glm::clamp(light, 0.0, 1.0);
     }
     CompositeFrontToBack(accumulated, color, alpha);
   }
@@ -96,14 +139,18 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
   Image image(width, height);
 
   std::vector<TransferTable> tables;
-  if (settings.TransferTableSize > 0)
+  std::vector<TransferTable> feelerTables(scene.Volumes.size());
+  std::vector<std::vector<std::unique_ptr<LightShadow>>> shadows;
+  for (size_t v = 0; v < scene.Volumes.size(); ++v)
   {
-    for (const VolumeInstance& volume : scene.Volumes)
+    const VolumeInstance& volume = scene.Volumes[v];
+    if (settings.TransferTableSize > 0)
     {
       const glm::dvec2 range = volume.Grid->GetRange();
       tables.push_back(TransferTable::Sample(
         volume.Transfer, range.x, range.y, settings.TransferTableSize, settings.SampleDistance));
     }
+    shadows.push_back(BuildShadows(scene, volume, settings, &feelerTables[v], threads));
   }
 
   ParallelFor(
@@ -120,7 +167,7 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
         {
           const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], ray,
             std::numeric_limits<double>::infinity(), offset, settings,
-            tables.empty() ? nullptr : &tables[v]);
+            tables.empty() ? nullptr : &tables[v], &shadows[v]);
           pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
         }
         image.Set(x, y, pixel);

@@ -6,6 +6,12 @@
 // offset 0.5 (or the pixel's jitter), opacity corrected for dt, Phong-shaded if asked,
 // composited front to back, and the volumes blended over the background in scene order.
 //
+// Lighting: a shaded volume is Phong-lit (ambient + per light diffuse and specular of the
+// gradient normal); an unshaded volume with a shadow technique scatters light isotropically
+// (ambient + per light diffuse without the normal), so that it can receive shadows; an
+// unshaded volume without shadows just emits its colour. Each light's diffuse and specular
+// part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)); ambient never is.
+//
 // With the default MarchSettings it is the exact model (transfer functions evaluated exactly,
 // no early termination). `GpuTwin()` settings reproduce what the GPU computes instead (table
 // lookups, early termination), so GPU and CPU can be compared formula by formula.
@@ -16,6 +22,7 @@
 #include "Image.h"
 #include "Light.h"
 #include "OpticalModel.h"
+#include "Shadows.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
 #include "vtkDeepShadowCoreModule.h"
@@ -36,6 +43,8 @@ struct VolumeInstance
   Material Surface;
   bool Shade = false;
   Interpolation Sampling = Interpolation::Linear;
+  /** How the volume shadows itself (ShadowKind::None: not at all). */
+  ShadowParameters Shadows;
 };
 
 struct Scene
@@ -71,10 +80,20 @@ public:
 
   /**
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
-   * first sample `offset` steps (in [0, 1)) past the entry. `table` is used when not null.
+   * first sample `offset` steps (in [0, 1)) past the entry. `table` is used when not null;
+   * `shadows` (one per scene light, null entries for lights without shadows) when not null.
    */
   static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume, const Ray& ray,
-    double tLimit, double offset, const MarchSettings& settings, const TransferTable* table);
+    double tLimit, double offset, const MarchSettings& settings, const TransferTable* table,
+    const std::vector<std::unique_ptr<LightShadow>>* shadows = nullptr);
+
+  /**
+   * The shadows of a volume for each scene light (null for lights that cast none), built
+   * as `settings` says (a GPU twin uses the feeler table the GPU uses).
+   */
+  static std::vector<std::unique_ptr<LightShadow>> BuildShadows(const Scene& scene,
+    const VolumeInstance& volume, const MarchSettings& settings, TransferTable* feelerTable,
+    int threads = 0);
 };
 
 }

@@ -110,10 +110,17 @@ TransferTable TransferTable::Sample(const TransferFunction& function, double ran
   return table;
 }
 
+glm::dvec2 TransferTable::CoordinateMap() const
+{
+  // (index + 0.5) / size with index = (s - min) / (max - min) * (size - 1)
+  const double scale = (this->Size - 1.0) / (this->RangeMax - this->RangeMin);
+  return { scale / this->Size, (0.5 - this->RangeMin * scale) / this->Size };
+}
+
 double TransferTable::TextureCoordinate(double scalar) const
 {
-  const double index = (scalar - this->RangeMin) / (this->RangeMax - this->RangeMin) * (this->Size - 1);
-  return (index + 0.5) / this->Size;
+  const glm::dvec2 map = this->CoordinateMap();
+  return scalar * map.x + map.y;
 }
 
 glm::dvec4 TransferTable::Lookup(double scalar) const

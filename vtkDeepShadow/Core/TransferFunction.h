@@ -8,6 +8,7 @@
 
 #include "vtkDeepShadowCoreModule.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -69,6 +70,8 @@ struct VTKDEEPSHADOWCORE_EXPORT TransferTable
 
   /** Texture coordinate of `scalar` so that texel centres hit the sampled scalars. */
   double TextureCoordinate(double scalar) const;
+  /** (scale, offset) with TextureCoordinate(s) = s * scale + offset (the GPU's u_tableMap). */
+  glm::dvec2 CoordinateMap() const;
   /** CPU twin of the GPU's linearly filtered lookup. */
   glm::dvec4 Lookup(double scalar) const;
 };

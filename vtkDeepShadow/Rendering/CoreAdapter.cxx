@@ -285,6 +285,7 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     l.Attenuation = ToGlm3(light->GetAttenuationValues());
     l.ConeAngle = light->GetConeAngle();
     l.Exponent = light->GetExponent();
+    l.ShadowAttenuation = light->GetShadowAttenuation();
     lights.push_back(l);
   }
   return lights;

@@ -1,9 +1,13 @@
 #include "ShaderComposer.h"
 
 #include "vtkDeepShadowFeatureEmptySpace.h"
+#include "vtkDeepShadowFeatureFeeler.h"
+#include "vtkDeepShadowFeatureGradient.h"
+#include "vtkDeepShadowFeatureIsotropic.h"
 #include "vtkDeepShadowFeatureJitter.h"
+#include "vtkDeepShadowFeatureLighting.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
-#include "vtkDeepShadowFeatureShading.h"
+#include "vtkDeepShadowFeatureVolumeSampling.h"
 
 #include <sstream>
 #include <stdexcept>
@@ -43,15 +47,20 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     std::map<std::string, ShaderFeature> all;
     auto add = [&all](const char* name, const char* source) { all[name] = ShaderFeature(name, source); };
     add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
+    add("Feeler", vtkDeepShadowFeatureFeeler);
+    add("Gradient", vtkDeepShadowFeatureGradient);
+    add("Isotropic", vtkDeepShadowFeatureIsotropic);
     add("Jitter", vtkDeepShadowFeatureJitter);
+    add("Lighting", vtkDeepShadowFeatureLighting);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
-    add("Shading", vtkDeepShadowFeatureShading);
+    add("VolumeSampling", vtkDeepShadowFeatureVolumeSampling);
     return all;
   }();
   return features;
 }
 
-std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled)
+std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,
+  const std::map<std::string, ShaderFeature>& runtime)
 {
   static const std::string prefix = "//DeepShadow::";
   const auto& features = EmbeddedShaderFeatures();
@@ -69,7 +78,11 @@ std::string ComposeShader(const std::string& shaderTemplate, const std::set<std:
       const std::string feature = tag.substr(0, separator);
       const std::string part = separator == std::string::npos ? "" : tag.substr(separator + 2);
       std::string replacement;
-      if (enabled.count(feature))
+      if (runtime.count(feature))
+      {
+        replacement = runtime.at(feature).Part(part);
+      }
+      else if (enabled.count(feature))
       {
         auto it = features.find(feature);
         if (it == features.end())

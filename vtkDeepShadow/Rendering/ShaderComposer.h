@@ -32,8 +32,13 @@ private:
 /** The features embedded in the library, by name (Jitter, Shading, ...). */
 const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 
-/** Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing. */
-std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled);
+/**
+ * Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing.
+ * `runtime` features (built at run time, e.g. a shadow technique's "Shadow") take precedence
+ * over the embedded ones of the same name; they count as enabled.
+ */
+std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,
+  const std::map<std::string, ShaderFeature>& runtime = {});
 
 }
 #endif

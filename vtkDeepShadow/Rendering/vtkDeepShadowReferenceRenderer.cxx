@@ -2,7 +2,9 @@
 
 #include "CoreAdapter.h"
 #include "ReferenceRenderer.h"
+#include "Shadows.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkImageData.h"
@@ -79,6 +81,17 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::I
     instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
       ? deepshadow::Interpolation::Nearest
       : deepshadow::Interpolation::Linear;
+    if (this->Shadows == GroundTruthShadows)
+    {
+      instance.Shadows = deepshadow::ShadowParameters::GroundTruth();
+    }
+    else if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
+    {
+      if (vtkDeepShadowTechnique* technique = ours->GetShadowTechnique())
+      {
+        instance.Shadows = technique->GetParameters();
+      }
+    }
     scene.Volumes.push_back(instance);
 
     // The GPU mapper's parameters, taken from the first volume that has one.
@@ -133,5 +146,6 @@ void vtkDeepShadowReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "GpuTwin: " << this->GpuTwin << "\n";
+  os << indent << "Shadows: " << (this->Shadows == GroundTruthShadows ? "ground truth" : "technique") << "\n";
   os << indent << "Threads: " << this->Threads << "\n";
 }

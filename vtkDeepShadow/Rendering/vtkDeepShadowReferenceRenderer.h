@@ -13,6 +13,7 @@
  *   the ground truth every reported error is measured against;
  * - GpuTwin: what vtkDeepShadowVolumeMapper computes (its transfer table, its termination
  *   opacity, its jitter), to compare GPU and CPU formula by formula.
+ * Shadows follow each mapper's vtkDeepShadowTechnique (its CPU twin), or the ground truth.
  */
 #ifndef vtkDeepShadowReferenceRenderer_h
 #define vtkDeepShadowReferenceRenderer_h
@@ -51,6 +52,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Shadows: the CPU twin of each volume's technique (TechniqueShadows, the default; none
+   * for volumes without one), or the ground truth for every volume (GroundTruthShadows:
+   * translucent shadow rays at a quarter of the sample distance, no early termination).
+   */
+  enum ShadowModes
+  {
+    TechniqueShadows = 0,
+    GroundTruthShadows = 1
+  };
+  vtkSetClampMacro(Shadows, int, TechniqueShadows, GroundTruthShadows);
+  vtkGetMacro(Shadows, int);
+  ///@}
+
+  ///@{
   /** Threads (0: all cores, or DEEPSHADOW_THREADS). */
   vtkSetClampMacro(Threads, int, 0, 1024);
   vtkGetMacro(Threads, int);
@@ -81,6 +97,7 @@ protected:
 
   double SampleDistance = 0.0;
   bool GpuTwin = false;
+  int Shadows = TechniqueShadows;
   int Threads = 0;
   bool ReplaceNonFiniteScalars = false;
   std::string LastError;

@@ -1,6 +1,8 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "CoreAdapter.h"
+#include "Shadows/ShadowContext.h"
+#include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
 #include "ShaderComposer.h"
 #include "TransferFunction.h"
@@ -37,6 +39,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace adapter = deepshadow::adapter;
@@ -106,6 +109,47 @@ int ReadFramebufferDepthFormat()
                          : depthBits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32;
 }
 
+// The Lighting (and Gradient) features' uniforms: lights in world space, material, ambient.
+void SetLightingUniforms(deepshadow::UniformSink& sink, const std::vector<deepshadow::Light>& lights,
+  vtkRenderer* renderer, vtkVolumeProperty* property, const glm::dmat4& worldToIndex)
+{
+  std::vector<int> positional;
+  std::vector<glm::vec3> positions, directions, diffuse, specular, attenuation;
+  std::vector<float> coneCos, exponent;
+  for (const deepshadow::Light& light : lights)
+  {
+    // Directional: towards the light. Positional: the spot axis, from the light.
+    directions.emplace_back(light.Positional ? glm::normalize(light.FocalPoint - light.Position)
+                                             : glm::normalize(light.Position - light.FocalPoint));
+    positions.emplace_back(light.Position);
+    diffuse.emplace_back(light.Diffuse);
+    specular.emplace_back(light.Specular);
+    attenuation.emplace_back(light.Attenuation);
+    positional.push_back(light.Positional ? 1 : 0);
+    coneCos.push_back(light.ConeAngle < 90.0
+        ? static_cast<float>(std::cos(light.ConeAngle * 3.14159265358979323846 / 180.0))
+        : -2.0f);
+    exponent.push_back(static_cast<float>(light.Exponent));
+  }
+  sink.Set("u_lightCount", static_cast<int>(lights.size()));
+  sink.Set("u_lightPositional", positional);
+  sink.Set("u_lightPosition", positions);
+  sink.Set("u_lightDirection", directions);
+  sink.Set("u_lightDiffuse", diffuse);
+  sink.Set("u_lightSpecular", specular);
+  sink.Set("u_lightAttenuation", attenuation);
+  sink.Set("u_lightConeCos", coneCos);
+  sink.Set("u_lightExponent", exponent);
+  double ambient[3];
+  renderer->GetAmbient(ambient);
+  sink.Set("u_ambientLight", glm::vec3(ambient[0], ambient[1], ambient[2]));
+  const deepshadow::Material material = adapter::MakeMaterial(property);
+  sink.Set("u_material",
+    glm::vec4(material.Ambient, material.Diffuse, material.Specular, material.SpecularPower));
+  sink.Set("u_twoSidedLighting", renderer->GetTwoSidedLighting() ? 1 : 0);
+  sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(worldToIndex))));
+}
+
 vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
@@ -161,6 +205,51 @@ public:
 
   std::string LastSource;
 
+  // Copies the depth of the opaque geometry in the viewport into Depth.
+  void CaptureDepth(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height)
+  {
+    vtkOpenGLState* state = window->GetState();
+    if (!this->Depth)
+    {
+      this->Depth = NewTexture(window);
+      this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->DepthColor = NewTexture(window);
+      this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->DepthFramebuffer->SetContext(window);
+    }
+    // A depth blit needs identical formats: match whatever the current framebuffer has.
+    const int depthFormat = ReadFramebufferDepthFormat();
+    if (!this->Depth->GetHandle() || depthFormat != this->DepthFormat)
+    {
+      this->Depth->ReleaseGraphicsResources(window);
+      this->DepthColor->ReleaseGraphicsResources(window);
+      this->DepthFramebuffer->ReleaseGraphicsResources(window);
+      this->DepthFormat = depthFormat;
+      if (depthFormat == DepthStencilFormat)
+      {
+        this->Depth->AllocateDepthStencil(width, height);
+      }
+      else
+      {
+        this->Depth->AllocateDepth(width, height, depthFormat);
+      }
+      this->DepthColor->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      state->PushDrawFramebufferBinding();
+      this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+      this->DepthFramebuffer->AddDepthAttachment(this->Depth);
+      this->DepthFramebuffer->AddColorAttachment(0, this->DepthColor);
+      state->PopDrawFramebufferBinding();
+    }
+    this->Depth->Resize(width, height);
+    this->DepthColor->Resize(width, height);
+    state->PushDrawFramebufferBinding();
+    this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    state->vtkglBlitFramebuffer(x0, y0, x0 + width, y0 + height, 0, 0, width, height,
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    state->PopDrawFramebufferBinding();
+  }
+
   void Release(vtkWindow* window)
   {
     for (vtkTextureObject* texture : { this->Volume.Get(), this->Transfer.Get(),
@@ -199,7 +288,33 @@ vtkDeepShadowVolumeMapper::vtkDeepShadowVolumeMapper()
 {
 }
 
-vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper() = default;
+vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper()
+{
+  this->SetShadowTechnique(nullptr);
+}
+
+void vtkDeepShadowVolumeMapper::SetShadowTechnique(vtkDeepShadowTechnique* technique)
+{
+  if (technique == this->ShadowTechnique)
+  {
+    return;
+  }
+  if (this->ShadowTechnique)
+  {
+    this->ShadowTechnique->UnRegister(this);
+  }
+  this->ShadowTechnique = technique;
+  if (technique)
+  {
+    technique->Register(this);
+  }
+  this->Modified();
+}
+
+int vtkDeepShadowVolumeMapper::GetShadowBuilds()
+{
+  return this->ShadowTechnique ? this->ShadowTechnique->GetBuildCount() : 0;
+}
 
 int vtkDeepShadowVolumeMapper::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -241,6 +356,10 @@ void vtkDeepShadowVolumeMapper::Update()
 void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Impl->Release(window);
+  if (this->ShadowTechnique)
+  {
+    this->ShadowTechnique->ReleaseGraphicsResources(window);
+  }
 }
 
 void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
@@ -420,24 +539,62 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const bool skipEmpty = this->EmptySpaceSkipping && impl.AnyEmptyBlock;
   this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.EmptyBlockFraction : 0.0;
 
-  // 4. Viewport, matrices, lights.
+  // 4. Viewport, matrices, lights, and the shadow technique's structures.
   int width = 0, height = 0, x0 = 0, y0 = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   const deepshadow::Camera camera = adapter::MakeCamera(renderer);
+  vtkDeepShadowTechnique* technique = this->ShadowTechnique;
+  const bool lit = shade || technique;
   bool truncated = false;
-  const std::vector<deepshadow::Light> lights =
-    shade ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
+  deepshadow::ShadowContext context;
+  context.Window = window;
+  context.Volume = impl.Volume;
+  context.Occupancy = skipEmpty ? impl.Occupancy.Get() : nullptr;
+  context.BlockSize = static_cast<float>(BlockSize);
+  context.Dims = impl.Dims;
+  context.Range = impl.Range;
+  context.ScalarMap = impl.ScalarMap;
+  context.TableMap = impl.Table.CoordinateMap();
+  context.TableSize = this->TransferTableSize;
+  context.Sampling = filter == vtkTextureObject::Nearest ? deepshadow::Interpolation::Nearest
+                                                        : deepshadow::Interpolation::Linear;
+  context.IndexToWorld = indexToWorld;
+  context.WorldToIndex = worldToIndex;
+  context.ViewStep = step;
+  context.DataVersion = this->VolumeUploads;
+  context.OpacityVersion = static_cast<double>(opacityTime);
+  context.Lights = lit ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
   if (truncated)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
   }
+  if (technique)
+  {
+    context.Transfer = adapter::MakeTransferFunction(property);
+    if (!technique->Prepare(context))
+    {
+      // A defined picture: the volume without shadows, and the reason said once.
+      this->ReportError("shadows are off: " + technique->GetLastError());
+      technique = nullptr;
+    }
+  }
   const bool needDepth = HasOpaqueGeometry(renderer);
 
   // 5. Shader for the features in use.
-  std::set<std::string> features;
-  if (shade)
+  std::set<std::string> features{ "VolumeSampling" };
+  std::map<std::string, deepshadow::ShaderFeature> runtime;
+  if (lit)
   {
-    features.insert("Shading");
+    features.insert("Lighting");
+    features.insert(shade ? "Gradient" : "Isotropic");
+  }
+  if (technique)
+  {
+    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource());
+    if (technique->NeedsFeeler())
+    {
+      features.insert("Feeler");
+    }
   }
   if (this->Jitter)
   {
@@ -451,12 +608,16 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("OpaqueDepth");
   }
-  const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features);
+  const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features, runtime);
   if (source != impl.LastSource)
   {
     impl.LastSource = source;
     this->FragmentShaderSource = source;
     this->ShaderFeatures.assign(features.begin(), features.end());
+    if (technique)
+    {
+      this->ShaderFeatures.push_back("Shadow:" + technique->GetName());
+    }
     ++this->ShaderCompositions;
   }
   vtkShaderProgram* program =
@@ -470,136 +631,43 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState* state = window->GetState();
   if (needDepth)
   {
-    if (!impl.Depth)
-    {
-      impl.Depth = NewTexture(window);
-      impl.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
-      impl.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-      impl.DepthColor = NewTexture(window);
-      impl.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      impl.DepthFramebuffer->SetContext(window);
-    }
-    // A depth blit needs identical formats: match whatever the current framebuffer has.
-    const int depthFormat = ReadFramebufferDepthFormat();
-    if (!impl.Depth->GetHandle() || depthFormat != impl.DepthFormat)
-    {
-      impl.Depth->ReleaseGraphicsResources(window);
-      impl.DepthColor->ReleaseGraphicsResources(window);
-      impl.DepthFramebuffer->ReleaseGraphicsResources(window);
-      impl.DepthFormat = depthFormat;
-      if (depthFormat == DepthStencilFormat)
-      {
-        impl.Depth->AllocateDepthStencil(width, height);
-      }
-      else
-      {
-        impl.Depth->AllocateDepth(width, height, depthFormat);
-      }
-      impl.DepthColor->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-      state->PushDrawFramebufferBinding();
-      impl.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-      impl.DepthFramebuffer->AddDepthAttachment(impl.Depth);
-      impl.DepthFramebuffer->AddColorAttachment(0, impl.DepthColor);
-      state->PopDrawFramebufferBinding();
-    }
-    impl.Depth->Resize(width, height);
-    impl.DepthColor->Resize(width, height);
-    state->PushDrawFramebufferBinding();
-    impl.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    state->vtkglBlitFramebuffer(x0, y0, x0 + width, y0 + height, 0, 0, width, height,
-      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    state->PopDrawFramebufferBinding();
+    impl.CaptureDepth(window, x0, y0, width, height);
   }
 
   // 6. Uniforms.
+  deepshadow::UniformSink sink(program);
   impl.Volume->Activate();
   impl.Transfer->Activate();
-  program->SetUniformi("u_volume", impl.Volume->GetTextureUnit());
-  program->SetUniformi("u_transfer", impl.Transfer->GetTextureUnit());
-  const float scalarMap[2] = { static_cast<float>(impl.ScalarMap.x),
-    static_cast<float>(impl.ScalarMap.y) };
-  program->SetUniform2f("u_scalarMap", scalarMap);
-  // table coordinate = (index + 0.5) / size with index = (s - min) / (max - min) * (size - 1)
-  const double tableScale = (impl.Table.Size - 1.0) / (impl.Table.RangeMax - impl.Table.RangeMin);
-  const float tableMap[2] = { static_cast<float>(tableScale / impl.Table.Size),
-    static_cast<float>((0.5 - impl.Table.RangeMin * tableScale) / impl.Table.Size) };
-  program->SetUniform2f("u_tableMap", tableMap);
-  SetVector(program, "u_dims", glm::dvec3(impl.Dims));
-  SetVector(program, "u_boxMax", glm::dvec3(impl.Dims - 1));
-  SetMatrix(program, "u_worldToIndex", worldToIndex);
-  SetMatrix(program, "u_clipToWorld", camera.GetInverseViewProjection());
-  SetMatrix(program, "u_indexToClip", camera.GetViewProjection() * indexToWorld);
-  const float viewport[4] = { static_cast<float>(x0), static_cast<float>(y0),
-    static_cast<float>(width), static_cast<float>(height) };
-  program->SetUniform4f("u_viewport", viewport);
-  program->SetUniformf("u_step", static_cast<float>(step));
-  program->SetUniformf("u_terminationOpacity", static_cast<float>(this->TerminationOpacity));
-  if (this->Jitter)
-  {
-    program->SetUniformi("u_jitterSeed", static_cast<int>(this->JitterSeed));
-  }
   if (skipEmpty)
   {
     impl.Occupancy->Activate();
-    program->SetUniformi("u_occupancy", impl.Occupancy->GetTextureUnit());
-    program->SetUniformf("u_blockSize", static_cast<float>(BlockSize));
+  }
+  context.SetVolumeUniforms(sink);
+  sink.Set("u_transfer", impl.Transfer->GetTextureUnit());
+  sink.Set("u_boxMax", glm::vec3(impl.Dims - 1));
+  sink.Set("u_clipToWorld", glm::mat4(camera.GetInverseViewProjection()));
+  sink.Set("u_indexToClip", glm::mat4(camera.GetViewProjection() * indexToWorld));
+  const float viewport[4] = { static_cast<float>(x0), static_cast<float>(y0),
+    static_cast<float>(width), static_cast<float>(height) };
+  program->SetUniform4f("u_viewport", viewport);
+  sink.Set("u_step", static_cast<float>(step));
+  sink.Set("u_terminationOpacity", static_cast<float>(this->TerminationOpacity));
+  if (this->Jitter)
+  {
+    sink.Set("u_jitterSeed", static_cast<int>(this->JitterSeed));
   }
   if (needDepth)
   {
     impl.Depth->Activate();
-    program->SetUniformi("u_opaqueDepth", impl.Depth->GetTextureUnit());
+    sink.Set("u_opaqueDepth", impl.Depth->GetTextureUnit());
   }
-  if (shade)
+  if (lit)
   {
-    const int count = static_cast<int>(lights.size());
-    float directions[adapter::MaxLights][3] = {}, positions[adapter::MaxLights][3] = {},
-          diffuse[adapter::MaxLights][3] = {}, specular[adapter::MaxLights][3] = {},
-          attenuation[adapter::MaxLights][3] = {};
-    float coneCos[adapter::MaxLights] = {}, exponent[adapter::MaxLights] = {};
-    int positional[adapter::MaxLights] = {};
-    for (int i = 0; i < count; ++i)
-    {
-      const deepshadow::Light& light = lights[i];
-      // Directional: towards the light. Positional: the spot axis, from the light.
-      const glm::dvec3 direction = light.Positional
-        ? glm::normalize(light.FocalPoint - light.Position)
-        : glm::normalize(light.Position - light.FocalPoint);
-      for (int c = 0; c < 3; ++c)
-      {
-        directions[i][c] = static_cast<float>(direction[c]);
-        positions[i][c] = static_cast<float>(light.Position[c]);
-        diffuse[i][c] = static_cast<float>(light.Diffuse[c]);
-        specular[i][c] = static_cast<float>(light.Specular[c]);
-        attenuation[i][c] = static_cast<float>(light.Attenuation[c]);
-      }
-      positional[i] = light.Positional ? 1 : 0;
-      coneCos[i] = light.ConeAngle < 90.0
-        ? static_cast<float>(std::cos(light.ConeAngle * 3.14159265358979323846 / 180.0))
-        : -2.0f;
-      exponent[i] = static_cast<float>(light.Exponent);
-    }
-    program->SetUniformi("u_lightCount", count);
-    if (count > 0)
-    {
-      program->SetUniform1iv("u_lightPositional", count, positional);
-      program->SetUniform3fv("u_lightPosition", count, positions);
-      program->SetUniform3fv("u_lightDirection", count, directions);
-      program->SetUniform3fv("u_lightDiffuse", count, diffuse);
-      program->SetUniform3fv("u_lightSpecular", count, specular);
-      program->SetUniform3fv("u_lightAttenuation", count, attenuation);
-      program->SetUniform1fv("u_lightConeCos", count, coneCos);
-      program->SetUniform1fv("u_lightExponent", count, exponent);
-    }
-    double ambient[3];
-    renderer->GetAmbient(ambient);
-    SetVector(program, "u_ambientLight", glm::dvec3(ambient[0], ambient[1], ambient[2]));
-    const deepshadow::Material material = adapter::MakeMaterial(property);
-    const float materialUniform[4] = { static_cast<float>(material.Ambient),
-      static_cast<float>(material.Diffuse), static_cast<float>(material.Specular),
-      static_cast<float>(material.SpecularPower) };
-    program->SetUniform4f("u_material", materialUniform);
-    program->SetUniformi("u_twoSidedLighting", renderer->GetTwoSidedLighting() ? 1 : 0);
-    SetMatrix(program, "u_indexGradientToWorld", glm::transpose(glm::dmat3(worldToIndex)));
+    SetLightingUniforms(sink, context.Lights, renderer, property, worldToIndex);
+  }
+  if (technique)
+  {
+    technique->Bind(sink, context);
   }
 
   // 7. Draw the back faces of the box.
@@ -658,6 +726,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   impl.Triangles->Release();
   impl.VertexArray->Release();
+  if (technique)
+  {
+    technique->Unbind();
+  }
   impl.Volume->Deactivate();
   impl.Transfer->Deactivate();
   if (skipEmpty)

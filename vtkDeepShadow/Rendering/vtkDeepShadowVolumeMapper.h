@@ -33,6 +33,7 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkDeepShadowTechnique;
 class vtkOpenGLRenderWindow;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkVolumeMapper
@@ -92,6 +93,17 @@ public:
   vtkBooleanMacro(ReplaceNonFiniteScalars, bool);
   ///@}
 
+  ///@{
+  /**
+   * How the volume shadows itself (null, the default: no shadows, and no shadow code in the
+   * shader). See vtkDeepShadowRayTechnique and vtkDeepShadowShadowMapTechnique.
+   */
+  void SetShadowTechnique(vtkDeepShadowTechnique* technique);
+  vtkGetObjectMacro(ShadowTechnique, vtkDeepShadowTechnique);
+  ///@}
+  /** Shadow structures built so far (0 without a technique). */
+  int GetShadowBuilds();
+
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
 
@@ -134,6 +146,7 @@ protected:
   bool EmptySpaceSkipping = true;
   int TransferTableSize = 4096;
   bool ReplaceNonFiniteScalars = false;
+  vtkDeepShadowTechnique* ShadowTechnique = nullptr;
 
   int RenderCount = 0;
   int VolumeUploads = 0;

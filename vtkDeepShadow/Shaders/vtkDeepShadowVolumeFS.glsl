@@ -10,12 +10,8 @@
 
 layout(location = 0) out vec4 fragColor;
 
-uniform sampler3D u_volume;      // scalars, normalized to [0, 1] by the texture format
+//DeepShadow::VolumeSampling::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
-uniform vec2 u_scalarMap;        // scalar = texel * u_scalarMap.x + u_scalarMap.y
-uniform vec2 u_tableMap;         // table coordinate = scalar * u_tableMap.x + u_tableMap.y
-uniform vec3 u_dims;
-uniform mat4 u_worldToIndex;
 uniform mat4 u_clipToWorld;      // inverse view-projection
 uniform vec4 u_viewport;         // x, y, width, height in window pixels
 uniform float u_step;            // world distance between samples
@@ -25,11 +21,6 @@ vec3 unproject(vec2 ndc, float z)
 {
   vec4 p = u_clipToWorld * vec4(ndc, z, 1.0);
   return p.xyz / p.w;
-}
-
-float sampleScalar(vec3 index)
-{
-  return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
 }
 
 // Front-to-back "over" (deepshadow::CompositeFrontToBack).
@@ -43,7 +34,8 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Jitter::Dec
 //DeepShadow::OpaqueDepth::Dec
 //DeepShadow::EmptySpace::Dec
-//DeepShadow::Shading::Dec
+//DeepShadow::Feeler::Dec
+//DeepShadow::Lighting::Dec
 
 void main()
 {
@@ -92,7 +84,7 @@ void main()
       continue;
     }
     vec3 color = transfer.rgb;
-    //DeepShadow::Shading::Impl
+    //DeepShadow::Lighting::Impl
     compositeFrontToBack(accumulated, color, transfer.a);
   }
   fragColor = accumulated; // premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA)

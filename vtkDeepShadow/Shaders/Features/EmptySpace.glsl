@@ -4,6 +4,7 @@
 //@Dec
 uniform sampler3D u_occupancy; // 1 where a block can be visible (R8, nearest)
 uniform float u_blockSize;
+uniform int u_feelerSkipEmpty; // feelers may skip empty blocks (not with scalar thresholds)
 int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
 {
   vec3 lo = block * u_blockSize;
@@ -24,3 +25,13 @@ int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
         continue;
       }
     }
+//@FeelerSkip
+      if (u_feelerSkipEmpty != 0)
+      {
+        vec3 block = floor(sampleIndex / u_blockSize);
+        if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
+        {
+          j += stepsToLeaveBlock(sampleIndex, indexStep, block) - 1;
+          continue;
+        }
+      }

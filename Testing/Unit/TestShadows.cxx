@@ -1,0 +1,215 @@
+// CPU shadow techniques (the GPU's twins and the ground truth) against closed forms.
+#include "ReferenceRenderer.h"
+#include "Shadows.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace deepshadow;
+
+namespace
+{
+// 21^3 points spanning [0, 20]^3; a slab of value 1 for z in [8, 12], 0 elsewhere.
+struct SlabScene
+{
+  std::shared_ptr<VolumeGrid> Grid;
+  TransferFunction Transfer;
+  ShadowCaster Caster;
+
+  explicit SlabScene(double slabOpacity)
+  {
+    std::vector<float> values(21 * 21 * 21, 0.0f);
+    for (int k = 8; k <= 12; ++k)
+      for (int j = 0; j < 21; ++j)
+        for (int i = 0; i < 21; ++i)
+          values[i + 21 * (j + 21 * k)] = 1.0f;
+    this->Grid = std::make_shared<VolumeGrid>(glm::ivec3(21), values, glm::dmat4(1.0));
+    // Opacity 0 for 0 and slabOpacity for 1, nearly a step so interpolation stays inside.
+    this->Transfer = TransferFunction::Grey({ { 0.0, 0.0 }, { 0.999, 0.0 }, { 1.0, slabOpacity } });
+    this->Caster.Grid = this->Grid.get();
+    this->Caster.Transfer = &this->Transfer;
+    this->Caster.Sampling = Interpolation::Nearest;
+  }
+};
+
+Light DirectionalFrom(const glm::dvec3& toLight)
+{
+  Light light;
+  light.Position = toLight;
+  light.FocalPoint = glm::dvec3(0.0);
+  return light;
+}
+}
+
+TEST(Shadows, TranslucentFeelerFollowsBeerLambertThroughASlab)
+{
+  const SlabScene scene(0.3);
+  ShadowParameters p = ShadowParameters::GroundTruth(1.0);
+  for (double step : { 1.0, 0.5, 0.25 })
+  {
+    // From below the slab straight up: nearest sampling sees the slab on z in [7.5, 12.5].
+    const double v = FeelerVisibility(scene.Caster, { 10.0, 10.0, 2.0 }, { 0, 0, 1 }, 1e300, step, p);
+    long inside = 0;
+    for (long j = 0; (j + 0.5) * step < 18.0; ++j)
+    {
+      const double z = 2.0 + (j + 0.5) * step;
+      inside += (z >= 7.5 && z < 12.5) ? 1 : 0;
+    }
+    EXPECT_NEAR(v, std::pow(0.7, inside * step), 1e-12) << "step " << step;
+    EXPECT_NEAR(v, std::pow(0.7, 5.0), 1e-12);
+  }
+  // Above the slab towards +z: nothing in the way.
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10.0, 10.0, 15.0 }, { 0, 0, 1 }, 1e300, 0.5, p), 1.0);
+}
+
+TEST(Shadows, OpaqueFeelerIsBinaryAtTheThreshold)
+{
+  const SlabScene scene(0.3);
+  ShadowParameters p;
+  p.Kind = ShadowKind::Rays;
+  p.Opaque = true;
+  p.Threshold = 0.2;
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), 0.0);
+  p.Threshold = 0.4; // above the slab's opacity
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), 1.0);
+  p.Mode = ThresholdMode::Scalar; // normalized scalar of the slab is 1 > 0.4
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), 0.0);
+}
+
+TEST(Shadows, EarlyTerminationStopsBelowTheTransmittanceFloor)
+{
+  const SlabScene scene(0.95);
+  ShadowParameters exact = ShadowParameters::GroundTruth(1.0), early = exact;
+  early.EarlyTermination = true;
+  const double a = FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.25, exact);
+  const double b = FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.25, early);
+  EXPECT_LT(a, ShadowTerminationTransmittance);
+  EXPECT_LT(b, ShadowTerminationTransmittance);
+  EXPECT_GE(b, a);
+}
+
+TEST(Shadows, PositionalLightsStopTheFeelerAtTheLight)
+{
+  const SlabScene scene(0.5);
+  Light inside;
+  inside.Positional = true;
+  inside.Position = { 10.0, 10.0, 5.0 }; // below the slab, inside the volume
+  const auto shadow = MakeLightShadow(ShadowParameters::GroundTruth(1.0), scene.Caster, inside, 0.5);
+  EXPECT_EQ(shadow->Visibility({ 10.0, 10.0, 2.0 }), 1.0);  // between light and floor
+  EXPECT_LT(shadow->Visibility({ 10.0, 10.0, 16.0 }), 0.1); // behind the slab
+}
+
+TEST(Shadows, CachedShadowsMatchTheFeelerAtTheirNodes)
+{
+  const SlabScene scene(0.3);
+  ShadowParameters rays = ShadowParameters::GroundTruth(1.0), cached = rays;
+  cached.Cached = true;
+  cached.VolumeSize = 21; // nodes on the voxels
+  const Light light = DirectionalFrom({ 0.2, 0.1, 1.0 });
+  const auto direct = MakeLightShadow(rays, scene.Caster, light, 0.5);
+  const auto cache = MakeLightShadow(cached, scene.Caster, light, 0.5, 2);
+  for (glm::dvec3 p : { glm::dvec3(3, 4, 5), glm::dvec3(10, 10, 2), glm::dvec3(20, 0, 14) })
+  {
+    EXPECT_NEAR(cache->Visibility(p), direct->Visibility(p), 1e-6);
+  }
+  EXPECT_EQ(cache->Bytes(), 21u * 21 * 21 * sizeof(float));
+  EXPECT_EQ(ShadowVolumeDims({ 256, 256, 128 }, 64), glm::ivec3(64, 64, 32));
+}
+
+TEST(Shadows, ShadowMapsShadowWhatIsBehindTheFirstHit)
+{
+  const SlabScene scene(0.9);
+  for (auto filter : { ShadowFilter::None, ShadowFilter::PCF2x2, ShadowFilter::PCF3x3, ShadowFilter::Poisson })
+  {
+    ShadowParameters p;
+    p.Kind = ShadowKind::ShadowMap;
+    p.Threshold = 0.5;
+    p.MapSize = 64;
+    p.Filter = filter;
+    const auto map = MakeLightShadow(p, scene.Caster, DirectionalFrom({ 0, 0, 1 }), 0.5, 2);
+    EXPECT_EQ(map->Visibility({ 10, 10, 3 }), 0.0);  // below the slab
+    EXPECT_EQ(map->Visibility({ 10, 10, 17 }), 1.0); // above it
+    EXPECT_EQ(map->Bytes(), 64u * 64 * sizeof(float));
+  }
+}
+
+TEST(Shadows, ShadowMapFacesCoverTheBoundingSphere)
+{
+  const glm::dvec3 centre(1.0, 2.0, 3.0);
+  const double radius = 5.0;
+  Light outside;
+  outside.Positional = true;
+  outside.Position = centre + glm::dvec3(0.0, 30.0, 10.0);
+  Light inside = outside;
+  inside.Position = centre + glm::dvec3(1.0, 0.0, 0.0);
+  EXPECT_EQ(ShadowMapFaces(DirectionalFrom({ 1, 1, 1 }), centre, radius).size(), 1u);
+  EXPECT_EQ(ShadowMapFaces(outside, centre, radius).size(), 1u);
+  EXPECT_EQ(ShadowMapFaces(inside, centre, radius).size(), 6u);
+  // Every point of the sphere projects into [-1, 1]^2 of the face that sees it.
+  for (const Light& light : { DirectionalFrom({ 1, 1, 1 }), outside, inside })
+  {
+    const auto faces = ShadowMapFaces(light, centre, radius);
+    for (int n = 0; n < 500; ++n)
+    {
+      const double a = 0.1 * n, b = 0.37 * n;
+      const glm::dvec3 p = centre + radius * glm::dvec3(std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b));
+      const int f = ShadowMapFaceFor(faces, p - faces[0].Origin);
+      double u, v, depth;
+      ASSERT_TRUE(faces[f].Project(p, u, v, depth));
+      EXPECT_LE(std::abs(u), 1.0 + 1e-9);
+      EXPECT_LE(std::abs(v), 1.0 + 1e-9);
+      glm::dvec3 origin, direction;
+      faces[f].TexelRay(u, v, origin, direction);
+      EXPECT_NEAR(glm::length(origin + depth * direction - p), 0.0, 1e-9); // depth is along the texel ray
+    }
+  }
+}
+
+TEST(Shadows, PercentageCloserFilteringAveragesComparisons)
+{
+  // A 4x4 map: left half occluder at depth 1, right half empty.
+  std::vector<float> depths(16);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      depths[j * 4 + i] = i < 2 ? 1.0f : 100.0f;
+  EXPECT_EQ(FilterShadowMap(depths.data(), 4, 0.0, 1.0, 5.0, ShadowFilter::None), 0.0);
+  EXPECT_EQ(FilterShadowMap(depths.data(), 4, 3.0, 1.0, 5.0, ShadowFilter::None), 1.0);
+  EXPECT_NEAR(FilterShadowMap(depths.data(), 4, 1.25, 1.0, 5.0, ShadowFilter::PCF2x2), 0.25, 1e-12);
+  EXPECT_NEAR(FilterShadowMap(depths.data(), 4, 1.6, 1.0, 5.0, ShadowFilter::PCF3x3), 2.0 / 3.0, 1e-12);
+  const double poisson = FilterShadowMap(depths.data(), 4, 1.5, 1.5, 5.0, ShadowFilter::Poisson);
+  EXPECT_GT(poisson, 0.0);
+  EXPECT_LT(poisson, 1.0);
+  EXPECT_EQ(FilterShadowMap(depths.data(), 4, 1.5, 1.5, 0.5, ShadowFilter::Poisson), 1.0); // in front of all
+}
+
+TEST(Shadows, ReferenceRendererDarkensWhatTheSlabShadows)
+{
+  // Camera below looking up at a floor of low density under a dense slab, light from above.
+  std::vector<float> values(21 * 21 * 21, 0.0f);
+  for (int k = 0; k <= 20; ++k)
+    for (int j = 0; j < 21; ++j)
+      for (int i = 0; i < 21; ++i)
+        values[i + 21 * (j + 21 * k)] = (k >= 14 && i < 10) ? 1.0f : (k < 4 ? 0.5f : 0.0f);
+  auto grid = std::make_shared<VolumeGrid>(glm::ivec3(21), values, glm::dmat4(1.0));
+  Scene scene;
+  const glm::dmat4 view = glm::lookAt(glm::dvec3(10, 10, -40), glm::dvec3(10, 10, 10), glm::dvec3(0, 1, 0));
+  scene.View = Camera(glm::ortho(-12.0, 12.0, -12.0, 12.0, 1.0, 100.0) * view, 24, 24);
+  scene.Lights.push_back(DirectionalFrom({ 0, 0, 1 }));
+  VolumeInstance volume;
+  volume.Grid = grid;
+  volume.Transfer = TransferFunction::Grey({ { 0.0, 0.0 }, { 0.5, 0.3 }, { 1.0, 1.0 } });
+  volume.Transfer.Red = volume.Transfer.Green = volume.Transfer.Blue = PiecewiseLinear({ { 0.0, 1.0 } });
+  volume.Shadows = ShadowParameters::GroundTruth(1.0);
+  scene.Volumes.push_back(volume);
+  MarchSettings settings;
+  settings.SampleDistance = 0.5;
+  const Image shadowed = ReferenceRenderer::Render(scene, settings, 2);
+  // Camera at -z looking +z with view-up +y: world +x is image left. The slab covers x < 10.
+  const double underSlab = shadowed.At(18, 12).x, open = shadowed.At(5, 12).x;
+  EXPECT_LT(underSlab, 0.5 * open);
+  EXPECT_GT(open, 0.2);
+}

@@ -1,0 +1,85 @@
+// Internal: what vtkDeepShadowVolumeMapper hands its shadow technique each frame, and a
+// uniform setter shared by the ray caster's program and the techniques' compute programs.
+#ifndef vtkDeepShadowShadowContext_h
+#define vtkDeepShadowShadowContext_h
+
+#include "Light.h"
+#include "TransferFunction.h"
+#include "VolumeGrid.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+namespace deepshadow
+{
+class ComputeProgram;
+
+/** Sets uniforms by name on either kind of program. */
+class UniformSink
+{
+public:
+  explicit UniformSink(vtkShaderProgram* program)
+    : Raster(program)
+  {
+  }
+  explicit UniformSink(ComputeProgram* program)
+    : Compute(program)
+  {
+  }
+  void Set(const char* name, int value);
+  void Set(const char* name, float value);
+  void Set(const char* name, const glm::vec2& value);
+  void Set(const char* name, const glm::vec3& value);
+  void Set(const char* name, const glm::vec4& value);
+  void Set(const char* name, const glm::mat3& value);
+  void Set(const char* name, const glm::mat4& value);
+  // Arrays (the ray caster's per-light uniforms).
+  void Set(const char* name, const std::vector<int>& values);
+  void Set(const char* name, const std::vector<float>& values);
+  void Set(const char* name, const std::vector<glm::vec3>& values);
+
+private:
+  vtkShaderProgram* Raster = nullptr;
+  ComputeProgram* Compute = nullptr;
+};
+
+struct ShadowContext
+{
+  vtkOpenGLRenderWindow* Window = nullptr;
+
+  // The volume as the GPU holds it.
+  vtkTextureObject* Volume = nullptr;
+  vtkTextureObject* Occupancy = nullptr; // null when no block is empty
+  float BlockSize = 8.0f;
+  glm::ivec3 Dims{ 0 };
+  glm::dvec2 Range{ 0.0, 1.0 };     // finite scalar range
+  glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel -> scalar
+  glm::dvec2 TableMap{ 1.0, 0.0 };  // scalar -> table coordinate (any table of TableSize)
+  int TableSize = 4096;
+  Interpolation Sampling = Interpolation::Linear;
+  glm::dmat4 IndexToWorld{ 1.0 };
+  glm::dmat4 WorldToIndex{ 1.0 };
+  double ViewStep = 1.0;
+
+  // What shadow structures depend on, besides lights and technique parameters.
+  int DataVersion = 0;            // increments with every volume upload
+  double OpacityVersion = 0.0;    // the opacity function's modification time
+  TransferFunction Transfer;
+
+  std::vector<Light> Lights;      // the lights the ray caster uses, in its order
+
+  /** Uniforms of the VolumeSampling and EmptySpace features. */
+  void SetVolumeUniforms(UniformSink& sink) const;
+};
+
+}
+#endif

@@ -1,0 +1,43 @@
+// Internal: which lights get a shadow structure, and when a structure is stale.
+#ifndef vtkDeepShadowShadowSlots_h
+#define vtkDeepShadowShadowSlots_h
+
+#include "Light.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace deepshadow
+{
+struct ShadowContext;
+
+/**
+ * Slots of the shadow-casting lights (ShadowAttenuation > 0), at most `maxSlots`, in the
+ * ray caster's light order, and per slot the inputs its structure was built from.
+ */
+class ShadowSlots
+{
+public:
+  /** Assigns slots; returns how many shadow-casting lights did not get one. */
+  int Assign(const std::vector<Light>& lights, int maxSlots);
+  int Count() const { return static_cast<int>(this->LightOfSlot.size()); }
+  int Light(int slot) const { return this->LightOfSlot[slot]; }
+  /** Per ray-caster light: its slot, or -1. */
+  std::vector<int> SlotOfEachLight(int lightCount) const;
+
+  /**
+   * True if slot `slot` must be rebuilt: its light, the shared inputs (data, opacity,
+   * transform, sample distance) or `parameters` differ from its last build. Remembers them.
+   */
+  bool Stale(int slot, const ShadowContext& context, const std::vector<double>& parameters);
+  /** Forget all builds (the storage was reallocated). */
+  void Invalidate() { this->Keys.clear(); }
+
+private:
+  std::vector<int> LightOfSlot;
+  std::vector<std::vector<double>> Keys;
+};
+
+}
+#endif

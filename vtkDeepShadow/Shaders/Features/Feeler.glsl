@@ -1,0 +1,71 @@
+// Feature Feeler: the march from a point towards a light through the volume, shared by the
+// shadow-ray technique (per sample), the cached shadow volume and the shadow map build
+// (deepshadow::FeelerVisibility in Core/Shadows.cxx is the CPU twin). Samples sit at
+// (j + 0.5) * u_feelerStep from the start; opacity comes from u_feelerTable, corrected for
+// that step. With FEELER_OPAQUE the answer is 0 at the first sample above the threshold;
+// otherwise the product of (1 - alpha), stopped once below u_feelerTermination (0: never).
+//@Dec
+uniform sampler2D u_feelerTable;   // RGBA table; alpha = opacity corrected for u_feelerStep
+uniform float u_feelerStep;        // world units
+uniform float u_feelerThreshold;   // corrected opacity, or normalized scalar
+uniform int u_feelerThresholdOnScalar;
+uniform vec2 u_scalarRange;
+uniform float u_feelerTermination; // transmittance at which translucent feelers stop
+
+float feelerAlpha(float scalar)
+{
+  return texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5)).a;
+}
+
+bool feelerAbove(float scalar)
+{
+  if (u_feelerThresholdOnScalar != 0)
+  {
+    float width = u_scalarRange.y > u_scalarRange.x ? u_scalarRange.y - u_scalarRange.x : 1.0;
+    return (scalar - u_scalarRange.x) / width > u_feelerThreshold;
+  }
+  return feelerAlpha(scalar) > u_feelerThreshold;
+}
+
+// From voxel index `start` along index-space direction `indexDirection` (per world unit) up
+// to world distance tEnd. `opaque`: binary visibility; else the transmittance.
+float feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
+{
+  float transmittance = 1.0;
+  vec3 indexStep = indexDirection * u_feelerStep;
+  for (int j = 0;; ++j)
+  {
+    float t = (float(j) + 0.5) * u_feelerStep;
+    if (!(t < tEnd))
+    {
+      break;
+    }
+    vec3 sampleIndex = start + t * indexDirection;
+    //DeepShadow::EmptySpace::FeelerSkip
+    float scalar = sampleScalar(sampleIndex);
+    if (opaque)
+    {
+      if (feelerAbove(scalar))
+      {
+        return 0.0;
+      }
+      continue;
+    }
+    transmittance *= 1.0 - feelerAlpha(scalar);
+    if (transmittance < u_feelerTermination)
+    {
+      break;
+    }
+  }
+  return transmittance;
+}
+
+// Visibility of a light from world point `position`: the feeler from there towards it, up to
+// the volume's box or the light itself.
+float feelerTowardsLight(vec3 position, vec3 toLight, float lightDistance, bool opaque)
+{
+  vec3 start = (u_worldToIndex * vec4(position, 1.0)).xyz;
+  vec3 indexDirection = (u_worldToIndex * vec4(toLight, 0.0)).xyz;
+  float tEnd = min(boxExit(start, indexDirection), lightDistance);
+  return feelerVisibility(start, indexDirection, tEnd, opaque);
+}

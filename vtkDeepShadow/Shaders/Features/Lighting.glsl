@@ -1,0 +1,59 @@
+// Feature Lighting: the renderer's lights, in world space (deepshadow::Light::At and the
+// lighting of deepshadow::ReferenceRenderer::MarchRay are the CPU twins). What a light does
+// at a sample comes from Gradient (Phong of the gradient normal) or Isotropic (scattering
+// without a normal, for unshaded volumes that receive shadows); Shadow scales each light by
+// its visibility. Ambient light is never shadowed.
+//@Dec
+const int MaxLights = 8;
+uniform int u_lightCount;
+uniform int u_lightPositional[MaxLights];
+uniform vec3 u_lightPosition[MaxLights];   // positional lights
+uniform vec3 u_lightDirection[MaxLights];  // unit, towards the light (directional) or the
+                                           // spot axis from the light (positional)
+uniform vec3 u_lightDiffuse[MaxLights];    // colour x intensity
+uniform vec3 u_lightSpecular[MaxLights];
+uniform vec3 u_lightAttenuation[MaxLights];
+uniform float u_lightConeCos[MaxLights];   // cos(cone angle); < -1 means no cone
+uniform float u_lightExponent[MaxLights];
+uniform vec3 u_ambientLight;
+uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
+uniform int u_twoSidedLighting;
+//DeepShadow::Gradient::Dec
+//DeepShadow::Shadow::Dec
+
+vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
+{
+  vec3 lit = u_material.x * color * u_ambientLight;
+  //DeepShadow::Gradient::Normal
+  for (int i = 0; i < u_lightCount; ++i)
+  {
+    vec3 toLight = u_lightDirection[i];
+    float attenuation = 1.0;
+    float lightDistance = 1e30;
+    if (u_lightPositional[i] != 0)
+    {
+      vec3 fromLight = position - u_lightPosition[i];
+      lightDistance = length(fromLight);
+      toLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
+      attenuation = 1.0 / (u_lightAttenuation[i].x + u_lightAttenuation[i].y * lightDistance +
+                            u_lightAttenuation[i].z * lightDistance * lightDistance);
+      if (u_lightConeCos[i] >= -1.0)
+      {
+        float coneDot = dot(-toLight, u_lightDirection[i]);
+        attenuation = coneDot >= u_lightConeCos[i] ? attenuation * pow(coneDot, u_lightExponent[i]) : 0.0;
+      }
+    }
+    if (attenuation <= 0.0)
+    {
+      continue;
+    }
+    vec3 contribution = vec3(0.0);
+    //DeepShadow::Gradient::Surface
+    //DeepShadow::Isotropic::Surface
+    //DeepShadow::Shadow::Impl
+    lit += attenuation * contribution;
+  }
+  return clamp(lit, 0.0, 1.0);
+}
+//@Impl
+    color = lightSample(color, index, rayOrigin + t * rayDirection, -rayDirection);

@@ -1,0 +1,23 @@
+// Feature VolumeSampling: the volume's scalars at a continuous voxel index, shared by the ray
+// caster and the shadow build passes (deepshadow::VolumeGrid::Sample is the CPU twin).
+//@Dec
+uniform sampler3D u_volume;  // scalars, normalized to [0, 1] by the texture format
+uniform vec2 u_scalarMap;    // scalar = texel * u_scalarMap.x + u_scalarMap.y
+uniform vec2 u_tableMap;     // table coordinate = scalar * u_tableMap.x + u_tableMap.y
+uniform vec3 u_dims;
+uniform mat4 u_worldToIndex;
+
+float sampleScalar(vec3 index)
+{
+  return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
+}
+
+// Parametric exit of the ray index + t * direction from the box [0, Dims - 1] (t >= 0).
+float boxExit(vec3 index, vec3 direction)
+{
+  vec3 inverseDirection = 1.0 / direction;
+  vec3 tA = (vec3(0.0) - index) * inverseDirection;
+  vec3 tB = (u_dims - 1.0 - index) * inverseDirection;
+  vec3 tHigh = max(tA, tB);
+  return min(min(tHigh.x, tHigh.y), tHigh.z);
+}

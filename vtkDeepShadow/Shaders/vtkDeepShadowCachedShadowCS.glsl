@@ -1,0 +1,37 @@
+#version 430 core
+// Build pass of "rays-cached": the feeler's visibility at each node of the shadow grid, for
+// one light, written into that light's slab of the shadow texture (the CachedShadow
+// constructor in Core/Shadows.cxx is the CPU twin).
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+//DeepShadow::VolumeSampling::Dec
+//DeepShadow::EmptySpace::Dec
+//DeepShadow::Feeler::Dec
+layout(r16f, binding = 0) uniform writeonly image3D u_output;
+uniform ivec3 u_shadowDims;
+uniform int u_slot;
+uniform mat4 u_indexToWorld;
+uniform int u_lightPositional;
+uniform vec3 u_lightPosition;
+uniform vec3 u_lightToward; // directional lights: unit direction towards the light
+uniform int u_opaque;
+
+void main()
+{
+  ivec3 node = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(node, u_shadowDims)))
+  {
+    return;
+  }
+  vec3 index = vec3(node) * (u_dims - 1.0) / vec3(u_shadowDims - 1);
+  vec3 world = (u_indexToWorld * vec4(index, 1.0)).xyz;
+  vec3 toLight = u_lightToward;
+  float lightDistance = 1e30;
+  if (u_lightPositional != 0)
+  {
+    vec3 d = u_lightPosition - world;
+    lightDistance = length(d);
+    toLight = lightDistance > 0.0 ? d / lightDistance : vec3(0.0, 0.0, 1.0);
+  }
+  float visibility = feelerTowardsLight(world, toLight, lightDistance, u_opaque != 0);
+  imageStore(u_output, ivec3(node.xy, node.z + u_slot * u_shadowDims.z), vec4(visibility));
+}
