@@ -147,6 +147,42 @@ inline vtkSmartPointer<vtkImageData> MakeTestVolume(
   return image;
 }
 
+/**
+ * A scene made for shadows, 48^3 unsigned char: a dense ball (200) above a thinner floor
+ * plate (90) and a translucent pillar (140), on a 2-unit grid.
+ */
+inline vtkSmartPointer<vtkImageData> MakeShadowVolume(int n = 48)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(2.0, 2.0, 2.0);
+  image->SetOrigin(-(n - 1.0), -(n - 1.0), -(n - 1.0));
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = 2.0 * i / (n - 1) - 1.0, y = 2.0 * j / (n - 1) - 1.0,
+                     z = 2.0 * k / (n - 1) - 1.0;
+        unsigned char value = 0;
+        if (z < -0.75 && z > -0.95 && std::abs(x) < 0.9 && std::abs(y) < 0.9)
+        {
+          value = 90; // floor
+        }
+        if ((x + 0.1) * (x + 0.1) + y * y + (z - 0.2) * (z - 0.2) < 0.3 * 0.3)
+        {
+          value = 200; // ball
+        }
+        if (std::abs(x - 0.55) < 0.08 && std::abs(y + 0.3) < 0.08 && z > -0.75 && z < 0.4)
+        {
+          value = 140; // pillar
+        }
+        v[i + n * (j + n * k)] = value;
+      }
+  return image;
+}
+
 }
 }
 #endif

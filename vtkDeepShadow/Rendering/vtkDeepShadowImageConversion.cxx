@@ -17,6 +17,7 @@ Image CaptureWindow(vtkRenderWindow* window)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
+  grab->ShouldRerenderOff(); // the pixels of the last render, not of a new one
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();

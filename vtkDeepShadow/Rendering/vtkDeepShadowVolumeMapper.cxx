@@ -324,11 +324,13 @@ int vtkDeepShadowVolumeMapper::FillInputPortInformation(int, vtkInformation* inf
 
 void vtkDeepShadowVolumeMapper::ReportError(const std::string& message)
 {
+  // Said once while it lasts: a failure repeated every frame is not repeated in the log.
   if (message != this->LastError)
   {
     vtkErrorMacro(<< message);
   }
   this->LastError = message;
+  this->ErrorThisFrame = true;
 }
 
 vtkImageData* vtkDeepShadowVolumeMapper::GetImageInput()
@@ -364,6 +366,7 @@ void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 
 void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
+  this->ErrorThisFrame = false;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
   {
@@ -744,7 +747,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       (impl.ScalarMap.x == 255.0 ? 1 : impl.ScalarMap.x == 1.0 ? 4 : 2) +
     static_cast<long long>(impl.Table.Size) * 16 +
     (this->EmptySpaceSkipping ? static_cast<long long>(impl.Blocks.Min.size()) : 0);
-  this->LastError.clear();
+  if (!this->ErrorThisFrame)
+  {
+    this->LastError.clear();
+  }
   ++this->RenderCount;
 }
 

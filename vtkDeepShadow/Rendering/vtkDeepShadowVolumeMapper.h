@@ -130,7 +130,10 @@ public:
   vtkGetMacro(GPUMemoryBytes, long long);
   ///@}
 
-  /** Why the volume was last not drawn; empty after a successful frame. */
+  /**
+   * What went wrong in the last frame (the volume not drawn, or drawn without shadows); empty
+   * after a frame without trouble.
+   */
   const std::string& GetLastError() const { return this->LastError; }
 
 protected:
@@ -158,6 +161,7 @@ protected:
   double EmptyBlockFraction = 0.0;
   long long GPUMemoryBytes = 0;
   std::string LastError;
+  bool ErrorThisFrame = false;
 
 private:
   vtkDeepShadowVolumeMapper(const vtkDeepShadowVolumeMapper&) = delete;

@@ -95,14 +95,16 @@ bool vtkDeepShadowRayTechnique::Prepare(deepshadow::ShadowContext& context)
   const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
   GLint max3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-  if (std::max({ dims.x, dims.y, dims.z * std::max(1, cache.Slots.Count()) }) > max3D)
+  if (std::max({ dims.x, dims.y, dims.z * std::max(cache.Slabs, cache.Slots.Count()) }) > max3D)
   {
     this->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
       std::to_string(dims.y) + "x" + std::to_string(dims.z) + " per light) exceeds this GL's 3D "
       "texture limit of " + std::to_string(max3D);
     return false;
   }
-  const int slabs = std::max(1, cache.Slots.Count());
+  // Grow only: fewer shadow-casting lights keep the others' slabs.
+  const int slabs = std::max(cache.Texture && dims == cache.Dims ? cache.Slabs : 1,
+    cache.Slots.Count());
   if (!cache.Texture || dims != cache.Dims || slabs != cache.Slabs)
   {
     if (cache.Texture)

@@ -136,7 +136,9 @@ bool vtkDeepShadowShadowMapTechnique::Prepare(deepshadow::ShadowContext& context
     vtkWarningMacro(<< dropped << " shadow-casting lights beyond " << MaxShadowLights
                     << " cast no shadow map");
   }
-  const int slabs = std::max(1, maps.Slots.Count());
+  // Grow only: fewer shadow-casting lights keep the others' maps.
+  const int slabs = std::max(maps.Texture && maps.Size == this->MapSize ? maps.Slabs : 1,
+    maps.Slots.Count());
   if (!maps.Texture || maps.Size != this->MapSize || maps.Slabs != slabs)
   {
     if (maps.Texture)

@@ -4,7 +4,6 @@
 //@Dec
 uniform sampler3D u_occupancy; // 1 where a block can be visible (R8, nearest)
 uniform float u_blockSize;
-uniform int u_feelerSkipEmpty; // feelers may skip empty blocks (not with scalar thresholds)
 int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
 {
   vec3 lo = block * u_blockSize;

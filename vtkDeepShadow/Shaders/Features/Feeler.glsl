@@ -11,6 +11,7 @@ uniform float u_feelerThreshold;   // corrected opacity, or normalized scalar
 uniform int u_feelerThresholdOnScalar;
 uniform vec2 u_scalarRange;
 uniform float u_feelerTermination; // transmittance at which translucent feelers stop
+uniform int u_feelerSkipEmpty;     // may skip empty blocks (not with scalar thresholds)
 
 float feelerAlpha(float scalar)
 {

@@ -1,0 +1,176 @@
+// Every shadow technique on the GPU against its CPU twin, on a ball over a floor lit from
+// above: shadows appear where they should (the floor under the ball darkens), and GPU and
+// twin agree within the stated tolerance.
+//
+// Stated tolerances (GPU vs CPU twin): translucent techniques RMSE <= 2/255 and <= 1% of
+// pixels off by more than 12/255; binary techniques (opaque rays, shadow maps) RMSE <= 4/255
+// and <= 3% of pixels beyond 24/255, because a feeler or light ray whose sample sits on the
+// threshold can fall either side in float and in double, which flips a whole shadow texel or
+// a pixel's visibility.
+#include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowRayTechnique.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkLight.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+using deepshadow::testing::Grab;
+using deepshadow::testing::WithinTolerance;
+
+namespace
+{
+struct Case
+{
+  const char* Name;
+  vtkSmartPointer<vtkDeepShadowTechnique> Technique;
+  bool Binary;
+};
+
+vtkSmartPointer<vtkDeepShadowTechnique> Rays(bool opaque, bool cached)
+{
+  auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
+  rays->SetOpaque(opaque);
+  rays->SetCached(cached);
+  rays->SetShadowVolumeSize(48);
+  rays->SetThreshold(0.3);
+  return rays;
+}
+
+vtkSmartPointer<vtkDeepShadowTechnique> Map(int filter)
+{
+  auto map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
+  map->SetMapSize(128);
+  map->SetFilter(filter);
+  map->SetThreshold(0.3);
+  return map;
+}
+
+// Mean red of a pixel block (the floor under the ball, seen from this camera).
+double Mean(const deepshadow::Image& image, int x0, int y0, int size)
+{
+  double sum = 0.0;
+  for (int y = y0; y < y0 + size; ++y)
+    for (int x = x0; x < x0 + size; ++x)
+      sum += image.At(x, y).x;
+  return sum / (size * size);
+}
+}
+
+int TestShadowTechniques(int argc, char* argv[])
+{
+  auto data = deepshadow::testing::MakeShadowVolume();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 1.0, 1.0, 1.0);
+  color->AddRGBPoint(90, 0.9, 0.85, 0.7);
+  color->AddRGBPoint(140, 0.5, 0.7, 1.0);
+  color->AddRGBPoint(200, 1.0, 0.4, 0.3);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(40, 0.0);
+  opacity->AddPoint(90, 0.25);
+  opacity->AddPoint(140, 0.12);
+  opacity->AddPoint(200, 0.9);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->ShadeOn();
+  property->SetAmbient(0.2);
+
+  vtkNew<vtkDeepShadowRenderWindow> window;
+  window->SetSize(160, 160);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.05, 0.05, 0.08);
+  window->AddRenderer(renderer);
+  vtkNew<vtkDeepShadowVolumeMapper> mapper;
+  mapper->SetInputData(data);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(0.3, 0.2, 1.0); // from above, slightly off axis
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -3.0, 1.6);
+  camera->SetFocalPoint(0.0, 0.0, -0.2);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+  camera->Zoom(1.3);
+  renderer->ResetCameraClippingRange();
+
+  window->Render();
+  const deepshadow::Image unshadowed = Grab(window);
+
+  const Case cases[] = { { "rays", Rays(false, false), false },
+    { "rays-opaque", Rays(true, false), true }, { "rays-cached", Rays(false, true), false },
+    { "rays-opaque-cached", Rays(true, true), true },
+    { "shadowmap, no filter", Map(vtkDeepShadowShadowMapTechnique::NoFilter), true },
+    { "shadowmap, 2x2", Map(vtkDeepShadowShadowMapTechnique::PCF2x2), true },
+    { "shadowmap, 3x3", Map(vtkDeepShadowShadowMapTechnique::PCF3x3), true },
+    { "shadowmap, Poisson", Map(vtkDeepShadowShadowMapTechnique::PoissonDisc), true } };
+  bool ok = true;
+  for (const Case& c : cases)
+  {
+    mapper->SetShadowTechnique(c.Technique);
+    window->Render();
+    if (!mapper->GetLastError().empty())
+    {
+      std::printf("%s: %s\n", c.Name, mapper->GetLastError().c_str());
+      return EXIT_FAILURE;
+    }
+    const deepshadow::Image gpu = Grab(window);
+    ok = WithinTolerance(c.Name, gpu, deepshadow::testing::Reference(renderer, true),
+           (c.Binary ? 4.0 : 2.0) / 255.0, (c.Binary ? 24.0 : 12.0) / 255.0,
+           c.Binary ? 0.03 : 0.01) && ok;
+    // The floor in the ball's shadow (left of centre, lower quarter) darkens.
+    const double before = Mean(unshadowed, 44, 30, 10), after = Mean(gpu, 44, 30, 10);
+    std::printf("  floor under the ball: %.3f without shadows, %.3f with\n", before, after);
+    ok = after < 0.5 * before && ok;
+  }
+  // Several lights of every kind at once (each shadowed), then an unshaded volume that is
+  // lit isotropically because it receives shadows.
+  vtkNew<vtkLight> point, spot;
+  point->SetLightTypeToSceneLight();
+  point->SetPositional(true);
+  point->SetConeAngle(180.0);
+  point->SetPosition(-60.0, -20.0, 70.0);
+  point->SetDiffuseColor(0.5, 0.7, 1.0);
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(40.0, 30.0, 90.0);
+  spot->SetFocalPoint(0.0, 0.0, -30.0);
+  spot->SetConeAngle(25.0);
+  spot->SetIntensity(0.8);
+  renderer->AddLight(point);
+  renderer->AddLight(spot);
+  for (const Case& c : { cases[0], cases[6] })
+  {
+    mapper->SetShadowTechnique(c.Technique);
+    for (bool shade : { true, false })
+    {
+      property->SetShade(shade);
+      window->Render();
+      const std::string name = std::string(c.Name) + ", three lights" + (shade ? "" : ", unshaded");
+      ok = WithinTolerance(name.c_str(), Grab(window), deepshadow::testing::Reference(renderer, true),
+             (c.Binary ? 4.0 : 2.0) / 255.0, (c.Binary ? 24.0 : 12.0) / 255.0,
+             c.Binary ? 0.03 : 0.01) && ok;
+    }
+  }
+  renderer->RemoveLight(point);
+  renderer->RemoveLight(spot);
+  property->ShadeOn();
+
+  mapper->SetShadowTechnique(cases[7].Technique);
+  window->Render();
+  const int result = vtkRegressionTestImage(window);
+  return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
