@@ -137,6 +137,8 @@ Usage:
                        [--gpu-twin | --ground-truth] [--threads N]
   deepshadow all       --out DIR [VIEW] [--frames N]
   deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
+  deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
+                       [--frames N] [--json shadows.json]
   deepshadow scenes
   deepshadow --help
 
@@ -152,6 +154,10 @@ Commands:
               CPU reference and the error against it.
   bench       Our mapper against VTK's vtkGPUVolumeRayCastMapper in one run, same scenes,
               same sample distance; prints the ratio of median frame times.
+  shadow-bench  Per scene and technique: frame time when only the camera moves and when
+              the light moves, as ratios to the unshadowed frame of the same run, build time,
+              memory, and the error against the ground truth (CPU, translucent shadow rays at
+              a quarter step) at --error-size (default 256x256).
   scenes      Lists the standard scenes.
 
 SCENE (default: --scene box):
@@ -222,7 +228,8 @@ Options Options::Parse(int argc, char* argv[])
     o.Command = args[0];
     i = 1;
   }
-  static const char* const commands[] = { "render", "reference", "all", "bench", "scenes" };
+  static const char* const commands[] = { "render", "reference", "all", "bench", "shadow-bench",
+    "scenes" };
   bool known = false;
   for (const char* c : commands)
   {
@@ -435,6 +442,33 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--threads")
     {
       o.Threads = ParseInteger(key, next(), 0, 1024);
+    }
+    else if (key == "--scenes")
+    {
+      o.BenchScenes = Split(next(), ',');
+    }
+    else if (key == "--techniques")
+    {
+      o.BenchTechniques = Split(next(), ',');
+      const auto names = TechniqueNames();
+      for (const auto& t : o.BenchTechniques)
+      {
+        if (std::find(names.begin(), names.end(), t) == names.end())
+        {
+          throw UsageError("unknown technique '" + t + "' in --techniques");
+        }
+      }
+    }
+    else if (key == "--error-size")
+    {
+      const std::string text = next();
+      const auto parts = Split(text, 'x');
+      if (parts.size() != 2)
+      {
+        throw UsageError("--error-size expects WxH, got '" + text + "'");
+      }
+      o.ErrorWidth = ParseInteger(key, parts[0], 1, 16384);
+      o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
     }
     else if (key == "--bench-sizes")
     {

@@ -77,6 +77,11 @@ struct Options
 
   // bench
   std::vector<int> BenchSizes{ 128, 256 };
+  // shadow-bench
+  std::vector<std::string> BenchScenes; // empty: all standard scenes
+  std::vector<std::string> BenchTechniques; // empty: all but none
+  int ErrorWidth = 256;
+  int ErrorHeight = 256;
 
   /** Parses argv; throws UsageError. `--help` sets Command to "help". */
   static Options Parse(int argc, char* argv[]);

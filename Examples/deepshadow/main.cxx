@@ -37,6 +37,10 @@ int main(int argc, char* argv[])
     {
       return RunBench(options);
     }
+    if (options.Command == "shadow-bench")
+    {
+      return RunShadowBench(options);
+    }
     return RunScenes(options);
   }
   catch (const UsageError& error)

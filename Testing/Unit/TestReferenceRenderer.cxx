@@ -44,7 +44,7 @@ TEST(ReferenceRenderer, HomogeneousSlabFollowsBeerLambert)
     MarchSettings settings;
     settings.SampleDistance = dt;
     const Ray ray = scene.View.PixelRay(4, 4);
-    const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ray, 1e300, 0.5, settings, nullptr);
+    const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ReferenceRenderer::Prepare(scene, scene.Volumes[0], settings), ray, 1e300, 0.5, settings);
     const long samples = std::lround(10.0 / dt);
     const double expected = 1.0 - std::pow(1.0 - 0.2, samples * dt);
     EXPECT_NEAR(rgba.a, expected, 1e-12) << "dt " << dt;
@@ -61,7 +61,7 @@ TEST(ReferenceRenderer, ScaledVolumesIntegrateOverWorldDistance)
   scene.View = Camera(glm::ortho(-6.0, 6.0, -6.0, 6.0, 1.0, 100.0) * view, 8, 8);
   MarchSettings settings;
   settings.SampleDistance = 0.25;
-  const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], scene.View.PixelRay(4, 4), 1e300, 0.5, settings, nullptr);
+  const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ReferenceRenderer::Prepare(scene, scene.Volumes[0], settings), scene.View.PixelRay(4, 4), 1e300, 0.5, settings);
   EXPECT_NEAR(rgba.a, 1.0 - std::pow(0.95, 30.0), 1e-12);
 }
 
@@ -95,8 +95,8 @@ TEST(ReferenceRenderer, EarlyTerminationChangesAtMostTheRemainingTransmittance)
   exact.SampleDistance = early.SampleDistance = 0.05;
   early.TerminationOpacity = DefaultTerminationOpacity;
   const Ray ray = scene.View.PixelRay(4, 4);
-  const glm::dvec4 a = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ray, 1e300, 0.5, exact, nullptr);
-  const glm::dvec4 b = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ray, 1e300, 0.5, early, nullptr);
+  const glm::dvec4 a = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ReferenceRenderer::Prepare(scene, scene.Volumes[0], exact), ray, 1e300, 0.5, exact);
+  const glm::dvec4 b = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ReferenceRenderer::Prepare(scene, scene.Volumes[0], early), ray, 1e300, 0.5, early);
   EXPECT_GT(b.a, DefaultTerminationOpacity);
   EXPECT_LE(std::abs(a.a - b.a), 1.0 - DefaultTerminationOpacity);
   EXPECT_LE(std::abs(a.r - b.r), 1.0 - DefaultTerminationOpacity);
@@ -123,7 +123,7 @@ TEST(ReferenceRenderer, OpacityOneEverywhereSaturatesWithoutNaN)
     scene.Volumes[0].Transfer.OpacityUnitDistance = unit;
     MarchSettings settings;
     settings.SampleDistance = 0.5;
-    const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], scene.View.PixelRay(4, 4), 1e300, 0.5, settings, nullptr);
+    const glm::dvec4 rgba = ReferenceRenderer::MarchRay(scene, scene.Volumes[0], ReferenceRenderer::Prepare(scene, scene.Volumes[0], settings), scene.View.PixelRay(4, 4), 1e300, 0.5, settings);
     EXPECT_EQ(rgba.a, 1.0);
     EXPECT_TRUE(std::isfinite(rgba.r));
   }

@@ -208,6 +208,10 @@ TEST(Shadows, ReferenceRendererDarkensWhatTheSlabShadows)
   MarchSettings settings;
   settings.SampleDistance = 0.5;
   const Image shadowed = ReferenceRenderer::Render(scene, settings, 2);
+  // Empty-space skipping (view rays and feelers) changes nothing, bit for bit.
+  MarchSettings marching = settings;
+  marching.EmptySpaceSkipping = false;
+  EXPECT_EQ(ReferenceRenderer::Render(scene, marching, 2).RGB, shadowed.RGB);
   // Camera at -z looking +z with view-up +y: world +x is image left. The slab covers x < 10.
   const double underSlab = shadowed.At(18, 12).x, open = shadowed.At(5, 12).x;
   EXPECT_LT(underSlab, 0.5 * open);

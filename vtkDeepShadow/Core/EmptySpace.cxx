@@ -1,5 +1,8 @@
 #include "EmptySpace.h"
 
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -56,6 +59,26 @@ std::vector<uint8_t> BlockRanges::Occupancy(const PiecewiseLinear& opacity) cons
     occupied[b] = opacity.MaxOver(this->Min[b], this->Max[b]) > 0.0 ? 1 : 0;
   }
   return occupied;
+}
+
+EmptySpaceMap::EmptySpaceMap(const VolumeGrid& grid, const PiecewiseLinear& opacity, int blockSize)
+  : Blocks(BlockRanges::Compute(grid, blockSize))
+  , Occupied(Blocks.Occupancy(opacity))
+{
+}
+
+int EmptySpaceMap::SkipSteps(const glm::dvec3& index, const glm::dvec3& indexStep) const
+{
+  const glm::ivec3 block = glm::ivec3(glm::floor(index / static_cast<double>(this->Blocks.BlockSize)));
+  if (glm::any(glm::lessThan(block, glm::ivec3(0))) ||
+    glm::any(glm::greaterThanEqual(block, this->Blocks.BlockCount)))
+  {
+    return 0;
+  }
+  const size_t b = block.x +
+    static_cast<size_t>(this->Blocks.BlockCount.x) *
+      (block.y + static_cast<size_t>(this->Blocks.BlockCount.y) * block.z);
+  return this->Occupied[b] ? 0 : StepsToLeaveBlock(index, indexStep, block, this->Blocks.BlockSize);
 }
 
 int StepsToLeaveBlock(

@@ -31,6 +31,22 @@ struct VTKDEEPSHADOWCORE_EXPORT BlockRanges
   std::vector<uint8_t> Occupancy(const PiecewiseLinear& opacity) const;
 };
 
+/** Which blocks a ray may skip: the block ranges and their occupancy for one opacity. */
+struct VTKDEEPSHADOWCORE_EXPORT EmptySpaceMap
+{
+  BlockRanges Blocks;
+  std::vector<uint8_t> Occupied;
+
+  EmptySpaceMap() = default;
+  EmptySpaceMap(const VolumeGrid& grid, const PiecewiseLinear& opacity, int blockSize = 8);
+
+  /**
+   * If the sample at `index` lies in an empty block, the number of steps of `indexStep`
+   * that leave it (>= 1); 0 if the sample must be taken.
+   */
+  int SkipSteps(const glm::dvec3& index, const glm::dvec3& indexStep) const;
+};
+
 /**
  * Number of whole steps after which the sample position index + s * indexStep has left the
  * block `block` (of `blockSize` voxels), at least 1. Twin of the GPU's skip.

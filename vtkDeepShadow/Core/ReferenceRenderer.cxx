@@ -25,42 +25,53 @@ MarchSettings MarchSettings::GpuTwin(
   return settings;
 }
 
-std::vector<std::unique_ptr<LightShadow>> ReferenceRenderer::BuildShadows(const Scene& scene,
-  const VolumeInstance& volume, const MarchSettings& settings, TransferTable* feelerTable,
-  int threads)
+ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
+  const VolumeInstance& volume, const MarchSettings& settings, int threads)
 {
-  std::vector<std::unique_ptr<LightShadow>> shadows(scene.Lights.size());
+  PreparedVolume prepared;
+  const glm::dvec2 range = volume.Grid->GetRange();
+  if (settings.TransferTableSize > 0)
+  {
+    prepared.Table = std::make_unique<TransferTable>(TransferTable::Sample(volume.Transfer,
+      range.x, range.y, settings.TransferTableSize, settings.SampleDistance));
+  }
+  if (settings.EmptySpaceSkipping)
+  {
+    prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
+  }
+  prepared.Shadows.resize(scene.Lights.size());
   if (volume.Shadows.Kind == ShadowKind::None)
   {
-    return shadows;
+    return prepared;
   }
   ShadowCaster caster;
   caster.Grid = volume.Grid.get();
   caster.Transfer = &volume.Transfer;
   caster.Sampling = volume.Sampling;
-  if (settings.TransferTableSize > 0 && feelerTable)
+  caster.Empty = prepared.Empty.get();
+  if (settings.TransferTableSize > 0)
   {
-    const glm::dvec2 range = volume.Grid->GetRange();
-    *feelerTable = TransferTable::Sample(volume.Transfer, range.x, range.y,
-      settings.TransferTableSize, volume.Shadows.StepFactor * settings.SampleDistance);
-    caster.FeelerTable = feelerTable;
+    prepared.FeelerTable = std::make_unique<TransferTable>(TransferTable::Sample(volume.Transfer,
+      range.x, range.y, settings.TransferTableSize, volume.Shadows.StepFactor * settings.SampleDistance));
+    caster.FeelerTable = prepared.FeelerTable.get();
   }
   for (size_t l = 0; l < scene.Lights.size(); ++l)
   {
     if (scene.Lights[l].ShadowAttenuation > 0.0)
     {
-      shadows[l] = MakeLightShadow(
-        volume.Shadows, caster, scene.Lights[l], settings.SampleDistance, threads);
+      prepared.Shadows[l] =
+        MakeLightShadow(volume.Shadows, caster, scene.Lights[l], settings.SampleDistance, threads);
     }
   }
-  return shadows;
+  return prepared;
 }
 
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
-  const Ray& ray, double tLimit, double offset, const MarchSettings& settings,
-  const TransferTable* table, const std::vector<std::unique_ptr<LightShadow>>* shadows)
+  const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
+  const MarchSettings& settings)
 {
-  const bool shadowed = volume.Shadows.Kind != ShadowKind::None && shadows;
+  const TransferTable* table = prepared.Table.get();
+  const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
   const bool lit = volume.Shade || shadowed;
   const VolumeGrid& grid = *volume.Grid;
   double tEnter = 0.0, tExit = 0.0;
@@ -85,6 +96,14 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       break;
     }
     const glm::dvec3 index = indexOrigin + t * indexDirection;
+    if (prepared.Empty)
+    {
+      if (const int skip = prepared.Empty->SkipSteps(index, indexDirection * dt))
+      {
+        k += skip - 1;
+        continue;
+      }
+    }
     const double scalar = grid.Sample(index, volume.Sampling);
 
     glm::dvec3 color;
@@ -118,9 +137,9 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         glm::dvec3 contribution = volume.Shade
           ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
           : volume.Surface.Diffuse * sample.Diffuse * color;
-        if (shadowed && (*shadows)[l] && contribution != glm::dvec3(0.0))
+        if (shadowed && prepared.Shadows[l] && contribution != glm::dvec3(0.0))
         {
-          const double visibility = (*shadows)[l]->Visibility(position);
+          const double visibility = prepared.Shadows[l]->Visibility(position);
           contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
         }
         light += contribution;
@@ -138,19 +157,10 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
   const int height = scene.View.GetHeight();
   Image image(width, height);
 
-  std::vector<TransferTable> tables;
-  std::vector<TransferTable> feelerTables(scene.Volumes.size());
-  std::vector<std::vector<std::unique_ptr<LightShadow>>> shadows;
-  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  std::vector<PreparedVolume> prepared;
+  for (const VolumeInstance& volume : scene.Volumes)
   {
-    const VolumeInstance& volume = scene.Volumes[v];
-    if (settings.TransferTableSize > 0)
-    {
-      const glm::dvec2 range = volume.Grid->GetRange();
-      tables.push_back(TransferTable::Sample(
-        volume.Transfer, range.x, range.y, settings.TransferTableSize, settings.SampleDistance));
-    }
-    shadows.push_back(BuildShadows(scene, volume, settings, &feelerTables[v], threads));
+    prepared.push_back(Prepare(scene, volume, settings, threads));
   }
 
   ParallelFor(
@@ -165,9 +175,8 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
         glm::dvec3 pixel = scene.Background;
         for (size_t v = 0; v < scene.Volumes.size(); ++v)
         {
-          const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], ray,
-            std::numeric_limits<double>::infinity(), offset, settings,
-            tables.empty() ? nullptr : &tables[v], &shadows[v]);
+          const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray,
+            std::numeric_limits<double>::infinity(), offset, settings);
           pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
         }
         image.Set(x, y, pixel);

@@ -23,6 +23,7 @@
 #include "Light.h"
 #include "OpticalModel.h"
 #include "Shadows.h"
+#include "EmptySpace.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
 #include "vtkDeepShadowCoreModule.h"
@@ -66,6 +67,8 @@ struct MarchSettings
   double TerminationOpacity = 1.0;
   /** 0: evaluate transfer functions exactly. N: look them up in an N-texel TransferTable. */
   int TransferTableSize = 0;
+  /** Skip blocks of zero opacity (exact: the same samples count; only faster). */
+  bool EmptySpaceSkipping = true;
 
   /** What the GPU mapper computes with the same parameters. */
   static MarchSettings GpuTwin(double sampleDistance, int tableSize, bool jitter = false,
@@ -78,22 +81,24 @@ public:
   /** Renders the scene; `threads` 0 uses DefaultThreadCount(). */
   static Image Render(const Scene& scene, const MarchSettings& settings, int threads = 0);
 
-  /**
-   * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
-   * first sample `offset` steps (in [0, 1)) past the entry. `table` is used when not null;
-   * `shadows` (one per scene light, null entries for lights without shadows) when not null.
-   */
-  static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume, const Ray& ray,
-    double tLimit, double offset, const MarchSettings& settings, const TransferTable* table,
-    const std::vector<std::unique_ptr<LightShadow>>* shadows = nullptr);
+  /** What rendering a volume needs beyond its description, computed once per image. */
+  struct PreparedVolume
+  {
+    std::unique_ptr<TransferTable> Table;       // GPU twin only
+    std::unique_ptr<TransferTable> FeelerTable; // GPU twin with shadows only
+    std::unique_ptr<EmptySpaceMap> Empty;       // blocks rays may skip (exact)
+    std::vector<std::unique_ptr<LightShadow>> Shadows; // per scene light; null: no shadow
+  };
+  static PreparedVolume Prepare(const Scene& scene, const VolumeInstance& volume,
+    const MarchSettings& settings, int threads = 0);
 
   /**
-   * The shadows of a volume for each scene light (null for lights that cast none), built
-   * as `settings` says (a GPU twin uses the feeler table the GPU uses).
+   * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
+   * first sample `offset` steps (in [0, 1)) past the entry.
    */
-  static std::vector<std::unique_ptr<LightShadow>> BuildShadows(const Scene& scene,
-    const VolumeInstance& volume, const MarchSettings& settings, TransferTable* feelerTable,
-    int threads = 0);
+  static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume,
+    const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
+    const MarchSettings& settings);
 };
 
 }

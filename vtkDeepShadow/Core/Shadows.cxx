@@ -57,7 +57,9 @@ const std::vector<glm::dvec2>& PoissonDisc()
 
 glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
 {
+  // Never finer than the data: a feeler per voxel is all the data can tell.
   const int longest = std::max({ dataDims.x, dataDims.y, dataDims.z });
+  size = std::min(size, longest);
   glm::ivec3 dims;
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -248,6 +250,8 @@ public:
     const double t0 = std::max(tEnter, 0.0);
     const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(origin, 1.0));
     const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(direction, 0.0));
+    const EmptySpaceMap* empty =
+      sampler.Parameters.Mode == ThresholdMode::Scalar ? nullptr : sampler.Caster.Empty;
     for (long j = 0;; ++j)
     {
       const double t = t0 + (static_cast<double>(j) + 0.5) * step;
@@ -255,7 +259,16 @@ public:
       {
         return std::numeric_limits<float>::max();
       }
-      if (sampler.AboveThreshold(grid.Sample(indexOrigin + t * indexDirection, sampler.Caster.Sampling)))
+      const glm::dvec3 index = indexOrigin + t * indexDirection;
+      if (empty)
+      {
+        if (const int skip = empty->SkipSteps(index, indexDirection * step))
+        {
+          j += skip - 1;
+          continue;
+        }
+      }
+      if (sampler.AboveThreshold(grid.Sample(index, sampler.Caster.Sampling)))
       {
         return t;
       }
@@ -319,6 +332,10 @@ double FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(from, 1.0));
   const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(toLight, 0.0));
   const FeelerSampler sampler(caster, parameters, step);
+  // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar.
+  const EmptySpaceMap* empty =
+    parameters.Opaque && parameters.Mode == ThresholdMode::Scalar ? nullptr : caster.Empty;
+  const glm::dvec3 indexStep = indexDirection * step;
   double transmittance = 1.0;
   for (long j = 0;; ++j)
   {
@@ -327,7 +344,16 @@ double FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
     {
       break;
     }
-    const double scalar = grid.Sample(indexOrigin + t * indexDirection, caster.Sampling);
+    const glm::dvec3 index = indexOrigin + t * indexDirection;
+    if (empty)
+    {
+      if (const int skip = empty->SkipSteps(index, indexStep))
+      {
+        j += skip - 1;
+        continue;
+      }
+    }
+    const double scalar = grid.Sample(index, caster.Sampling);
     if (parameters.Opaque)
     {
       if (sampler.AboveThreshold(scalar))

@@ -16,6 +16,7 @@
 #ifndef deepshadow_Shadows_h
 #define deepshadow_Shadows_h
 
+#include "EmptySpace.h"
 #include "Light.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
@@ -62,7 +63,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   double Threshold = 0.5;   // opaque rays and shadow maps, in [0, 1]
   ThresholdMode Mode = ThresholdMode::Opacity;
   double StepFactor = 1.0;  // feeler (and light-ray) step / view step
-  int VolumeSize = 128;     // cached: shadow voxels along the volume's longest axis
+  int VolumeSize = 128;     // cached: shadow nodes along the longest axis (at most the data's)
   int MapSize = 512;        // shadow map: texels per side
   double Bias = 2.0;        // shadow map: depth bias, in feeler steps
   ShadowFilter Filter = ShadowFilter::PCF3x3;
@@ -81,7 +82,10 @@ constexpr double ShadowTerminationTransmittance = 1.0 / 512.0;
 /** The Poisson disc of the Poisson filter, in texels (the GLSL twin is generated from it). */
 VTKDEEPSHADOWCORE_EXPORT const std::vector<glm::dvec2>& PoissonDisc();
 
-/** Dimensions of the cached shadow volume for a data grid: aspect kept, longest = size. */
+/**
+ * Dimensions of the cached shadow volume for a data grid: aspect kept, `size` nodes along
+ * the longest axis but never more than the data has.
+ */
 VTKDEEPSHADOWCORE_EXPORT glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size);
 
 /** The volume that casts shadows, as the techniques read it. */
@@ -92,6 +96,8 @@ struct ShadowCaster
   Interpolation Sampling = Interpolation::Linear;
   /** GPU twin: the feeler's corrected opacity from this table (sampled for the feeler step). */
   const TransferTable* FeelerTable = nullptr;
+  /** Optional: blocks of zero opacity that feelers may skip (exactly; see EmptySpace.h). */
+  const EmptySpaceMap* Empty = nullptr;
 };
 
 /** How much of one light reaches a point. */

@@ -40,7 +40,10 @@ public:
   ///@}
 
   ///@{
-  /** Shadow-volume nodes along the volume's longest axis (default 128; [2, 2048], warned). */
+  /**
+   * Shadow-volume nodes along the volume's longest axis, at most as many as the data has
+   * (default 128; [2, 2048], warned).
+   */
   void SetShadowVolumeSize(int size);
   vtkGetMacro(ShadowVolumeSize, int);
   ///@}

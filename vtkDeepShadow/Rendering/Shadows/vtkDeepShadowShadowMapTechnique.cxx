@@ -20,7 +20,6 @@ vtkStandardNewMacro(vtkDeepShadowShadowMapTechnique);
 namespace
 {
 constexpr int MaxShadowLights = 4; // MapShadow.glsl's array sizes
-constexpr int LayersPerLight = 6;  // room for a cube
 }
 
 // The maps (one R32F 2D array texture, six layers per shadow-casting light) and their pass.
@@ -30,6 +29,7 @@ public:
   unsigned int Texture = 0;
   int Size = 0;
   int Slabs = 0;
+  int LayersPerLight = 1; // 6 once some light needs a cube of faces
   int Unit = -1;
   vtkOpenGLRenderWindow* Window = nullptr;
   deepshadow::ShadowSlots Slots;
@@ -136,10 +136,26 @@ bool vtkDeepShadowShadowMapTechnique::Prepare(deepshadow::ShadowContext& context
     vtkWarningMacro(<< dropped << " shadow-casting lights beyond " << MaxShadowLights
                     << " cast no shadow map");
   }
+  glm::dvec3 centre;
+  double radius = 0.0;
+  deepshadow::VolumeBoundingSphere(context.IndexToWorld, context.Dims, centre, radius);
+  const std::vector<double> parameters{ this->Threshold, static_cast<double>(this->ThresholdMode),
+    this->StepFactor, static_cast<double>(this->MapSize) };
+  maps.Faces.resize(static_cast<size_t>(maps.Slots.Count()));
+  int layersPerLight = 1;
+  for (int slot = 0; slot < maps.Slots.Count(); ++slot)
+  {
+    maps.Faces[slot] = deepshadow::ShadowMapFaces(
+      context.Lights[static_cast<size_t>(maps.Slots.Light(slot))], centre, radius);
+    layersPerLight = std::max(layersPerLight, static_cast<int>(maps.Faces[slot].size()));
+  }
   // Grow only: fewer shadow-casting lights keep the others' maps.
   const int slabs = std::max(maps.Texture && maps.Size == this->MapSize ? maps.Slabs : 1,
     maps.Slots.Count());
-  if (!maps.Texture || maps.Size != this->MapSize || maps.Slabs != slabs)
+  layersPerLight = std::max(
+    layersPerLight, maps.Texture && maps.Size == this->MapSize ? maps.LayersPerLight : 1);
+  if (!maps.Texture || maps.Size != this->MapSize || maps.Slabs != slabs ||
+    maps.LayersPerLight != layersPerLight)
   {
     if (maps.Texture)
     {
@@ -148,7 +164,7 @@ bool vtkDeepShadowShadowMapTechnique::Prepare(deepshadow::ShadowContext& context
     glGenTextures(1, &maps.Texture);
     glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
     glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_R32F, this->MapSize, this->MapSize,
-      std::min(slabs * LayersPerLight, static_cast<int>(maxLayers)));
+      std::min(slabs * layersPerLight, static_cast<int>(maxLayers)));
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -156,16 +172,12 @@ bool vtkDeepShadowShadowMapTechnique::Prepare(deepshadow::ShadowContext& context
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     maps.Size = this->MapSize;
     maps.Slabs = slabs;
+    maps.LayersPerLight = layersPerLight;
     maps.Slots.Invalidate();
   }
-  this->StructureBytes = static_cast<long long>(this->MapSize) * this->MapSize * slabs * LayersPerLight * 4;
+  this->StructureBytes =
+    static_cast<long long>(this->MapSize) * this->MapSize * slabs * maps.LayersPerLight * 4;
 
-  glm::dvec3 centre;
-  double radius = 0.0;
-  deepshadow::VolumeBoundingSphere(context.IndexToWorld, context.Dims, centre, radius);
-  const std::vector<double> parameters{ this->Threshold, static_cast<double>(this->ThresholdMode),
-    this->StepFactor, static_cast<double>(this->MapSize) };
-  maps.Faces.resize(static_cast<size_t>(maps.Slots.Count()));
   std::vector<int> stale;
   for (int slot = 0; slot < maps.Slots.Count(); ++slot)
   {
@@ -192,7 +204,7 @@ bool vtkDeepShadowShadowMapTechnique::Prepare(deepshadow::ShadowContext& context
     for (size_t f = 0; f < maps.Faces[slot].size(); ++f)
     {
       const deepshadow::ShadowMapFace& face = maps.Faces[slot][f];
-      maps.Build.Set("u_layer", slot * LayersPerLight + static_cast<int>(f));
+      maps.Build.Set("u_layer", slot * maps.LayersPerLight + static_cast<int>(f));
       maps.Build.Set("u_perspective", face.Perspective ? 1 : 0);
       maps.Build.Set("u_origin", glm::vec3(face.Origin));
       maps.Build.Set("u_forward", glm::vec3(face.Forward));
@@ -243,6 +255,7 @@ void vtkDeepShadowShadowMapTechnique::Bind(
   sink.Set("u_shadowUp", up);
   sink.Set("u_shadowExtent", extent);
   sink.Set("u_shadowSize", static_cast<float>(this->MapSize));
+  sink.Set("u_shadowLayersPerLight", maps.LayersPerLight);
   sink.Set("u_shadowBias", static_cast<float>(this->Bias * this->FeelerStep(context)));
 }
 

@@ -6,7 +6,8 @@
 // are defined by the technique from Core's tables.
 //@Dec
 const int MaxShadowLights = 4;
-uniform sampler2DArray u_shadowMap;          // R32F depths, layer = slot * 6 + face
+uniform sampler2DArray u_shadowMap;          // R32F depths, layer = slot * layers + face
+uniform int u_shadowLayersPerLight;          // 1, or 6 when some light needs a cube
 uniform int u_shadowSlot[MaxLights];         // -1: the light casts no shadow
 uniform float u_shadowAttenuation[MaxLights];
 uniform int u_shadowFaceCount[MaxShadowLights];
@@ -108,7 +109,7 @@ float mapVisibility(int slot, vec3 position)
     depth = z;
   }
   vec2 xy = 0.5 * (vec2(u, v) + 1.0) * u_shadowSize - 0.5;
-  return filteredShadow(slot * 6 + face, xy, depth - u_shadowBias);
+  return filteredShadow(slot * u_shadowLayersPerLight + face, xy, depth - u_shadowBias);
 }
 //@Impl
     if (u_shadowSlot[i] >= 0)
