@@ -42,6 +42,10 @@ expect 2 "negative sample distance" -- "$tool" render --sample-distance -1 --out
 expect 2 "zero light direction" -- "$tool" render --light-dir 0,0,0 --out x.png
 expect 2 "unknown scene" -- "$tool" render --scene teapot --out x.png
 expect 2 "unknown technique" -- "$tool" render --technique magic --out x.png
+expect 2 "threshold out of range" -- "$tool" render --technique shadowmap --shadow-threshold 2 --out x.png
+expect 2 "bad filter" -- "$tool" render --technique shadowmap --pcf 5x5 --out x.png
+expect 2 "bad light" -- "$tool" render --light lamp:1,2,3 --out x.png
+expect 2 "spot without angle" -- "$tool" render --light spot:0,0,100 --out x.png
 expect 2 "scene and volume" -- "$tool" render --scene box --volume a.vti --out x.png
 expect 2 "missing file" -- "$tool" render --volume does-not-exist.vti --out x.png
 echo "not a volume" > garbage.vti
@@ -65,6 +69,11 @@ for field in technique width height frames build_ms render_ms shadow_bytes first
   grep -q "\"$field\":" default.json || { echo "FAILED: default.json lacks $field"; failures=$((failures + 1)); }
 done
 grep -q '"frames": 2' default.json || { echo "FAILED: frames not recorded"; failures=$((failures + 1)); }
+expect 0 "render with a technique" -- "$tool" render --scene bucky --scale 0.5 --size 64x64 --frames 1 \
+  --technique shadowmap --shadow-map-size 64 --light dir:1,0,1 --light spot:0,0,90:30:0.5 \
+  --out shadowed.png --json shadowed.json
+grep -q '"shadow_builds": 2' shadowed.json || { echo "FAILED: expected 2 shadow builds (two lights)"; failures=$((failures + 1)); }
+grep -q '"technique": "shadowmap"' shadowed.json || { echo "FAILED: technique not recorded"; failures=$((failures + 1)); }
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || { echo "FAILED: reference.json lacks render_ms"; failures=$((failures + 1)); }
 expect 0 "scenes" -- "$tool" scenes
