@@ -38,13 +38,9 @@ void main()
   }
   vec3 indexOrigin = (u_worldToIndex * vec4(origin, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(direction, 0.0)).xyz;
-  vec3 inverseDirection = 1.0 / indexDirection;
-  vec3 tA = (vec3(0.0) - indexOrigin) * inverseDirection;
-  vec3 tB = (u_dims - 1.0 - indexOrigin) * inverseDirection;
-  vec3 tLow = min(tA, tB);
-  vec3 tHigh = max(tA, tB);
-  float tEnter = max(max(max(tLow.x, tLow.y), tLow.z), 0.0);
-  float tExit = min(min(tHigh.x, tHigh.y), tHigh.z);
+  vec2 inside = boxInterval(indexOrigin, indexDirection);
+  float tEnter = max(inside.x, 0.0);
+  float tExit = inside.y;
 
   float depth = NoHit;
   vec3 indexStep = indexDirection * u_feelerStep;

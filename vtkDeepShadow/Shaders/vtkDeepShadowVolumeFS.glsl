@@ -47,13 +47,9 @@ void main()
   // Box [0, Dims - 1] in index space; t stays world distance (deepshadow::IntersectBox).
   vec3 indexOrigin = (u_worldToIndex * vec4(rayOrigin, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(rayDirection, 0.0)).xyz;
-  vec3 inverseDirection = 1.0 / indexDirection;
-  vec3 tA = (vec3(0.0) - indexOrigin) * inverseDirection;
-  vec3 tB = (u_dims - 1.0 - indexOrigin) * inverseDirection;
-  vec3 tLow = min(tA, tB);
-  vec3 tHigh = max(tA, tB);
-  float t0 = max(max(max(tLow.x, tLow.y), tLow.z), 0.0);
-  float t1 = min(min(tHigh.x, tHigh.y), tHigh.z);
+  vec2 inside = boxInterval(indexOrigin, indexDirection);
+  float t0 = max(inside.x, 0.0);
+  float t1 = inside.y;
 
   //DeepShadow::OpaqueDepth::Impl
 

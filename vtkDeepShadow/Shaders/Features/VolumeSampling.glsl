@@ -12,12 +12,19 @@ float sampleScalar(vec3 index)
   return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
 }
 
-// Parametric exit of the ray index + t * direction from the box [0, Dims - 1] (t >= 0).
-float boxExit(vec3 index, vec3 direction)
+// Parametric interval of the ray index + t * direction inside the box [0, Dims - 1]
+// (deepshadow::IntersectBox); empty when !(entry < exit).
+vec2 boxInterval(vec3 index, vec3 direction)
 {
   vec3 inverseDirection = 1.0 / direction;
   vec3 tA = (vec3(0.0) - index) * inverseDirection;
   vec3 tB = (u_dims - 1.0 - index) * inverseDirection;
+  vec3 tLow = min(tA, tB);
   vec3 tHigh = max(tA, tB);
-  return min(min(tHigh.x, tHigh.y), tHigh.z);
+  return vec2(max(max(tLow.x, tLow.y), tLow.z), min(min(tHigh.x, tHigh.y), tHigh.z));
+}
+
+float boxExit(vec3 index, vec3 direction)
+{
+  return boxInterval(index, direction).y;
 }
