@@ -8,6 +8,7 @@
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
@@ -60,6 +61,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     run.FrameMs.push_back(RenderFrame(setup.Window));
   }
   vtkDeepShadowVolumeMapper* mapper = setup.Mapper;
+  auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(setup.Technique);
   run.Stats.Set("command", options.Command)
     .Set("scene", setup.Name)
     .Set("technique", options.Technique)
@@ -71,6 +73,10 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("render_ms_frames", run.FrameMs)
     .Set("first_frame_ms", run.FirstFrameMs)
     .Set("shadow_bytes", setup.Technique ? setup.Technique->GetShadowBytes() : 0LL)
+    .Set("dsm_nodes_avg", dsm ? dsm->GetNodesAverage() : 0.0)
+    .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
+    .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
+    .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0)
     .Set("shadow_builds", mapper->GetShadowBuilds())
     .Set("passes", std::vector<std::string>{ "volume" })
     .Set("shader_features", mapper->GetShaderFeatures())

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -49,7 +50,13 @@ std::vector<std::string> Split(const std::string& text, char separator)
 
 std::vector<std::string> TechniqueNames()
 {
-  return { "none", "rays", "rays-opaque", "rays-cached", "rays-opaque-cached", "shadowmap" };
+  std::vector<std::string> names{ "none" };
+  for (const char* base : { "rays", "rays-opaque", "rays-color", "shadowmap", "dsm", "dsm-color", "dsm3", "cssm" })
+  {
+    names.push_back(base);
+    names.push_back(std::string(base) + "-cached");
+  }
+  return names;
 }
 
 namespace
@@ -127,6 +134,156 @@ LightSpec ParseLight(const std::string& text)
 }
 }
 
+namespace
+{
+// The options that choose and tune a shadow technique; also the keys of a technique spec.
+bool ParseTechniqueOption(Options& o, const std::string& key, const std::function<std::string()>& next)
+{
+  if (key == "--technique")
+  {
+    o.Technique = next();
+    const auto names = TechniqueNames();
+    if (std::find(names.begin(), names.end(), o.Technique) == names.end())
+    {
+      std::string list;
+      for (const auto& name : names)
+      {
+        list += (list.empty() ? "" : ", ") + name;
+      }
+      throw UsageError("unknown technique '" + o.Technique + "' (available: " + list + ")");
+    }
+    return true;
+  }
+  if (key == "--shadow-threshold")
+  {
+    o.ShadowThreshold = ParseNumber(key, next());
+    if (o.ShadowThreshold < 0.0 || o.ShadowThreshold > 1.0)
+    {
+      throw UsageError("--shadow-threshold must be in [0, 1]");
+    }
+    return true;
+  }
+  if (key == "--threshold-on")
+  {
+    const std::string mode = next();
+    if (mode != "opacity" && mode != "scalar")
+    {
+      throw UsageError("--threshold-on must be opacity or scalar, got '" + mode + "'");
+    }
+    o.ThresholdOnScalar = mode == "scalar";
+    return true;
+  }
+  if (key == "--shadow-step-factor")
+  {
+    o.ShadowStepFactor = ParseNumber(key, next());
+    if (o.ShadowStepFactor < 0.01 || o.ShadowStepFactor > 100.0)
+    {
+      throw UsageError("--shadow-step-factor must be in [0.01, 100]");
+    }
+    return true;
+  }
+  if (key == "--shadow-volume-size")
+  {
+    o.ShadowVolumeSize = ParseInteger(key, next(), 2, 2048);
+    return true;
+  }
+  if (key == "--shadow-map-size")
+  {
+    o.ShadowMapSize = ParseInteger(key, next(), 1, 65536);
+    return true;
+  }
+  if (key == "--pcf")
+  {
+    o.Filter = next();
+    if (o.Filter != "none" && o.Filter != "2x2" && o.Filter != "3x3" && o.Filter != "poisson")
+    {
+      throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + o.Filter + "'");
+    }
+    return true;
+  }
+  if (key == "--epsilon")
+  {
+    o.Epsilon = ParseNumber(key, next());
+    if (!(o.Epsilon >= 0.0 && o.Epsilon <= 1.0))
+    {
+      throw UsageError("--epsilon must be in [0, 1]");
+    }
+    return true;
+  }
+  if (key == "--layers")
+  {
+    o.Layers = ParseInteger(key, next(), 1, 256);
+    return true;
+  }
+  if (key == "--opacity-levels")
+  {
+    const auto parts = Split(next(), ',');
+    if (parts.size() != 3)
+    {
+      throw UsageError("--opacity-levels expects A,B,C");
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      o.OpacityLevels[k] = ParseNumber(key, parts[k]);
+    }
+    if (!(o.OpacityLevels[0] > 0.0 && o.OpacityLevels[0] < o.OpacityLevels[1] &&
+          o.OpacityLevels[1] < o.OpacityLevels[2] && o.OpacityLevels[2] <= 1.0))
+    {
+      throw UsageError("--opacity-levels must increase strictly within (0, 1]");
+    }
+    return true;
+  }
+  if (key == "--cssm-offsets")
+  {
+    o.CssmOffsets = ParseInteger(key, next(), 7, 21);
+    if (o.CssmOffsets != 7 && o.CssmOffsets != 13 && o.CssmOffsets != 21)
+    {
+      throw UsageError("--cssm-offsets must be 7, 13 or 21");
+    }
+    return true;
+  }
+  if (key == "--cssm-seed")
+  {
+    o.CssmSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
+    return true;
+  }
+  if (key == "--cssm-photons")
+  {
+    o.CssmPhotons = ParseInteger(key, next(), 1, 64);
+    return true;
+  }
+  if (key == "--bias")
+  {
+    o.Bias = ParseNumber(key, next());
+    if (o.Bias < 0.0)
+    {
+      throw UsageError("--bias must not be negative");
+    }
+    return true;
+  }
+  return false;
+}
+}
+
+Options WithTechniqueSpec(const Options& base, const std::string& spec)
+{
+  Options o = base;
+  const auto parts = Split(spec, ':');
+  ParseTechniqueOption(o, "--technique", [&]() { return parts.empty() ? std::string() : parts[0]; });
+  for (size_t k = 1; k < parts.size(); ++k)
+  {
+    const size_t equals = parts[k].find('=');
+    const std::string key = "--" + parts[k].substr(0, equals);
+    if (equals == std::string::npos || key == "--technique" ||
+      !ParseTechniqueOption(o, key, [&]() { return parts[k].substr(equals + 1); }))
+    {
+      throw UsageError("'" + parts[k] + "' in technique spec '" + spec +
+        "' is not OPTION=VALUE for a technique option (e.g. dsm:layers=4)");
+    }
+  }
+  return o;
+}
+
 std::string Options::Usage()
 {
   return R"(deepshadow: volume rendering with shadows, headless (vtkDeepShadow)
@@ -157,7 +314,9 @@ Commands:
   shadow-bench  Per scene and technique: frame time when only the camera moves and when
               the light moves, as ratios to the unshadowed frame of the same run, build time,
               memory, and the error against the ground truth (CPU, translucent shadow rays at
-              a quarter step) at --error-size (default 256x256).
+              a quarter step, coloured for coloured techniques) at --error-size (default
+              256x256). --techniques takes technique specs, NAME[:OPTION=VALUE...] with any
+              technique option below without its dashes, e.g. dsm:layers=2:epsilon=0.05.
   scenes      Lists the standard scenes.
 
 SCENE (default: --scene box):
@@ -178,13 +337,23 @@ VIEW:
 RENDERING:
   --sample-distance D     world distance between samples (default: half the smallest voxel edge)
   --technique NAME        shadow technique: none (default), rays (translucent shadow
-                          rays), rays-opaque, rays-cached, rays-opaque-cached, shadowmap
+                          rays), rays-opaque, rays-color (coloured), shadowmap, dsm (deep
+                          shadow map), dsm-color, dsm3 (opacity levels), cssm (coloured
+                          stochastic shadow map); NAME-cached caches any of them in a 3D
+                          shadow volume (e.g. dsm-cached)
   --shadow-threshold T    opaque occluder threshold in [0, 1] (default 0.5): opacity, or
                           the normalized scalar with --threshold-on scalar
   --threshold-on opacity|scalar
   --shadow-step-factor F  feeler / light-ray step as a factor of the sample distance (default 1)
-  --shadow-volume-size N  rays-cached: shadow volume nodes along the longest axis (default 128)
-  --shadow-map-size N     shadowmap: texels per side (default 512)
+  --shadow-volume-size N  *-cached: shadow volume nodes along the longest axis (default 128)
+  --shadow-map-size N     shadowmap, dsm*, cssm: texels per side (default 512)
+  --epsilon E             dsm: bound on the compressed visibility's error, in [0, 1]
+                          (default 0.01)
+  --layers N              dsm: nodes per texel, 1 to 256 (default 8)
+  --opacity-levels A,B,C  dsm3: opacity levels (default 0.1,0.5,0.9)
+  --cssm-offsets M        cssm: texel offsets averaged per lookup, 7, 13 or 21 (default 13)
+  --cssm-seed S           cssm: seed of the random thresholds (default 0)
+  --cssm-photons N        cssm: photons per texel, 1 to 64 (default 1)
   --pcf none|2x2|3x3|poisson   shadowmap filter (default 3x3)
   --bias B                shadowmap depth bias in feeler steps (default 2)
   --no-shading            no gradient shading (emission and absorption only)
@@ -327,68 +496,8 @@ Options Options::Parse(int argc, char* argv[])
     {
       o.Lights.push_back(ParseLight(next()));
     }
-    else if (key == "--technique")
+    else if (ParseTechniqueOption(o, key, next))
     {
-      o.Technique = next();
-      const auto names = TechniqueNames();
-      if (std::find(names.begin(), names.end(), o.Technique) == names.end())
-      {
-        std::string list;
-        for (const auto& name : names)
-        {
-          list += (list.empty() ? "" : ", ") + name;
-        }
-        throw UsageError("unknown technique '" + o.Technique + "' (available: " + list + ")");
-      }
-    }
-    else if (key == "--shadow-threshold")
-    {
-      o.ShadowThreshold = ParseNumber(key, next());
-      if (o.ShadowThreshold < 0.0 || o.ShadowThreshold > 1.0)
-      {
-        throw UsageError("--shadow-threshold must be in [0, 1]");
-      }
-    }
-    else if (key == "--threshold-on")
-    {
-      const std::string mode = next();
-      if (mode != "opacity" && mode != "scalar")
-      {
-        throw UsageError("--threshold-on must be opacity or scalar, got '" + mode + "'");
-      }
-      o.ThresholdOnScalar = mode == "scalar";
-    }
-    else if (key == "--shadow-step-factor")
-    {
-      o.ShadowStepFactor = ParseNumber(key, next());
-      if (o.ShadowStepFactor < 0.01 || o.ShadowStepFactor > 100.0)
-      {
-        throw UsageError("--shadow-step-factor must be in [0.01, 100]");
-      }
-    }
-    else if (key == "--shadow-volume-size")
-    {
-      o.ShadowVolumeSize = ParseInteger(key, next(), 2, 2048);
-    }
-    else if (key == "--shadow-map-size")
-    {
-      o.ShadowMapSize = ParseInteger(key, next(), 1, 65536);
-    }
-    else if (key == "--pcf")
-    {
-      o.Filter = next();
-      if (o.Filter != "none" && o.Filter != "2x2" && o.Filter != "3x3" && o.Filter != "poisson")
-      {
-        throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + o.Filter + "'");
-      }
-    }
-    else if (key == "--bias")
-    {
-      o.Bias = ParseNumber(key, next());
-      if (o.Bias < 0.0)
-      {
-        throw UsageError("--bias must not be negative");
-      }
     }
     else if (key == "--ground-truth")
     {
@@ -450,13 +559,9 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--techniques")
     {
       o.BenchTechniques = Split(next(), ',');
-      const auto names = TechniqueNames();
-      for (const auto& t : o.BenchTechniques)
+      for (const auto& spec : o.BenchTechniques)
       {
-        if (std::find(names.begin(), names.end(), t) == names.end())
-        {
-          throw UsageError("unknown technique '" + t + "' in --techniques");
-        }
+        WithTechniqueSpec(o, spec); // throws for a bad spec
       }
     }
     else if (key == "--error-size")

@@ -33,7 +33,7 @@ struct LightSpec
   double Intensity = 1.0;
 };
 
-/** Techniques the tool can choose (see --technique). */
+/** Techniques the tool can choose (see --technique): each base name, and NAME-cached. */
 std::vector<std::string> TechniqueNames();
 
 struct Options
@@ -61,6 +61,12 @@ struct Options
   int ShadowMapSize = 512;
   std::string Filter = "3x3";
   double Bias = 2.0;
+  double Epsilon = 0.01;
+  int Layers = 8;
+  std::array<double, 3> OpacityLevels{ { 0.1, 0.5, 0.9 } };
+  int CssmOffsets = 13;
+  unsigned int CssmSeed = 0;
+  int CssmPhotons = 1;
   std::string Backend; // "" = VTK_DEEPSHADOW_BACKEND or OSMesa
 
   // Outputs and measurement.
@@ -87,6 +93,13 @@ struct Options
   static Options Parse(int argc, char* argv[]);
   static std::string Usage();
 };
+
+/**
+ * A technique spec, NAME[:OPTION=VALUE...] with OPTION a technique option without its dashes
+ * (dsm:layers=2:shadow-map-size=1024, cssm:cssm-photons=4): `base` with them applied.
+ * Throws UsageError.
+ */
+Options WithTechniqueSpec(const Options& base, const std::string& spec);
 
 }
 }

@@ -1,9 +1,12 @@
 #include "SceneSetup.h"
 
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowOpacityLevelsTechnique.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowStochasticShadowMapTechnique.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumeMapper.h"
 #include "vtkDeepShadowVolumeReader.h"
@@ -60,25 +63,56 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
 {
   vtkSmartPointer<vtkDeepShadowTechnique> technique;
-  const std::string& name = options.Technique;
-  if (name.rfind("rays", 0) == 0)
+  std::string name = options.Technique;
+  const std::string cachedSuffix = "-cached";
+  const bool cached = name.size() > cachedSuffix.size() &&
+    name.compare(name.size() - cachedSuffix.size(), cachedSuffix.size(), cachedSuffix) == 0;
+  if (cached)
+  {
+    name.resize(name.size() - cachedSuffix.size());
+  }
+  auto lightSpace = [&](vtkDeepShadowLightSpaceTechnique* map) {
+    map->SetMapSize(options.ShadowMapSize);
+    technique = map;
+  };
+  if (name == "rays" || name == "rays-opaque" || name == "rays-color")
   {
     auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
-    rays->SetOpaque(name.find("opaque") != std::string::npos);
-    rays->SetCached(name.find("cached") != std::string::npos);
-    rays->SetShadowVolumeSize(options.ShadowVolumeSize);
+    rays->SetOpaque(name == "rays-opaque");
+    rays->SetColored(name == "rays-color");
     technique = rays;
   }
   else if (name == "shadowmap")
   {
     auto map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
-    map->SetMapSize(options.ShadowMapSize);
     map->SetBias(options.Bias);
     map->SetFilter(options.Filter == "none" ? vtkDeepShadowShadowMapTechnique::NoFilter
         : options.Filter == "2x2"           ? vtkDeepShadowShadowMapTechnique::PCF2x2
         : options.Filter == "3x3"           ? vtkDeepShadowShadowMapTechnique::PCF3x3
                                             : vtkDeepShadowShadowMapTechnique::PoissonDisc);
-    technique = map;
+    lightSpace(map);
+  }
+  else if (name == "dsm" || name == "dsm-color")
+  {
+    auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
+    dsm->SetEpsilon(options.Epsilon);
+    dsm->SetLayers(options.Layers);
+    dsm->SetColored(name == "dsm-color");
+    lightSpace(dsm);
+  }
+  else if (name == "dsm3")
+  {
+    auto levels = vtkSmartPointer<vtkDeepShadowOpacityLevelsTechnique>::New();
+    levels->SetLevels(options.OpacityLevels[0], options.OpacityLevels[1], options.OpacityLevels[2]);
+    lightSpace(levels);
+  }
+  else if (name == "cssm")
+  {
+    auto cssm = vtkSmartPointer<vtkDeepShadowStochasticShadowMapTechnique>::New();
+    cssm->SetOffsets(options.CssmOffsets);
+    cssm->SetSeed(options.CssmSeed);
+    cssm->SetPhotons(options.CssmPhotons);
+    lightSpace(cssm);
   }
   if (technique)
   {
@@ -86,6 +120,8 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
     technique->SetThresholdMode(options.ThresholdOnScalar ? vtkDeepShadowTechnique::ScalarThreshold
                                                           : vtkDeepShadowTechnique::OpacityThreshold);
     technique->SetStepFactor(options.ShadowStepFactor);
+    technique->SetCached(cached);
+    technique->SetShadowVolumeSize(options.ShadowVolumeSize);
   }
   return technique;
 }

@@ -5,13 +5,19 @@
 //     the key light turns (structures rebuilt every frame), as ratios to the baseline;
 //   - the last build's time and the shadow memory;
 //   - RMSE and maximum error of the image against the ground truth: the CPU reference with
-//     translucent shadow rays at a quarter step, at --error-size.
+//     translucent shadow rays at a quarter step (coloured for coloured techniques), at
+//     --error-size;
+//   - for deep shadow maps, the nodes needed per texel (average and maximum, as in Ropinski
+//     et al.'s Table 4).
 #include "Commands.h"
 #include "Json.h"
 #include "SceneSetup.h"
 
 #include "Image.h"
+#include "Shadows.h"
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
@@ -60,26 +66,21 @@ vtkLight* KeyLight(vtkRenderer* renderer)
 {
   return vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
 }
+
+// The techniques measured when --techniques is not given.
+const std::vector<std::string> DefaultTechniques{ "rays", "rays-cached", "rays-opaque",
+  "rays-color", "shadowmap", "dsm", "dsm-cached", "dsm-color", "dsm3", "cssm", "cssm-cached" };
 }
 
 int RunShadowBench(const Options& options)
 {
   const std::vector<std::string> scenes =
     options.BenchScenes.empty() ? vtkDeepShadowStandardScene::GetSceneNames() : options.BenchScenes;
-  std::vector<std::string> techniques = options.BenchTechniques;
-  if (techniques.empty())
-  {
-    for (const auto& name : TechniqueNames())
-    {
-      if (name != "none")
-      {
-        techniques.push_back(name);
-      }
-    }
-  }
+  const std::vector<std::string> techniques =
+    options.BenchTechniques.empty() ? DefaultTechniques : options.BenchTechniques;
 
-  std::printf("%-8s %-18s %9s %8s %8s %9s %11s %9s %8s\n", "scene", "technique", "frame_ms",
-    "camera", "light", "build_ms", "bytes", "rmse", "max");
+  std::printf("%-8s %-24s %9s %8s %8s %9s %11s %9s %8s %s\n", "scene", "technique", "frame_ms",
+    "camera", "light", "build_ms", "bytes", "rmse", "max", "nodes avg/max");
   std::vector<Json> rows;
   for (const std::string& name : scenes)
   {
@@ -122,29 +123,44 @@ int RunShadowBench(const Options& options)
     const double baseline = TimeFrames(setup, options.Frames, orbit);
     restore();
 
-    // The ground truth at the error size, from the start view.
-    setup.Window->SetSize(options.ErrorWidth, options.ErrorHeight);
-    RenderFrame(setup.Window); // lights and clipping as the GPU frames have them
-    vtkNew<vtkDeepShadowReferenceRenderer> reference;
-    reference->SetShadows(vtkDeepShadowReferenceRenderer::GroundTruthShadows);
-    Image truth;
-    const auto truthStart = std::chrono::steady_clock::now();
-    reference->Render(setup.Renderer, truth);
-    const double truthMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - truthStart).count();
-    setup.Window->SetSize(options.Width, options.Height);
+    // The ground truths at the error size, from the start view: grey, and coloured once a
+    // coloured technique asks for it.
+    double truthMs = 0.0;
+    auto groundTruth = [&](bool colored) {
+      vtkNew<vtkDeepShadowRayTechnique> model; // says only grey or coloured
+      model->SetColored(colored);
+      vtkSmartPointer<vtkDeepShadowTechnique> current = setup.Mapper->GetShadowTechnique();
+      setup.Mapper->SetShadowTechnique(model);
+      setup.Window->SetSize(options.ErrorWidth, options.ErrorHeight);
+      RenderFrame(setup.Window); // lights and clipping as the GPU frames have them
+      vtkNew<vtkDeepShadowReferenceRenderer> reference;
+      reference->SetShadows(vtkDeepShadowReferenceRenderer::GroundTruthShadows);
+      Image truth;
+      const auto start = std::chrono::steady_clock::now();
+      reference->Render(setup.Renderer, truth);
+      truthMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      setup.Window->SetSize(options.Width, options.Height);
+      setup.Mapper->SetShadowTechnique(current);
+      return truth;
+    };
+    const Image truth = groundTruth(false);
+    Image coloredTruth;
     const Image unshadowed = CaptureAt(setup, options.ErrorWidth, options.ErrorHeight, options.Width, options.Height);
     const ImageDifference unshadowedError = Compare(unshadowed, truth);
-    std::printf("%-8s %-18s %9.1f %8s %8s %9s %11s %9.5f %8.4f   (ground truth %.0f ms)\n",
+    std::printf("%-8s %-24s %9.1f %8s %8s %9s %11s %9.5f %8.4f   (ground truth %.0f ms)\n",
       name.c_str(), "none", baseline, "1.00", "1.00", "-", "0", unshadowedError.RMSE,
       unshadowedError.MaxAbs, truthMs);
     std::fflush(stdout);
 
     for (const std::string& technique : techniques)
     {
-      Options techniqueOptions = sceneOptions;
-      techniqueOptions.Technique = technique;
+      const Options techniqueOptions = WithTechniqueSpec(sceneOptions, technique);
       auto shadow = MakeTechnique(techniqueOptions);
+      const bool colored = shadow->GetParameters().IsColored();
+      if (colored && coloredTruth.RGB.empty())
+      {
+        coloredTruth = groundTruth(true);
+      }
       setup.Mapper->SetShadowTechnique(shadow);
       restore();
       RenderFrame(setup.Window); // builds
@@ -157,10 +173,16 @@ int RunShadowBench(const Options& options)
       const double buildMs = shadow->GetLastBuildMilliseconds();
       restore();
       const Image image = CaptureAt(setup, options.ErrorWidth, options.ErrorHeight, options.Width, options.Height);
-      const ImageDifference error = Compare(image, truth);
-      std::printf("%-8s %-18s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f%s\n", name.c_str(),
+      const ImageDifference error = Compare(image, colored ? coloredTruth : truth);
+      auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(shadow);
+      char nodes[64] = "";
+      if (dsm)
+      {
+        std::snprintf(nodes, sizeof(nodes), "%.2f/%d", dsm->GetNodesAverage(), dsm->GetNodesMax());
+      }
+      std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", name.c_str(),
         technique.c_str(), cameraMs, cameraMs / baseline, lightMs / baseline, buildMs,
-        shadow->GetShadowBytes(), error.RMSE, error.MaxAbs,
+        shadow->GetShadowBytes(), error.RMSE, error.MaxAbs, nodes,
         rebuiltForCamera ? "  (rebuilt when the camera moved!)" : "");
       std::fflush(stdout);
       Json row;
@@ -173,11 +195,14 @@ int RunShadowBench(const Options& options)
         .Set("light_ratio", lightMs / baseline)
         .Set("build_ms", buildMs)
         .Set("shadow_bytes", shadow->GetShadowBytes())
+        .Set("colored", colored)
         .Set("rmse", error.RMSE)
         .Set("max_abs", error.MaxAbs)
         .Set("unshadowed_rmse", unshadowedError.RMSE)
         .Set("ground_truth_ms", truthMs)
-        .Set("rebuilt_when_camera_moved", rebuiltForCamera);
+        .Set("rebuilt_when_camera_moved", rebuiltForCamera)
+        .Set("dsm_nodes_avg", dsm ? dsm->GetNodesAverage() : 0.0)
+        .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0);
       rows.push_back(row);
     }
     setup.Mapper->SetShadowTechnique(nullptr);

@@ -6,18 +6,25 @@
 #include "Image.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowReferenceRenderer.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkLight.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <glm/common.hpp>
 
@@ -182,6 +189,86 @@ inline vtkSmartPointer<vtkImageData> MakeShadowVolume(int n = 48)
       }
   return image;
 }
+
+/**
+ * The scene the shadow tests share: MakeShadowVolume() with a coloured transfer function,
+ * shaded, lit from above and slightly off axis, seen from the side at 160x160.
+ */
+struct ShadowScene
+{
+  vtkSmartPointer<vtkImageData> Data = MakeShadowVolume();
+  vtkNew<vtkColorTransferFunction> Color;
+  vtkNew<vtkPiecewiseFunction> Opacity;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkDeepShadowRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkDeepShadowVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkLight> Light;
+
+  ShadowScene()
+  {
+    this->Color->AddRGBPoint(0, 1.0, 1.0, 1.0);
+    this->Color->AddRGBPoint(90, 0.9, 0.85, 0.7);
+    this->Color->AddRGBPoint(140, 0.5, 0.7, 1.0);
+    this->Color->AddRGBPoint(200, 1.0, 0.4, 0.3);
+    this->Opacity->AddPoint(0, 0.0);
+    this->Opacity->AddPoint(40, 0.0);
+    this->Opacity->AddPoint(90, 0.25);
+    this->Opacity->AddPoint(140, 0.12);
+    this->Opacity->AddPoint(200, 0.9);
+    this->Property->SetColor(this->Color);
+    this->Property->SetScalarOpacity(this->Opacity);
+    this->Property->ShadeOn();
+    this->Property->SetAmbient(0.2);
+    this->Window->SetSize(160, 160);
+    this->Renderer->SetBackground(0.05, 0.05, 0.08);
+    this->Window->AddRenderer(this->Renderer);
+    this->Mapper->SetInputData(this->Data);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Light->SetLightTypeToSceneLight();
+    this->Light->SetPosition(0.3, 0.2, 1.0); // from above, slightly off axis
+    this->Light->SetFocalPoint(0.0, 0.0, 0.0);
+    this->Renderer->AddLight(this->Light);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(0.0, -3.0, 1.6);
+    camera->SetFocalPoint(0.0, 0.0, -0.2);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    this->Renderer->ResetCamera();
+    camera->Zoom(1.3);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  /**
+   * Renders with `technique` and compares the picture with the CPU twin's within the given
+   * tolerance (see WithinTolerance); the GPU's picture is left in `gpu`.
+   */
+  bool MatchesTwin(const char* name, vtkDeepShadowTechnique* technique, double maxRMSE,
+    double threshold, double maxFraction, Image& gpu)
+  {
+    this->Mapper->SetShadowTechnique(technique);
+    this->Window->Render();
+    if (!this->Mapper->GetLastError().empty())
+    {
+      std::printf("%s: %s FAILED\n", name, this->Mapper->GetLastError().c_str());
+      return false;
+    }
+    gpu = Grab(this->Window);
+    return WithinTolerance(name, gpu, Reference(this->Renderer, true), maxRMSE, threshold, maxFraction);
+  }
+
+  /** Mean colour of the floor in the ball's shadow (left of centre, lower quarter). */
+  static glm::dvec3 FloorUnderBall(const Image& image)
+  {
+    glm::dvec3 sum(0.0);
+    for (int y = 30; y < 40; ++y)
+      for (int x = 44; x < 54; ++x)
+        sum += image.At(x, y);
+    return sum / 100.0;
+  }
+};
 
 }
 }

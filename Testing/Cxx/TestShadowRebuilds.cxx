@@ -1,9 +1,12 @@
 // Shadow structures are rebuilt only when what they depend on changed, per light, and never
 // because the camera moved; shader code exists only for the technique chosen.
 #include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
+#include "vtkDeepShadowOpacityLevelsTechnique.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowStochasticShadowMapTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -12,6 +15,8 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <functional>
 
 namespace
 {
@@ -76,7 +81,7 @@ int TestShadowRebuilds(int, char*[])
   mapper->SetShadowTechnique(map);
   window->Render();
   const std::string& source = mapper->GetFragmentShaderSource();
-  const bool mapOnly = Contains(source, "mapVisibility") && !Contains(source, "cachedVisibility") &&
+  const bool mapOnly = Contains(source, "filteredShadow") && !Contains(source, "u_shadowVolume") &&
     !Contains(source, "feelerTowardsLight");
   std::printf("shadow-map shader holds only the map lookup: %s\n", mapOnly ? "ok" : "FAILED");
   ok = mapOnly && ok;
@@ -136,12 +141,98 @@ int TestShadowRebuilds(int, char*[])
   key->SetPosition(0.5, 0.4, 1.0);
   window->Render();
   ok = Expect("light moved", mapper, 2) && ok;
-  ok = Contains(mapper->GetFragmentShaderSource(), "cachedVisibility") &&
+  ok = Contains(mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
     !Contains(mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
 
   rays->CachedOff();
   window->Render();
   ok = Expect("uncached rays build nothing", mapper, 2) && ok;
   ok = Contains(mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
+
+  // The other light-space techniques, uncached and cached, with both lights casting: the
+  // same rules, their own parameters, and only their own lookup in the shader.
+  fill->SetShadowAttenuation(1.0);
+  vtkNew<vtkDeepShadowDeepShadowMapTechnique> dsm, dsmColor;
+  vtkNew<vtkDeepShadowOpacityLevelsTechnique> levels;
+  vtkNew<vtkDeepShadowStochasticShadowMapTechnique> cssm;
+  dsmColor->ColoredOn();
+  const char* lookups[] = { "filteredShadow", "dsmTexel", "levelsOpacity", "CSSM_OFFSET",
+    "u_shadowVolume", "feelerTowardsLight" };
+  const struct
+  {
+    vtkDeepShadowLightSpaceTechnique* Technique;
+    const char* Lookup;
+    bool Colored;
+    std::function<void()> ChangeStructure; // a parameter the maps depend on
+    std::function<void()> ChangeLookup;    // one only the lookup depends on (may be none)
+  } techniques[] = {
+    { dsm, "dsmTexel", false, [&] { dsm->SetEpsilon(0.05); }, nullptr },
+    { dsmColor, "dsmTexel", true, [&] { dsmColor->SetLayers(4); }, nullptr },
+    { levels, "levelsOpacity", false, [&] { levels->SetLevels(0.2, 0.5, 0.8); }, nullptr },
+    { cssm, "CSSM_OFFSET", true, [&] { cssm->SetSeed(3); }, [&] { cssm->SetOffsets(21); } },
+  };
+  double move = 0.0;
+  for (const auto& t : techniques)
+  {
+    vtkDeepShadowLightSpaceTechnique* technique = t.Technique;
+    move += 0.05;
+    technique->SetMapSize(32);
+    technique->SetShadowVolumeSize(16);
+    mapper->SetShadowTechnique(technique);
+    const std::string name = technique->GetName();
+    auto step = [&](const std::string& what, int expected) {
+      const int before = technique->GetBuildCount();
+      window->Render();
+      const int built = technique->GetBuildCount() - before;
+      const bool good = built == expected;
+      std::printf("%-10s %-42s built %d (expected %d) %s\n", name.c_str(), what.c_str(), built,
+        expected, good ? "ok" : "FAILED");
+      ok = good && ok;
+    };
+    step("first render: both lights", 2);
+    const std::string& source = mapper->GetFragmentShaderSource();
+    for (const char* lookup : lookups)
+    {
+      if (Contains(source, lookup) != (std::string(lookup) == t.Lookup))
+      {
+        std::printf("%s: the shader %s %s: FAILED\n", name.c_str(),
+          Contains(source, lookup) ? "holds" : "lacks", lookup);
+        ok = false;
+      }
+    }
+    renderer->GetActiveCamera()->Azimuth(25.0);
+    step("camera moved", 0);
+    fill->SetShadowAttenuation(0.5);
+    step("a light's shadow attenuation changed", 0);
+    color->AddRGBPoint(200, 1.0, 0.2, 0.2);
+    step(t.Colored ? "colour changed: both (coloured)" : "colour changed: nothing (grey)", t.Colored ? 2 : 0);
+    color->RemovePoint(200);
+    step("colour restored", t.Colored ? 2 : 0);
+    t.ChangeStructure();
+    step("own parameter changed: both", 2);
+    key->SetPosition(0.2, 0.3 + move, 1.0);
+    step("key light moved: its own", 1);
+    if (t.ChangeLookup)
+    {
+      t.ChangeLookup();
+      step("lookup-only parameter changed: nothing", 0);
+    }
+    technique->CachedOn();
+    step("cached: both caches", 2);
+    ok = Contains(mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
+      !Contains(mapper->GetFragmentShaderSource(), t.Lookup) && ok;
+    renderer->GetActiveCamera()->Azimuth(25.0);
+    step("cached, camera moved", 0);
+    technique->SetShadowVolumeSize(20);
+    step("cached, shadow volume size changed: both", 2);
+    if (t.ChangeLookup)
+    {
+      cssm->SetOffsets(7);
+      step("cached, lookup-only parameter changed: caches", 2);
+    }
+    fill->SetPosition(-1.0, 0.4 + move, 0.5);
+    step("cached, fill light moved: its own", 1);
+    technique->CachedOff();
+  }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -13,13 +13,8 @@
 #include "vtkDeepShadowShadowMapTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
-#include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkLight.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
 using deepshadow::testing::Grab;
 using deepshadow::testing::WithinTolerance;
@@ -51,61 +46,15 @@ vtkSmartPointer<vtkDeepShadowTechnique> Map(int filter)
   map->SetThreshold(0.3);
   return map;
 }
-
-// Mean red of a pixel block (the floor under the ball, seen from this camera).
-double Mean(const deepshadow::Image& image, int x0, int y0, int size)
-{
-  double sum = 0.0;
-  for (int y = y0; y < y0 + size; ++y)
-    for (int x = x0; x < x0 + size; ++x)
-      sum += image.At(x, y).x;
-  return sum / (size * size);
-}
 }
 
 int TestShadowTechniques(int argc, char* argv[])
 {
-  auto data = deepshadow::testing::MakeShadowVolume();
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0, 1.0, 1.0, 1.0);
-  color->AddRGBPoint(90, 0.9, 0.85, 0.7);
-  color->AddRGBPoint(140, 0.5, 0.7, 1.0);
-  color->AddRGBPoint(200, 1.0, 0.4, 0.3);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0, 0.0);
-  opacity->AddPoint(40, 0.0);
-  opacity->AddPoint(90, 0.25);
-  opacity->AddPoint(140, 0.12);
-  opacity->AddPoint(200, 0.9);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->ShadeOn();
-  property->SetAmbient(0.2);
-
-  vtkNew<vtkDeepShadowRenderWindow> window;
-  window->SetSize(160, 160);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.05, 0.05, 0.08);
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(data);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPosition(0.3, 0.2, 1.0); // from above, slightly off axis
-  light->SetFocalPoint(0.0, 0.0, 0.0);
-  renderer->AddLight(light);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, -3.0, 1.6);
-  camera->SetFocalPoint(0.0, 0.0, -0.2);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  renderer->ResetCamera();
-  camera->Zoom(1.3);
-  renderer->ResetCameraClippingRange();
+  deepshadow::testing::ShadowScene scene;
+  vtkDeepShadowRenderWindow* window = scene.Window;
+  vtkRenderer* renderer = scene.Renderer;
+  vtkDeepShadowVolumeMapper* mapper = scene.Mapper;
+  vtkVolumeProperty* property = scene.Property;
 
   window->Render();
   const deepshadow::Image unshadowed = Grab(window);
@@ -120,19 +69,11 @@ int TestShadowTechniques(int argc, char* argv[])
   bool ok = true;
   for (const Case& c : cases)
   {
-    mapper->SetShadowTechnique(c.Technique);
-    window->Render();
-    if (!mapper->GetLastError().empty())
-    {
-      std::printf("%s: %s\n", c.Name, mapper->GetLastError().c_str());
-      return EXIT_FAILURE;
-    }
-    const deepshadow::Image gpu = Grab(window);
-    ok = WithinTolerance(c.Name, gpu, deepshadow::testing::Reference(renderer, true),
-           (c.Binary ? 4.0 : 2.0) / 255.0, (c.Binary ? 24.0 : 12.0) / 255.0,
-           c.Binary ? 0.03 : 0.01) && ok;
-    // The floor in the ball's shadow (left of centre, lower quarter) darkens.
-    const double before = Mean(unshadowed, 44, 30, 10), after = Mean(gpu, 44, 30, 10);
+    deepshadow::Image gpu;
+    ok = scene.MatchesTwin(c.Name, c.Technique, (c.Binary ? 4.0 : 2.0) / 255.0,
+           (c.Binary ? 24.0 : 12.0) / 255.0, c.Binary ? 0.03 : 0.01, gpu) && ok;
+    // The floor in the ball's shadow darkens.
+    const double before = scene.FloorUnderBall(unshadowed).r, after = scene.FloorUnderBall(gpu).r;
     std::printf("  floor under the ball: %.3f without shadows, %.3f with\n", before, after);
     ok = after < 0.5 * before && ok;
   }

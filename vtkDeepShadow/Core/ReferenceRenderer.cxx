@@ -44,14 +44,20 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   {
     return prepared;
   }
+  const TransferFunction& casting = volume.ShadowTransfer ? *volume.ShadowTransfer : volume.Transfer;
   ShadowCaster caster;
   caster.Grid = volume.Grid.get();
-  caster.Transfer = &volume.Transfer;
+  caster.Transfer = &casting;
   caster.Sampling = volume.Sampling;
   caster.Empty = prepared.Empty.get();
+  if (volume.ShadowTransfer && settings.EmptySpaceSkipping)
+  {
+    prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
+    caster.Empty = prepared.ShadowEmpty.get();
+  }
   if (settings.TransferTableSize > 0)
   {
-    prepared.FeelerTable = std::make_unique<TransferTable>(TransferTable::Sample(volume.Transfer,
+    prepared.FeelerTable = std::make_unique<TransferTable>(TransferTable::Sample(casting,
       range.x, range.y, settings.TransferTableSize, volume.Shadows.StepFactor * settings.SampleDistance));
     caster.FeelerTable = prepared.FeelerTable.get();
   }
@@ -139,7 +145,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
           : volume.Surface.Diffuse * sample.Diffuse * color;
         if (shadowed && prepared.Shadows[l] && contribution != glm::dvec3(0.0))
         {
-          const double visibility = prepared.Shadows[l]->Visibility(position);
+          const glm::dvec3 visibility = prepared.Shadows[l]->Visibility(position);
           contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
         }
         light += contribution;

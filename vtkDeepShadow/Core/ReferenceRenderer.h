@@ -10,7 +10,8 @@
 // gradient normal); an unshaded volume with a shadow technique scatters light isotropically
 // (ambient + per light diffuse without the normal), so that it can receive shadows; an
 // unshaded volume without shadows just emits its colour. Each light's diffuse and specular
-// part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)); ambient never is.
+// part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)), per colour
+// channel (coloured techniques give each channel its own V); ambient never is.
 //
 // With the default MarchSettings it is the exact model (transfer functions evaluated exactly,
 // no early termination). `GpuTwin()` settings reproduce what the GPU computes instead (table
@@ -32,6 +33,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace deepshadow
@@ -46,6 +48,8 @@ struct VolumeInstance
   Interpolation Sampling = Interpolation::Linear;
   /** How the volume shadows itself (ShadowKind::None: not at all). */
   ShadowParameters Shadows;
+  /** The transfer function that casts shadows, if not the one that is drawn. */
+  std::optional<TransferFunction> ShadowTransfer;
 };
 
 struct Scene
@@ -87,6 +91,7 @@ public:
     std::unique_ptr<TransferTable> Table;       // GPU twin only
     std::unique_ptr<TransferTable> FeelerTable; // GPU twin with shadows only
     std::unique_ptr<EmptySpaceMap> Empty;       // blocks rays may skip (exact)
+    std::unique_ptr<EmptySpaceMap> ShadowEmpty; // the same for a separate shadow transfer
     std::vector<std::unique_ptr<LightShadow>> Shadows; // per scene light; null: no shadow
   };
   static PreparedVolume Prepare(const Scene& scene, const VolumeInstance& volume,

@@ -3,6 +3,7 @@
 #include "vtkDeepShadowFeatureEmptySpace.h"
 #include "vtkDeepShadowFeatureFeeler.h"
 #include "vtkDeepShadowFeatureGradient.h"
+#include "vtkDeepShadowFeatureHash.h"
 #include "vtkDeepShadowFeatureIsotropic.h"
 #include "vtkDeepShadowFeatureJitter.h"
 #include "vtkDeepShadowFeatureLighting.h"
@@ -49,6 +50,7 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
     add("Feeler", vtkDeepShadowFeatureFeeler);
     add("Gradient", vtkDeepShadowFeatureGradient);
+    add("Hash", vtkDeepShadowFeatureHash);
     add("Isotropic", vtkDeepShadowFeatureIsotropic);
     add("Jitter", vtkDeepShadowFeatureJitter);
     add("Lighting", vtkDeepShadowFeatureLighting);
@@ -57,6 +59,20 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     return all;
   }();
   return features;
+}
+
+std::string GlslConstantArray(const std::string& type, const std::string& name,
+  const std::string& count, const std::vector<std::string>& elements)
+{
+  std::ostringstream text;
+  text << "//@Dec\n#define " << count << " " << elements.size() << "\nconst " << type << " " << name
+       << "[" << elements.size() << "] = " << type << "[" << elements.size() << "](";
+  for (size_t k = 0; k < elements.size(); ++k)
+  {
+    text << (k ? ", " : "") << elements[k];
+  }
+  text << ");\n";
+  return text.str();
 }
 
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,

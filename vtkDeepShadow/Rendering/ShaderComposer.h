@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace deepshadow
 {
@@ -39,6 +40,13 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
  */
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,
   const std::map<std::string, ShaderFeature>& runtime = {});
+
+/**
+ * A Dec part that puts a table of Core's into GLSL: "#define COUNT n" and
+ * "const TYPE NAME[n] = TYPE[n](elements...)", each element GLSL text such as "vec2(1, 2)".
+ */
+std::string GlslConstantArray(const std::string& type, const std::string& name,
+  const std::string& count, const std::vector<std::string>& elements);
 
 }
 #endif

@@ -81,21 +81,25 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::I
     instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
       ? deepshadow::Interpolation::Nearest
       : deepshadow::Interpolation::Linear;
+    auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
+    vtkDeepShadowTechnique* technique = ours ? ours->GetShadowTechnique() : nullptr;
+    if (technique)
+    {
+      instance.Shadows = technique->GetParameters();
+      if (technique->GetShadowProperty())
+      {
+        instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
+      }
+    }
     if (this->Shadows == GroundTruthShadows)
     {
-      instance.Shadows = deepshadow::ShadowParameters::GroundTruth();
-    }
-    else if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
-    {
-      if (vtkDeepShadowTechnique* technique = ours->GetShadowTechnique())
-      {
-        instance.Shadows = technique->GetParameters();
-      }
+      // Coloured when the technique is: the truth of the model it approximates.
+      instance.Shadows = deepshadow::ShadowParameters::GroundTruth(instance.Shadows.IsColored());
     }
     scene.Volumes.push_back(instance);
 
     // The GPU mapper's parameters, taken from the first volume that has one.
-    if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
+    if (ours)
     {
       if (sampleDistance <= 0.0)
       {

@@ -55,7 +55,9 @@ public:
   /**
    * Shadows: the CPU twin of each volume's technique (TechniqueShadows, the default; none
    * for volumes without one), or the ground truth for every volume (GroundTruthShadows:
-   * translucent shadow rays at a quarter of the sample distance, no early termination).
+   * translucent shadow rays at a quarter of the sample distance, no early termination,
+   * coloured when the volume's technique is coloured). Either casts with the technique's
+   * shadow property when it has one.
    */
   enum ShadowModes
   {

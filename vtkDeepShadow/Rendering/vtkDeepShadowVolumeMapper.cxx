@@ -565,7 +565,6 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   context.WorldToIndex = worldToIndex;
   context.ViewStep = step;
   context.DataVersion = this->VolumeUploads;
-  context.OpacityVersion = static_cast<double>(opacityTime);
   context.Lights = lit ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
   if (truncated)
   {
@@ -602,6 +601,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (this->Jitter)
   {
     features.insert("Jitter");
+    features.insert("Hash");
   }
   if (skipEmpty)
   {

@@ -1,19 +1,26 @@
 #version 430 core
-// Build pass of "rays-cached": the feeler's visibility at each node of the shadow grid, for
-// one light, written into that light's slab of the shadow texture (the CachedShadow
-// constructor in Core/Shadows.cxx is the CPU twin).
+// Build pass of every cached technique: the technique's own lookup (the runtime feature
+// Lookup) evaluated at each node of the shadow grid, for one light, written into that
+// light's slab of the shadow texture (the CachedShadow constructor in Core/Shadows.cxx is
+// the CPU twin).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+const int MaxLights = 8;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::Feeler::Dec
+//DeepShadow::Hash::Dec
+//DeepShadow::Lookup::Dec
+#ifdef CACHE_COLORED
+layout(rgba16f, binding = 0) uniform writeonly image3D u_output;
+#else
 layout(r16f, binding = 0) uniform writeonly image3D u_output;
+#endif
 uniform ivec3 u_shadowDims;
 uniform int u_slot;
 uniform mat4 u_indexToWorld;
 uniform int u_lightPositional;
 uniform vec3 u_lightPosition;
 uniform vec3 u_lightToward; // directional lights: unit direction towards the light
-uniform int u_opaque;
 
 void main()
 {
@@ -32,6 +39,6 @@ void main()
     lightDistance = length(d);
     toLight = lightDistance > 0.0 ? d / lightDistance : vec3(0.0, 0.0, 1.0);
   }
-  float visibility = feelerTowardsLight(world, toLight, lightDistance, u_opaque != 0);
-  imageStore(u_output, ivec3(node.xy, node.z + u_slot * u_shadowDims.z), vec4(visibility));
+  vec3 visibility = lightVisibility(u_slot, world, toLight, lightDistance);
+  imageStore(u_output, ivec3(node.xy, node.z + u_slot * u_shadowDims.z), vec4(visibility, 1.0));
 }

@@ -97,9 +97,43 @@ void ComputeProgram::Set(const char* name, const glm::vec3& value)
   glUniform3fv(this->Location(name), 1, glm::value_ptr(value));
 }
 
+void ComputeProgram::Set(const char* name, const glm::vec4& value)
+{
+  glUniform4fv(this->Location(name), 1, glm::value_ptr(value));
+}
+
+void ComputeProgram::Set(const char* name, const glm::mat3& value)
+{
+  glUniformMatrix3fv(this->Location(name), 1, GL_FALSE, glm::value_ptr(value));
+}
+
 void ComputeProgram::Set(const char* name, const glm::mat4& value)
 {
   glUniformMatrix4fv(this->Location(name), 1, GL_FALSE, glm::value_ptr(value));
+}
+
+void ComputeProgram::Set(const char* name, const std::vector<int>& values)
+{
+  if (!values.empty())
+  {
+    glUniform1iv(this->Location(name), static_cast<GLsizei>(values.size()), values.data());
+  }
+}
+
+void ComputeProgram::Set(const char* name, const std::vector<float>& values)
+{
+  if (!values.empty())
+  {
+    glUniform1fv(this->Location(name), static_cast<GLsizei>(values.size()), values.data());
+  }
+}
+
+void ComputeProgram::Set(const char* name, const std::vector<glm::vec3>& values)
+{
+  if (!values.empty())
+  {
+    glUniform3fv(this->Location(name), static_cast<GLsizei>(values.size()), glm::value_ptr(values.front()));
+  }
 }
 
 void ComputeProgram::Dispatch(const glm::ivec3& size, const glm::ivec3& local)
@@ -107,7 +141,8 @@ void ComputeProgram::Dispatch(const glm::ivec3& size, const glm::ivec3& local)
   const glm::ivec3 groups = (size + local - 1) / local;
   glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y),
     static_cast<GLuint>(groups.z));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void ComputeProgram::Release()

@@ -4,11 +4,14 @@
 #ifndef vtkDeepShadowComputeProgram_h
 #define vtkDeepShadowComputeProgram_h
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <string>
+#include <vector>
 
 namespace deepshadow
 {
@@ -34,7 +37,12 @@ public:
   void Set(const char* name, const glm::vec2& value);
   void Set(const char* name, const glm::ivec3& value);
   void Set(const char* name, const glm::vec3& value);
+  void Set(const char* name, const glm::vec4& value);
+  void Set(const char* name, const glm::mat3& value);
   void Set(const char* name, const glm::mat4& value);
+  void Set(const char* name, const std::vector<int>& values);
+  void Set(const char* name, const std::vector<float>& values);
+  void Set(const char* name, const std::vector<glm::vec3>& values);
 
   /** Dispatches enough groups of `local` invocations to cover `size`, then a barrier. */
   void Dispatch(const glm::ivec3& size, const glm::ivec3& local);

@@ -34,19 +34,15 @@ void UniformSink::Set(const char* name, const glm::vec3& value)
 
 void UniformSink::Set(const char* name, const glm::vec4& value)
 {
-  if (this->Raster)
-  {
-    this->Raster->SetUniform4f(name, glm::value_ptr(value));
-  }
+  this->Raster ? void(this->Raster->SetUniform4f(name, glm::value_ptr(value)))
+               : this->Compute->Set(name, value);
 }
 
 void UniformSink::Set(const char* name, const glm::mat3& value)
 {
   glm::mat3 copy = value;
-  if (this->Raster)
-  {
-    this->Raster->SetUniformMatrix3x3(name, glm::value_ptr(copy));
-  }
+  this->Raster ? void(this->Raster->SetUniformMatrix3x3(name, glm::value_ptr(copy)))
+               : this->Compute->Set(name, value);
 }
 
 void UniformSink::Set(const char* name, const glm::mat4& value)
@@ -58,27 +54,55 @@ void UniformSink::Set(const char* name, const glm::mat4& value)
 
 void UniformSink::Set(const char* name, const std::vector<int>& values)
 {
-  if (this->Raster && !values.empty())
+  if (values.empty())
   {
-    this->Raster->SetUniform1iv(name, static_cast<int>(values.size()), values.data());
+    return;
   }
+  this->Raster
+    ? void(this->Raster->SetUniform1iv(name, static_cast<int>(values.size()), values.data()))
+    : this->Compute->Set(name, values);
 }
 
 void UniformSink::Set(const char* name, const std::vector<float>& values)
 {
-  if (this->Raster && !values.empty())
+  if (values.empty())
   {
-    this->Raster->SetUniform1fv(name, static_cast<int>(values.size()), values.data());
+    return;
   }
+  this->Raster
+    ? void(this->Raster->SetUniform1fv(name, static_cast<int>(values.size()), values.data()))
+    : this->Compute->Set(name, values);
 }
 
 void UniformSink::Set(const char* name, const std::vector<glm::vec3>& values)
 {
-  if (this->Raster && !values.empty())
+  if (values.empty())
   {
-    this->Raster->SetUniform3fv(
-      name, static_cast<int>(values.size()), glm::value_ptr(values.front()));
+    return;
   }
+  this->Raster ? void(this->Raster->SetUniform3fv(name, static_cast<int>(values.size()),
+                   glm::value_ptr(values.front())))
+               : this->Compute->Set(name, values);
+}
+
+std::vector<double> ShadowContext::TransferKey(bool colors) const
+{
+  std::vector<double> key{ this->Transfer.OpacityUnitDistance };
+  auto add = [&key](const PiecewiseLinear& function) {
+    key.push_back(static_cast<double>(function.GetNodes().size()));
+    for (const auto& [x, y] : function.GetNodes())
+    {
+      key.insert(key.end(), { x, y });
+    }
+  };
+  add(this->Transfer.Opacity);
+  if (colors)
+  {
+    add(this->Transfer.Red);
+    add(this->Transfer.Green);
+    add(this->Transfer.Blue);
+  }
+  return key;
 }
 
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const

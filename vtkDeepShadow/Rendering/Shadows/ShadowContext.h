@@ -72,10 +72,12 @@ struct ShadowContext
 
   // What shadow structures depend on, besides lights and technique parameters.
   int DataVersion = 0;            // increments with every volume upload
-  double OpacityVersion = 0.0;    // the opacity function's modification time
-  TransferFunction Transfer;
+  TransferFunction Transfer;      // the volume's; a technique may cast with its own
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
+
+  /** The content of Transfer (opacity, and colours if asked), to compare builds by. */
+  std::vector<double> TransferKey(bool colors) const;
 
   /** Uniforms of the VolumeSampling and EmptySpace features. */
   void SetVolumeUniforms(UniformSink& sink) const;

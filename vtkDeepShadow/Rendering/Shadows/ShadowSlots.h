@@ -27,8 +27,10 @@ public:
   std::vector<int> SlotOfEachLight(int lightCount) const;
 
   /**
-   * True if slot `slot` must be rebuilt: its light, the shared inputs (data, opacity,
-   * transform, sample distance) or `parameters` differ from its last build. Remembers them.
+   * True if slot `slot` must be rebuilt: its light (position, focal point, kind; not its
+   * intensity or shadow attenuation, which apply at lookup), the shared inputs (data,
+   * transform, sampling, sample distance) or `parameters` (the technique's, with the casting
+   * transfer function's content) differ from its last build. Remembers them.
    */
   bool Stale(int slot, const ShadowContext& context, const std::vector<double>& parameters);
   /** Forget all builds (the storage was reallocated). */

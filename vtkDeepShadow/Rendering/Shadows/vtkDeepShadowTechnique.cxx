@@ -1,9 +1,14 @@
 #include "vtkDeepShadowTechnique.h"
 
 #include "OpticalModel.h"
-#include "Shadows.h"
 #include "ShadowContext.h"
+#include "ShadowSlots.h"
+#include "Shadows.h"
+#include "vtkDeepShadowCachedShadow.h"
+#include "vtkDeepShadowCachedShadowCS.h"
+#include "vtkDeepShadowShadow.h"
 
+#include "CoreAdapter.h"
 #include "GL/ComputeProgram.h"
 #include "ShaderComposer.h"
 
@@ -11,10 +16,10 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <set>
 
@@ -25,49 +30,70 @@ double NowMilliseconds()
   return std::chrono::duration<double, std::milli>(
     std::chrono::steady_clock::now().time_since_epoch()).count();
 }
+
+// The cache's lights are stacked along z; 8 is the ray caster's light limit.
+constexpr int MaxCachedLights = 8;
 }
 
-// The feeler's opacity table: the transfer function's opacity corrected for the feeler step.
-class vtkDeepShadowTechnique::FeelerTable
+class vtkDeepShadowTechnique::Internals
 {
 public:
-  vtkSmartPointer<vtkTextureObject> Texture;
-  std::array<double, 7> Key{ {} };
+  // The feeler's table: the casting transfer function, opacity corrected for the feeler step.
+  vtkSmartPointer<vtkTextureObject> FeelerTable;
+  std::vector<double> FeelerKey;
+  // Zero-opacity blocks of the volume's opacity may be skipped (not with a shadow property).
+  bool SkipEmpty = true;
+  deepshadow::ShadowSlots Slots;
+  // Build timing of the current Prepare.
+  double PassStart = 0.0;
+  double PassMilliseconds = 0.0;
+  int Passes = 0;
+
+  // The cache ("PP"): one slab of a 3D texture per shadow-casting light.
+  vtkSmartPointer<vtkTextureObject> Cache;
+  glm::ivec3 CacheDims{ 0 };
+  int CacheSlabs = 0;
+  bool CacheColored = false;
+  deepshadow::ShadowSlots CacheSlots;
+  deepshadow::ComputeProgram CacheBuild;
+
+  void ReleaseCache(vtkWindow* window)
+  {
+    if (this->Cache)
+    {
+      this->Cache->ReleaseGraphicsResources(window);
+      this->Cache = nullptr;
+    }
+    this->CacheBuild.Release();
+    this->CacheSlots.Invalidate();
+  }
 };
 
 vtkDeepShadowTechnique::vtkDeepShadowTechnique()
-  : Feeler(new FeelerTable)
+  : Impl(new Internals)
 {
 }
 
-vtkDeepShadowTechnique::~vtkDeepShadowTechnique() = default;
+vtkDeepShadowTechnique::~vtkDeepShadowTechnique()
+{
+  this->SetShadowProperty(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkDeepShadowTechnique, ShadowProperty, vtkVolumeProperty);
 
 void vtkDeepShadowTechnique::SetStepFactor(double factor)
 {
-  const double clamped = std::clamp(factor, 0.01, 100.0);
-  if (clamped != factor)
-  {
-    vtkWarningMacro("StepFactor " << factor << " is outside [0.01, 100]; using " << clamped);
-  }
-  if (clamped != this->StepFactor)
-  {
-    this->StepFactor = clamped;
-    this->Modified();
-  }
+  this->SetClamped("StepFactor", this->StepFactor, factor, 0.01, 100.0);
 }
 
 void vtkDeepShadowTechnique::SetThreshold(double threshold)
 {
-  const double clamped = std::clamp(threshold, 0.0, 1.0);
-  if (clamped != threshold)
-  {
-    vtkWarningMacro("Threshold " << threshold << " is outside [0, 1]; using " << clamped);
-  }
-  if (clamped != this->Threshold)
-  {
-    this->Threshold = clamped;
-    this->Modified();
-  }
+  this->SetClamped("Threshold", this->Threshold, threshold, 0.0, 1.0);
+}
+
+void vtkDeepShadowTechnique::SetShadowVolumeSize(int size)
+{
+  this->SetClamped("ShadowVolumeSize", this->ShadowVolumeSize, size, 2, 2048);
 }
 
 std::string vtkDeepShadowTechnique::GetName() const
@@ -77,9 +103,18 @@ std::string vtkDeepShadowTechnique::GetName() const
 
 long long vtkDeepShadowTechnique::GetShadowBytes() const
 {
-  const long long table =
-    this->Feeler->Texture ? static_cast<long long>(this->Feeler->Texture->GetWidth()) * 16 : 0;
-  return table + this->StructureBytes;
+  const Internals& impl = *this->Impl;
+  long long bytes = this->GetStructureBytes();
+  if (impl.FeelerTable)
+  {
+    bytes += static_cast<long long>(impl.FeelerTable->GetWidth()) * 16;
+  }
+  if (this->Cached && impl.Cache)
+  {
+    bytes += static_cast<long long>(impl.CacheDims.x) * impl.CacheDims.y * impl.CacheDims.z *
+      impl.CacheSlabs * (impl.CacheColored ? 8 : 2);
+  }
+  return bytes;
 }
 
 void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parameters) const
@@ -88,6 +123,8 @@ void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parame
   parameters.Threshold = this->Threshold;
   parameters.Mode = this->ThresholdMode == ScalarThreshold ? deepshadow::ThresholdMode::Scalar
                                                            : deepshadow::ThresholdMode::Opacity;
+  parameters.Cached = this->Cached;
+  parameters.VolumeSize = this->ShadowVolumeSize;
 }
 
 double vtkDeepShadowTechnique::FeelerStep(const deepshadow::ShadowContext& context) const
@@ -97,52 +134,201 @@ double vtkDeepShadowTechnique::FeelerStep(const deepshadow::ShadowContext& conte
 
 bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
 {
+  Internals& impl = *this->Impl;
+  this->LastError.clear();
+  impl.PassMilliseconds = 0.0;
+  impl.Passes = 0;
+  const deepshadow::ShadowParameters parameters = this->GetParameters();
+  const bool colored = parameters.IsColored();
+  if (this->ShadowProperty)
+  {
+    context.Transfer = deepshadow::adapter::MakeTransferFunction(this->ShadowProperty);
+  }
+  impl.SkipEmpty = this->ShadowProperty == nullptr;
+
+  // The feeler's table, shared by lookups and build passes.
   const double step = this->FeelerStep(context);
-  const std::array<double, 7> key{ { static_cast<double>(context.DataVersion),
-    context.OpacityVersion, context.Transfer.OpacityUnitDistance, step,
-    static_cast<double>(context.TableSize), context.Range.x, context.Range.y } };
-  if (!this->Feeler->Texture || key != this->Feeler->Key)
+  std::vector<double> tableKey = context.TransferKey(colored);
+  tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
+    static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
+  if (!impl.FeelerTable || tableKey != impl.FeelerKey)
   {
     const deepshadow::TransferTable table = deepshadow::TransferTable::Sample(
       context.Transfer, context.Range.x, context.Range.y, context.TableSize, step);
-    if (this->Feeler->Texture)
+    if (impl.FeelerTable)
     {
-      this->Feeler->Texture->ReleaseGraphicsResources(context.Window);
+      impl.FeelerTable->ReleaseGraphicsResources(context.Window);
     }
-    this->Feeler->Texture = vtkSmartPointer<vtkTextureObject>::New();
-    this->Feeler->Texture->SetContext(context.Window);
-    this->Feeler->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Feeler->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Feeler->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Feeler->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    this->Feeler->Texture->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT,
-      const_cast<float*>(table.RGBA.data()));
-    this->Feeler->Key = key;
+    impl.FeelerTable = vtkSmartPointer<vtkTextureObject>::New();
+    impl.FeelerTable->SetContext(context.Window);
+    impl.FeelerTable->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.FeelerTable->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.FeelerTable->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.FeelerTable->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.FeelerTable->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT, const_cast<float*>(table.RGBA.data()));
+    impl.FeelerKey = tableKey;
   }
-  this->LastError.clear();
+
+  // Which lights get a shadow, and which of their structures are stale.
+  const int maxLights = this->Cached ? std::min(this->GetMaxShadowLights(), MaxCachedLights)
+                                     : this->GetMaxShadowLights();
+  const int dropped = impl.Slots.Assign(context.Lights, maxLights);
+  if (dropped > 0)
+  {
+    vtkWarningMacro(<< dropped << " shadow-casting lights beyond " << maxLights << " cast no shadow ("
+                    << this->GetName() << ")");
+  }
+  if (!this->AllocateStructures(context, impl.Slots))
+  {
+    impl.Slots.Invalidate();
+    return false;
+  }
+  std::vector<double> key = this->GetStructureKey();
+  key.insert(key.end(), { this->StepFactor, this->Threshold, static_cast<double>(this->ThresholdMode),
+    colored ? 1.0 : 0.0, impl.SkipEmpty ? 1.0 : 0.0 });
+  const std::vector<double> transferKey = context.TransferKey(colored);
+  key.insert(key.end(), transferKey.begin(), transferKey.end());
+  std::set<int> rebuilt;
+  std::vector<int> stale;
+  for (int slot = 0; slot < impl.Slots.Count(); ++slot)
+  {
+    if (impl.Slots.Stale(slot, context, key))
+    {
+      stale.push_back(slot);
+    }
+  }
+  if (!stale.empty())
+  {
+    if (!this->BuildStructures(context, impl.Slots, stale))
+    {
+      impl.Slots.Invalidate();
+      return false;
+    }
+    if (impl.Passes > 0) // techniques without a structure of their own build nothing
+    {
+      rebuilt.insert(stale.begin(), stale.end());
+    }
+  }
+
+  if (this->Cached)
+  {
+    // The cache depends on everything the structure and the lookup do, and on its own size.
+    const std::vector<double> lookupKey = this->GetLookupKey();
+    key.insert(key.end(), lookupKey.begin(), lookupKey.end());
+    key.push_back(static_cast<double>(this->ShadowVolumeSize));
+    const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
+    GLint max3D = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+    // Grow only: fewer shadow-casting lights keep the others' slabs.
+    const int slabs = std::max(impl.Cache && dims == impl.CacheDims ? impl.CacheSlabs : 1, impl.Slots.Count());
+    if (std::max({ dims.x, dims.y, dims.z * slabs }) > max3D)
+    {
+      this->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
+        std::to_string(dims.y) + "x" + std::to_string(dims.z) + " per light) exceeds this GL's 3D "
+        "texture limit of " + std::to_string(max3D);
+      return false;
+    }
+    if (!impl.Cache || dims != impl.CacheDims || slabs != impl.CacheSlabs || colored != impl.CacheColored)
+    {
+      impl.ReleaseCache(context.Window);
+      impl.Cache = vtkSmartPointer<vtkTextureObject>::New();
+      impl.Cache->SetContext(context.Window);
+      impl.Cache->SetInternalFormat(colored ? GL_RGBA16F : GL_R16F);
+      impl.Cache->SetFormat(colored ? GL_RGBA : GL_RED);
+      impl.Cache->SetDataType(GL_FLOAT);
+      impl.Cache->SetWrapS(vtkTextureObject::ClampToEdge);
+      impl.Cache->SetWrapT(vtkTextureObject::ClampToEdge);
+      impl.Cache->SetWrapR(vtkTextureObject::ClampToEdge);
+      impl.Cache->SetMinificationFilter(vtkTextureObject::Linear);
+      impl.Cache->SetMagnificationFilter(vtkTextureObject::Linear);
+      impl.Cache->Allocate3D(static_cast<unsigned int>(dims.x), static_cast<unsigned int>(dims.y),
+        static_cast<unsigned int>(dims.z * slabs), colored ? 4 : 1, VTK_FLOAT);
+      impl.CacheDims = dims;
+      impl.CacheSlabs = slabs;
+      impl.CacheColored = colored;
+    }
+    impl.CacheSlots.Assign(context.Lights, maxLights);
+    std::vector<int> staleCache;
+    for (int slot = 0; slot < impl.CacheSlots.Count(); ++slot)
+    {
+      if (impl.CacheSlots.Stale(slot, context, key))
+      {
+        staleCache.push_back(slot);
+      }
+    }
+    if (!staleCache.empty())
+    {
+      const std::string lookup = (colored ? "//@Dec\n#define CACHE_COLORED\n" : "") + this->GetLookupSource();
+      if (!this->BeginBuildPass(impl.CacheBuild, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
+      {
+        impl.CacheSlots.Invalidate();
+        return false;
+      }
+      deepshadow::UniformSink sink(&impl.CacheBuild);
+      this->BindLookup(sink, context);
+      impl.CacheBuild.Set("u_shadowDims", dims);
+      impl.CacheBuild.Set("u_indexToWorld", glm::mat4(context.IndexToWorld));
+      const GLenum format = colored ? GL_RGBA16F : GL_R16F;
+      glBindImageTexture(0, impl.Cache->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+      for (int slot : staleCache)
+      {
+        const deepshadow::Light& light = context.Lights[static_cast<size_t>(impl.CacheSlots.Light(slot))];
+        impl.CacheBuild.Set("u_slot", slot);
+        impl.CacheBuild.Set("u_lightPositional", light.Positional ? 1 : 0);
+        impl.CacheBuild.Set("u_lightPosition", glm::vec3(light.Position));
+        impl.CacheBuild.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
+        impl.CacheBuild.Dispatch(dims, glm::ivec3(4));
+      }
+      glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+      this->UnbindLookup();
+      this->EndBuildPass(context);
+      rebuilt.insert(staleCache.begin(), staleCache.end());
+    }
+  }
+  else if (impl.Cache)
+  {
+    impl.ReleaseCache(context.Window);
+  }
+
+  if (!rebuilt.empty())
+  {
+    this->BuildCount += static_cast<int>(rebuilt.size());
+    this->LastBuildMilliseconds = impl.PassMilliseconds;
+  }
   return true;
+}
+
+std::string vtkDeepShadowTechnique::GetShaderFeatureSource() const
+{
+  if (!this->Cached)
+  {
+    return vtkDeepShadowShadow + this->GetLookupSource();
+  }
+  const bool colored = this->GetParameters().IsColored();
+  return std::string(vtkDeepShadowShadow) + "//@Dec\nconst bool ShadowCacheColored = " +
+    (colored ? "true" : "false") + ";\n" + vtkDeepShadowCachedShadow;
 }
 
 void vtkDeepShadowTechnique::ActivateFeelerTable()
 {
-  this->Feeler->Texture->Activate();
+  this->Impl->FeelerTable->Activate();
 }
 
 void vtkDeepShadowTechnique::DeactivateFeelerTable()
 {
-  if (this->Feeler->Texture)
+  if (this->Impl->FeelerTable)
   {
-    this->Feeler->Texture->Deactivate();
+    this->Impl->FeelerTable->Deactivate();
   }
 }
 
-void vtkDeepShadowTechnique::SetFeelerUniforms(deepshadow::UniformSink& sink,
-  const deepshadow::ShadowContext& context, bool skipEmpty) const
+void vtkDeepShadowTechnique::SetFeelerUniforms(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) const
 {
   const double step = this->FeelerStep(context);
   const bool onScalar = this->ThresholdMode == ScalarThreshold;
   const deepshadow::ShadowParameters parameters = this->GetParameters();
-  sink.Set("u_feelerTable", this->Feeler->Texture->GetTextureUnit());
+  sink.Set("u_feelerTable", this->Impl->FeelerTable->GetTextureUnit());
   sink.Set("u_feelerStep", static_cast<float>(step));
   // Opacity thresholds are compared with the table's step-corrected opacity.
   sink.Set("u_feelerThreshold",
@@ -150,31 +336,41 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(deepshadow::UniformSink& sink,
         ? this->Threshold
         : deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)));
   sink.Set("u_feelerThresholdOnScalar", onScalar ? 1 : 0);
+  sink.Set("u_feelerColored", parameters.IsColored() ? 1 : 0);
   sink.Set("u_scalarRange", glm::vec2(context.Range));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);
-  // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar.
-  const bool opaqueOnScalar = onScalar && (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
-  if (context.Occupancy)
-  {
-    sink.Set("u_feelerSkipEmpty", skipEmpty && !opaqueOnScalar ? 1 : 0);
-  }
+  // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
+  // shadows are cast by another transfer function than the one the blocks were found for.
+  const bool opaqueOnScalar =
+    onScalar && (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
+  sink.Set("u_feelerSkipEmpty", context.Occupancy && this->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
 }
 
 bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
-  const char* shaderTemplate, const deepshadow::ShadowContext& context)
+  const std::string& shaderTemplate, const deepshadow::ShadowContext& context,
+  const std::string& runtimeName, const std::string& runtimeSource)
 {
   std::set<std::string> features{ "VolumeSampling", "Feeler" };
   if (context.Occupancy)
   {
     features.insert("EmptySpace");
   }
-  if (!program.Build(deepshadow::ComposeShader(shaderTemplate, features)))
+  for (const std::string& feature : this->GetBuildFeatures())
+  {
+    features.insert(feature);
+  }
+  std::map<std::string, deepshadow::ShaderFeature> runtime;
+  if (!runtimeName.empty())
+  {
+    runtime[runtimeName] = deepshadow::ShaderFeature(runtimeName, runtimeSource);
+  }
+  if (!program.Build(deepshadow::ComposeShader(shaderTemplate, features, runtime)))
   {
     this->LastError = program.Error();
     return false;
   }
-  this->BuildStart = NowMilliseconds();
+  this->Impl->PassStart = NowMilliseconds();
   context.Volume->Activate();
   if (context.Occupancy)
   {
@@ -184,11 +380,11 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
   program.Use();
   deepshadow::UniformSink sink(&program);
   context.SetVolumeUniforms(sink);
-  this->SetFeelerUniforms(sink, context, true);
+  this->SetFeelerUniforms(sink, context);
   return true;
 }
 
-void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& context, int count)
+void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& context)
 {
   glFinish(); // the build time includes the GPU's work
   this->DeactivateFeelerTable();
@@ -199,24 +395,60 @@ void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& conte
   }
   // VTK tracks the bound program; ours replaced it.
   context.Window->GetShaderCache()->ReleaseCurrentShader();
-  this->BuildCount += count;
-  this->LastBuildMilliseconds = NowMilliseconds() - this->BuildStart;
+  this->Impl->PassMilliseconds += NowMilliseconds() - this->Impl->PassStart;
+  ++this->Impl->Passes;
 }
 
-void vtkDeepShadowTechnique::Bind(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
+void vtkDeepShadowTechnique::Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
+{
+  Internals& impl = *this->Impl;
+  std::vector<float> attenuation;
+  for (const deepshadow::Light& light : context.Lights)
+  {
+    attenuation.push_back(static_cast<float>(light.ShadowAttenuation));
+  }
+  sink.Set("u_shadowSlot", impl.Slots.SlotOfEachLight(static_cast<int>(context.Lights.size())));
+  sink.Set("u_shadowAttenuation", attenuation);
+  if (this->Cached)
+  {
+    impl.Cache->Activate();
+    sink.Set("u_shadowVolume", impl.Cache->GetTextureUnit());
+    sink.Set("u_shadowDims", glm::vec3(impl.CacheDims));
+    sink.Set("u_shadowSlabs", static_cast<float>(impl.CacheSlabs));
+    return;
+  }
+  if (this->LookupNeedsFeeler())
+  {
+    this->ActivateFeelerTable();
+    this->SetFeelerUniforms(sink, context);
+  }
+  this->BindLookup(sink, context);
+}
 
 void vtkDeepShadowTechnique::Unbind()
 {
+  if (this->Cached)
+  {
+    if (this->Impl->Cache)
+    {
+      this->Impl->Cache->Deactivate();
+    }
+    return;
+  }
+  this->UnbindLookup();
   this->DeactivateFeelerTable();
 }
 
 void vtkDeepShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Feeler->Texture)
+  Internals& impl = *this->Impl;
+  if (impl.FeelerTable)
   {
-    this->Feeler->Texture->ReleaseGraphicsResources(window);
-    this->Feeler->Texture = nullptr;
+    impl.FeelerTable->ReleaseGraphicsResources(window);
+    impl.FeelerTable = nullptr;
   }
+  impl.ReleaseCache(window);
+  impl.Slots.Invalidate();
 }
 
 void vtkDeepShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
@@ -226,6 +458,8 @@ void vtkDeepShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepFactor: " << this->StepFactor << "\n";
   os << indent << "Threshold: " << this->Threshold
      << (this->ThresholdMode == ScalarThreshold ? " (scalar)" : " (opacity)") << "\n";
+  os << indent << "Cached: " << this->Cached << " (" << this->ShadowVolumeSize << " nodes)\n";
+  os << indent << "ShadowProperty: " << this->ShadowProperty << "\n";
   os << indent << "BuildCount: " << this->BuildCount << "\n";
   os << indent << "ShadowBytes: " << this->GetShadowBytes() << "\n";
 }

@@ -6,18 +6,24 @@
  * knows its light-space pass (the shadow structure it builds per shadow-casting light), its
  * lookup shader code, its CPU twin (GetParameters() feeds deepshadow::MakeLightShadow) and
  * its memory; the mapper knows none of that. Structures are rebuilt only when what they
- * depend on changed: the light, the volume's data or transform, the opacity function, the
+ * depend on changed: the light's position or direction, the volume's data or transform, the
+ * casting transfer function's content (opacity, and colours for coloured techniques), the
  * sample distance or the technique's parameters; never because the camera moved (a light
  * that follows the camera, like the headlight, does change). GetBuildCount() counts builds.
  *
  * Every light with vtkLight::ShadowAttenuation > 0 casts shadows (VTK's default is 1); a
- * light's diffuse and specular light is scaled by 1 - attenuation * (1 - visibility). Ambient
- * light is never shadowed. An unshaded volume (vtkVolumeProperty::ShadeOff) with a technique
- * is lit isotropically so that it can receive shadows.
+ * light's diffuse and specular light is scaled by 1 - attenuation * (1 - visibility), per
+ * colour channel for coloured techniques. Ambient light is never shadowed. An unshaded
+ * volume (vtkVolumeProperty::ShadeOff) with a technique is lit isotropically so that it can
+ * receive shadows.
  *
  * Parameters shared by the techniques: the step of feelers and light rays as a factor of the
- * view ray's sample distance, and the threshold that makes a sample an opaque occluder (for
- * opaque rays and shadow maps), on the opacity or on the normalized scalar.
+ * view ray's sample distance; the threshold that makes a sample an opaque occluder (opaque
+ * rays, shadow maps), on the opacity or on the normalized scalar; caching ("PP" of Ropinski
+ * et al.): the technique's answer evaluated once per node of a 3D shadow volume over the
+ * volume's box and fetched trilinearly while rendering, which makes every frame whose lights
+ * did not move as cheap as one texture fetch per sample and light; and a separate volume
+ * property whose colour and opacity cast the shadows (by default the volume's own).
  */
 #ifndef vtkDeepShadowTechnique_h
 #define vtkDeepShadowTechnique_h
@@ -27,9 +33,9 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+#include <vector> // For std::vector
 
-class vtkShaderProgram;
-class vtkTextureObject;
+class vtkVolumeProperty;
 class vtkWindow;
 
 namespace deepshadow
@@ -37,6 +43,7 @@ namespace deepshadow
 class ComputeProgram;
 struct ShadowContext;
 struct ShadowParameters;
+class ShadowSlots;
 class UniformSink;
 }
 
@@ -74,9 +81,35 @@ public:
   void SetThresholdModeToScalar() { this->SetThresholdMode(ScalarThreshold); }
   ///@}
 
+  ///@{
+  /** Cache the technique's answers in a 3D shadow volume ("PP"). Default off. */
+  vtkSetMacro(Cached, bool);
+  vtkGetMacro(Cached, bool);
+  vtkBooleanMacro(Cached, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Shadow-volume nodes along the volume's longest axis when cached, at most as many as the
+   * data has (default 128; [2, 2048], warned).
+   */
+  void SetShadowVolumeSize(int size);
+  vtkGetMacro(ShadowVolumeSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The volume property whose colour and scalar opacity cast shadows (and its opacity unit
+   * distance), instead of the volume's own (null, the default). Only its first component's
+   * functions are used. Rendering still uses the volume's property.
+   */
+  void SetShadowProperty(vtkVolumeProperty* property);
+  vtkGetObjectMacro(ShadowProperty, vtkVolumeProperty);
+  ///@}
+
   /** The parameters of the CPU twin (deepshadow::MakeLightShadow). */
   virtual deepshadow::ShadowParameters GetParameters() const = 0;
-  /** none, rays, rays-opaque, rays-cached, rays-opaque-cached, shadowmap. */
+  /** rays, rays-opaque, rays-color, shadowmap, dsm, dsm-color, dsm3, cssm; "-cached" if so. */
   std::string GetName() const;
 
   ///@{
@@ -90,57 +123,109 @@ public:
   // ---- Used by vtkDeepShadowVolumeMapper, not by applications ----
 
   /** Brings the shadow structures up to date; false (and GetLastError()) on failure. */
-  virtual bool Prepare(deepshadow::ShadowContext& context);
+  bool Prepare(deepshadow::ShadowContext& context);
   /** Source of the "Shadow" shader feature for the ray caster. */
-  virtual std::string GetShaderFeatureSource() const = 0;
+  std::string GetShaderFeatureSource() const;
   /** Whether the ray caster also needs the Feeler feature. */
-  virtual bool NeedsFeeler() const { return false; }
+  bool NeedsFeeler() const { return !this->Cached && this->LookupNeedsFeeler(); }
+  /** Shader features the build passes need besides VolumeSampling, Feeler, EmptySpace. */
+  virtual std::vector<std::string> GetBuildFeatures() const { return {}; }
   /** Sets the lookup's uniforms and binds its textures on the ray caster's program. */
-  virtual void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context);
-  virtual void Unbind();
+  void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context);
+  void Unbind();
   virtual void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
   vtkDeepShadowTechnique();
   ~vtkDeepShadowTechnique() override;
 
+  // ---- What a technique provides ----
+
+  /** Shadow-casting lights it can serve at once. */
+  virtual int GetMaxShadowLights() const = 0;
+  /** The parameters its structures depend on (the base adds the shared ones). */
+  virtual std::vector<double> GetStructureKey() const = 0;
+  /** The parameters only its lookup depends on (a cache depends on them too). */
+  virtual std::vector<double> GetLookupKey() const { return {}; }
+  /** (Re)allocates its storage for `slots`; calls slots.Invalidate() when it did. */
+  virtual bool AllocateStructures(deepshadow::ShadowContext&, deepshadow::ShadowSlots&)
+  {
+    return true;
+  }
+  /** Builds the structures of the given slots. */
+  virtual bool BuildStructures(deepshadow::ShadowContext&, const deepshadow::ShadowSlots&,
+    const std::vector<int>&)
+  {
+    return true;
+  }
+  virtual long long GetStructureBytes() const { return 0; }
+  /**
+   * GLSL defining vec3 lightVisibility(int slot, vec3 position, vec3 toLight,
+   * float lightDistance) and its uniforms (parts //@Dec), for the ray caster and the cache.
+   */
+  virtual std::string GetLookupSource() const = 0;
+  virtual bool LookupNeedsFeeler() const { return false; }
+  /** Binds what the lookup reads and sets its uniforms (ray caster or cache pass). */
+  virtual void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) = 0;
+  virtual void UnbindLookup() {}
+
+  // ---- Helpers for techniques ----
+
+  /** Sets `member` to `value` clamped to [low, high] (NaN to low), warning if it clamped. */
+  template <typename T>
+  void SetClamped(const char* name, T& member, T value, T low, T high)
+  {
+    const T clamped = !(value >= low) ? low : (value > high ? high : value);
+    if (!(clamped == value))
+    {
+      vtkWarningMacro(<< name << " " << value << " is outside [" << low << ", " << high
+                      << "]; using " << clamped);
+    }
+    if (clamped != member)
+    {
+      member = clamped;
+      this->Modified();
+    }
+  }
+
   /** The common part of GetParameters(). */
   void FillParameters(deepshadow::ShadowParameters& parameters) const;
-
   /** World step of feelers and light rays for the current context. */
   double FeelerStep(const deepshadow::ShadowContext& context) const;
-  /** The Feeler feature's uniforms (table bound by Prepare/Bind). */
-  void SetFeelerUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context,
-    bool skipEmpty) const;
-  /** Activates the feeler table's texture unit (Prepare does it for builds, Bind for lookups). */
+  /** The Feeler feature's uniforms (its table must be active). */
+  void SetFeelerUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) const;
   void ActivateFeelerTable();
   void DeactivateFeelerTable();
-
   /**
    * Starts a build pass: composes `shaderTemplate` with the volume-sampling, empty-space and
-   * feeler features, compiles it into `program` if needed, binds the volume, block map and
-   * feeler table, and sets their uniforms. False (and LastError) if it does not compile.
+   * feeler features (and `runtime` ones), compiles it into `program` if needed, binds the
+   * volume, block map and feeler table and sets their uniforms. False (and LastError) if it
+   * does not compile.
    */
-  bool BeginBuildPass(deepshadow::ComputeProgram& program, const char* shaderTemplate,
-    const deepshadow::ShadowContext& context);
-  /** Ends it: waits for the GL, unbinds, and records `count` structures built. */
-  void EndBuildPass(const deepshadow::ShadowContext& context, int count);
+  bool BeginBuildPass(deepshadow::ComputeProgram& program, const std::string& shaderTemplate,
+    const deepshadow::ShadowContext& context, const std::string& runtimeName = std::string(),
+    const std::string& runtimeSource = std::string());
+  /** Ends it: waits for the GL, unbinds, and adds the pass to the build time. */
+  void EndBuildPass(const deepshadow::ShadowContext& context);
 
   double StepFactor = 1.0;
   double Threshold = 0.5;
   int ThresholdMode = OpacityThreshold;
+  bool Cached = false;
+  int ShadowVolumeSize = 128;
+  vtkVolumeProperty* ShadowProperty = nullptr;
   int BuildCount = 0;
   double LastBuildMilliseconds = 0.0;
-  long long StructureBytes = 0; // set by subclasses
   std::string LastError;
 
 private:
-  double BuildStart = 0.0;
   vtkDeepShadowTechnique(const vtkDeepShadowTechnique&) = delete;
   void operator=(const vtkDeepShadowTechnique&) = delete;
 
-  class FeelerTable;
-  std::unique_ptr<FeelerTable> Feeler;
+  bool PrepareCache(deepshadow::ShadowContext& context, const std::vector<int>& changed);
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
 };
 
 #endif

@@ -34,3 +34,23 @@ int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
           continue;
         }
       }
+//@TexelSkip
+      if (u_feelerSkipEmpty != 0)
+      {
+        vec3 block = floor(sampleIndex / u_blockSize);
+        if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
+        {
+          // One visit for the run, at its last sample inside the box.
+          int last = j + stepsToLeaveBlock(sampleIndex, indexStep, block) - 1;
+          while (last > j && !(tEnter + (float(last) + 0.5) * u_feelerStep < tExit))
+          {
+            --last;
+          }
+          if (!visitSkipped(last, tEnter + (float(last) + 0.5) * u_feelerStep))
+          {
+            break;
+          }
+          j = last;
+          continue;
+        }
+      }

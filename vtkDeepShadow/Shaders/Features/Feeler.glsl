@@ -1,21 +1,33 @@
-// Feature Feeler: the march from a point towards a light through the volume, shared by the
-// shadow-ray technique (per sample), the cached shadow volume and the shadow map build
-// (deepshadow::FeelerVisibility in Core/Shadows.cxx is the CPU twin). Samples sit at
-// (j + 0.5) * u_feelerStep from the start; opacity comes from u_feelerTable, corrected for
-// that step. With FEELER_OPAQUE the answer is 0 at the first sample above the threshold;
-// otherwise the product of (1 - alpha), stopped once below u_feelerTermination (0: never).
+// Feature Feeler: the march from a point towards a light through the volume (the shadow-ray
+// technique, per sample or per cache node; deepshadow::FeelerVisibility in Core/Shadows.cxx
+// is the CPU twin), and the sample lookups of the light-space builds. Samples sit at (j + 0.5) * u_feelerStep from the start; colour and opacity come
+// from u_feelerTable, opacity corrected for that step. Opaque: 0 at the first sample above
+// the threshold; translucent: the product of (1 - alpha), or per channel of
+// (1 - alpha (1 - colour)) when coloured, stopped once below u_feelerTermination (0: never).
 //@Dec
 uniform sampler2D u_feelerTable;   // RGBA table; alpha = opacity corrected for u_feelerStep
+uniform int u_feelerColored;       // a transmittance per colour channel
 uniform float u_feelerStep;        // world units
 uniform float u_feelerThreshold;   // corrected opacity, or normalized scalar
 uniform int u_feelerThresholdOnScalar;
 uniform vec2 u_scalarRange;
 uniform float u_feelerTermination; // transmittance at which translucent feelers stop
-uniform int u_feelerSkipEmpty;     // may skip empty blocks (not with scalar thresholds)
+uniform int u_feelerSkipEmpty;     // may skip empty blocks (see SetFeelerUniforms)
+
+vec4 feelerSample(float scalar)
+{
+  return texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+}
 
 float feelerAlpha(float scalar)
 {
-  return texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5)).a;
+  return feelerSample(scalar).a;
+}
+
+// What a sample of colour and opacity `rgba` lets through: grey or per channel.
+vec3 feelerTransmission(vec4 rgba)
+{
+  return u_feelerColored != 0 ? 1.0 - rgba.a * (1.0 - rgba.rgb) : vec3(1.0 - rgba.a);
 }
 
 bool feelerAbove(float scalar)
@@ -30,9 +42,9 @@ bool feelerAbove(float scalar)
 
 // From voxel index `start` along index-space direction `indexDirection` (per world unit) up
 // to world distance tEnd. `opaque`: binary visibility; else the transmittance.
-float feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
+vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
 {
-  float transmittance = 1.0;
+  vec3 transmittance = vec3(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
   for (int j = 0;; ++j)
   {
@@ -48,12 +60,12 @@ float feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
     {
       if (feelerAbove(scalar))
       {
-        return 0.0;
+        return vec3(0.0);
       }
       continue;
     }
-    transmittance *= 1.0 - feelerAlpha(scalar);
-    if (transmittance < u_feelerTermination)
+    transmittance *= feelerTransmission(feelerSample(scalar));
+    if (max(max(transmittance.r, transmittance.g), transmittance.b) < u_feelerTermination)
     {
       break;
     }
@@ -63,7 +75,7 @@ float feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
 
 // Visibility of a light from world point `position`: the feeler from there towards it, up to
 // the volume's box or the light itself.
-float feelerTowardsLight(vec3 position, vec3 toLight, float lightDistance, bool opaque)
+vec3 feelerTowardsLight(vec3 position, vec3 toLight, float lightDistance, bool opaque)
 {
   vec3 start = (u_worldToIndex * vec4(position, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(toLight, 0.0)).xyz;

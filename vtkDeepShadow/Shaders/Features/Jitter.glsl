@@ -1,13 +1,8 @@
 // Feature Jitter: the first sample of each pixel moves by a hash of the pixel and a seed
 // (deepshadow::JitterOffset in Core/Jitter.h), so images are reproducible bit for bit.
 //@Dec
+//DeepShadow::Hash::Dec
 uniform int u_jitterSeed;
-uint pcgHash(uint value)
-{
-  uint state = value * 747796405u + 2891336453u;
-  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-  return (word >> 22u) ^ word;
-}
 float jitterOffset(uvec2 pixel, uint seed)
 {
   uint hash = pcgHash(pixel.x + pcgHash(pixel.y + pcgHash(seed)));

@@ -1,0 +1,261 @@
+#include "LightSpace.h"
+
+#include "Camera.h"
+#include "DeepShadowMap.h"
+#include "OpacityLevels.h"
+#include "Parallel.h"
+#include "ShadowMap.h"
+#include "StochasticShadowMap.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace deepshadow
+{
+
+void ShadowMapFace::TexelRay(double u, double v, glm::dvec3& origin, glm::dvec3& direction) const
+{
+  if (this->Perspective)
+  {
+    direction = glm::normalize(this->Forward + u * this->Extent * this->Right + v * this->Extent * this->Up);
+    origin = this->Origin + this->Near * direction;
+  }
+  else
+  {
+    origin = this->Origin + u * this->Extent * this->Right + v * this->Extent * this->Up;
+    direction = this->Forward;
+  }
+}
+
+bool ShadowMapFace::Project(const glm::dvec3& p, double& u, double& v, double& depth) const
+{
+  const glm::dvec3 d = p - this->Origin;
+  const double z = glm::dot(d, this->Forward);
+  if (this->Perspective)
+  {
+    if (z <= 0.0)
+    {
+      return false;
+    }
+    u = glm::dot(d, this->Right) / (z * this->Extent);
+    v = glm::dot(d, this->Up) / (z * this->Extent);
+    depth = glm::length(d) - this->Near;
+    return true;
+  }
+  u = glm::dot(d, this->Right) / this->Extent;
+  v = glm::dot(d, this->Up) / this->Extent;
+  depth = z;
+  return z >= 0.0;
+}
+
+void VolumeBoundingSphere(
+  const glm::dmat4& indexToWorld, const glm::ivec3& dims, glm::dvec3& centre, double& radius)
+{
+  const glm::dvec3 maxIndex = glm::dvec3(dims - 1);
+  centre = glm::dvec3(indexToWorld * glm::dvec4(0.5 * maxIndex, 1.0));
+  radius = 0.0;
+  for (int c = 0; c < 8; ++c)
+  {
+    const glm::dvec3 corner((c & 1) * maxIndex.x, ((c >> 1) & 1) * maxIndex.y, ((c >> 2) & 1) * maxIndex.z);
+    radius = std::max(radius, glm::length(glm::dvec3(indexToWorld * glm::dvec4(corner, 1.0)) - centre));
+  }
+}
+
+namespace
+{
+ShadowMapFace MakeFace(bool perspective, const glm::dvec3& origin, const glm::dvec3& forward,
+  double extent, double near)
+{
+  ShadowMapFace face;
+  face.Perspective = perspective;
+  face.Origin = origin;
+  face.Forward = glm::normalize(forward);
+  // Any perpendicular will do; the GLSL cube lookup rebuilds it the same way.
+  const glm::dvec3 helper = std::abs(face.Forward.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  face.Right = glm::normalize(glm::cross(face.Forward, helper));
+  face.Up = glm::cross(face.Right, face.Forward);
+  face.Extent = extent;
+  face.Near = near;
+  return face;
+}
+}
+
+std::vector<ShadowMapFace> ShadowMapFaces(const Light& light, const glm::dvec3& centre, double radius)
+{
+  radius = std::max(radius, 1e-12);
+  // 1% margins keep the volume's silhouette off the faces' edges.
+  const double margin = 1.01 * radius;
+  const glm::dvec3 toCentre = centre - light.Position;
+  const double distance = glm::length(toCentre);
+  if (!light.Positional || distance > FarLightRadii * radius)
+  {
+    const glm::dvec3 toLight = light.Positional ? -toCentre / distance
+                                                : glm::normalize(light.Position - light.FocalPoint);
+    return { MakeFace(false, centre + margin * toLight, -toLight, margin, 0.0) };
+  }
+  if (distance > 1.05 * radius)
+  {
+    const double halfAngle = std::asin(std::min(1.0, margin / distance));
+    return { MakeFace(true, light.Position, toCentre, std::tan(halfAngle), std::max(0.0, distance - margin)) };
+  }
+  // The light is inside (or at) the bounding sphere: a cube of six 90-degree faces.
+  std::vector<ShadowMapFace> cube;
+  const glm::dvec3 axes[6] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
+    { 0, 0, -1 } };
+  for (const glm::dvec3& axis : axes)
+  {
+    cube.push_back(MakeFace(true, light.Position, axis, 1.0, 0.0));
+  }
+  return cube;
+}
+
+int ShadowMapFaceFor(const std::vector<ShadowMapFace>& faces, const glm::dvec3& fromLight)
+{
+  if (faces.size() != 6)
+  {
+    return 0;
+  }
+  const glm::dvec3 a = glm::abs(fromLight);
+  if (a.x >= a.y && a.x >= a.z)
+  {
+    return fromLight.x >= 0.0 ? 0 : 1;
+  }
+  if (a.y >= a.z)
+  {
+    return fromLight.y >= 0.0 ? 2 : 3;
+  }
+  return fromLight.z >= 0.0 ? 4 : 5;
+}
+
+void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
+  double step, const EmptySpaceMap* empty,
+  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit)
+{
+  const VolumeGrid& grid = *caster.Grid;
+  double tEnter = 0.0, tExit = 0.0;
+  if (!IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), glm::dvec3(0.0),
+        glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
+  {
+    return;
+  }
+  const double t0 = std::max(tEnter, 0.0);
+  auto depthOf = [&](long j) { return t0 + (static_cast<double>(j) + 0.5) * step; };
+  const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(origin, 1.0));
+  const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(direction, 0.0));
+  const glm::dvec3 indexStep = indexDirection * step;
+  for (long j = 0; depthOf(j) < tExit; ++j)
+  {
+    const glm::dvec3 index = indexOrigin + depthOf(j) * indexDirection;
+    if (empty)
+    {
+      if (const int skip = empty->SkipSteps(index, indexStep))
+      {
+        long last = j + skip - 1;
+        while (last > j && !(depthOf(last) < tExit))
+        {
+          --last;
+        }
+        if (!visit(last, depthOf(last), 0.0, true))
+        {
+          return;
+        }
+        j = last;
+        continue;
+      }
+    }
+    if (!visit(j, depthOf(j), grid.Sample(index, caster.Sampling), false))
+    {
+      return;
+    }
+  }
+}
+
+LightSpaceShadow::LightSpaceShadow(
+  const ShadowParameters& parameters, const ShadowCaster& caster, const Light& light, double step)
+  : Parameters(parameters)
+  , Caster(caster)
+  , Size(std::max(1, parameters.MapSize))
+  , Step(step)
+{
+  glm::dvec3 centre;
+  double radius = 0.0;
+  VolumeBoundingSphere(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), centre, radius);
+  this->Faces = ShadowMapFaces(light, centre, radius);
+}
+
+void LightSpaceShadow::ForEachTexel(int threads,
+  const std::function<void(int, int, int, const glm::dvec3&, const glm::dvec3&)>& build) const
+{
+  for (int f = 0; f < static_cast<int>(this->Faces.size()); ++f)
+  {
+    ParallelFor(
+      this->Size,
+      [&](int y) {
+        for (int x = 0; x < this->Size; ++x)
+        {
+          glm::dvec3 origin, direction;
+          this->Faces[f].TexelRay(2.0 * (x + 0.5) / this->Size - 1.0,
+            2.0 * (y + 0.5) / this->Size - 1.0, origin, direction);
+          build(f, x, y, origin, direction);
+        }
+      },
+      threads);
+  }
+}
+
+glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
+{
+  const int face = ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin);
+  double u = 0.0, v = 0.0, depth = 0.0;
+  if (!this->Faces[face].Project(p, u, v, depth))
+  {
+    return glm::dvec3(1.0);
+  }
+  return this->MapVisibility(
+    face, 0.5 * (u + 1.0) * this->Size - 0.5, 0.5 * (v + 1.0) * this->Size - 0.5, depth);
+}
+
+glm::dvec3 LightSpaceShadow::Bilinear(
+  int face, double x, double y, const std::function<glm::dvec3(size_t texel)>& value) const
+{
+  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+  const double fx = x - i, fy = y - j;
+  return (1.0 - fx) * (1.0 - fy) * value(this->Texel(face, i, j)) +
+    fx * (1.0 - fy) * value(this->Texel(face, i + 1, j)) +
+    (1.0 - fx) * fy * value(this->Texel(face, i, j + 1)) + fx * fy * value(this->Texel(face, i + 1, j + 1));
+}
+
+size_t LightSpaceShadow::Texel(int face, int x, int y) const
+{
+  x = std::clamp(x, 0, this->Size - 1);
+  y = std::clamp(y, 0, this->Size - 1);
+  return (static_cast<size_t>(face) * this->Size + y) * this->Size + x;
+}
+
+size_t LightSpaceShadow::TexelCount() const
+{
+  return this->Faces.size() * this->Size * this->Size;
+}
+
+std::unique_ptr<LightShadow> MakeLightSpaceShadow(const ShadowParameters& parameters,
+  const ShadowCaster& caster, const Light& light, double step, int threads)
+{
+  switch (parameters.Kind)
+  {
+    case ShadowKind::ShadowMap:
+      return std::make_unique<ShadowMapShadow>(parameters, caster, light, step, threads);
+    case ShadowKind::DeepShadowMap:
+      return std::make_unique<DeepShadowMap>(parameters, caster, light, step, threads);
+    case ShadowKind::OpacityLevels:
+      return std::make_unique<OpacityLevelsShadow>(parameters, caster, light, step, threads);
+    case ShadowKind::Stochastic:
+      return std::make_unique<StochasticShadowMap>(parameters, caster, light, step, threads);
+    default:
+      return nullptr;
+  }
+}
+
+}

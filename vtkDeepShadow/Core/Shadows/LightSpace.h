@@ -1,0 +1,129 @@
+// Light-space maps, CPU side: the faces through which a light sees the volume, the rays of
+// their texels, and the common part of every technique that stores something per texel
+// (shadow maps, deep shadow maps, opacity levels, stochastic shadow maps). The GLSL twins
+// are Shaders/Shadows/LightSpace.glsl (lookup) and vtkDeepShadowLightSpaceCS.glsl (build).
+//
+// Depth precision: a depth is the linear distance along the texel's ray from the face's near
+// boundary (the near plane of an orthographic face; for a perspective face, the sphere around
+// the light that touches the volume's bounding sphere), stored as a 32-bit float. Stored
+// depths therefore lie in [0, about 2.02 bounding radii] however near or far the light is, and
+// their error is at most 2^-24 of that: unlike a hyperbolic z-buffer, precision does not depend
+// on a near/far ratio (TestLightSpace checks ratios of 1e6 both ways). A positional light
+// farther than FarLightRadii bounding radii gets an orthographic face along its direction to
+// the volume (directions then differ from its own by at most 1/FarLightRadii rad), because a
+// perspective face that narrow cannot be resolved in 32-bit floats on the GPU.
+#ifndef deepshadow_LightSpace_h
+#define deepshadow_LightSpace_h
+
+#include "Shadows.h"
+#include "vtkDeepShadowCoreModule.h"
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace deepshadow
+{
+
+/** One face of a light-space map: a projection whose texels cast rays into the scene. */
+struct VTKDEEPSHADOWCORE_EXPORT ShadowMapFace
+{
+  bool Perspective = false;
+  glm::dvec3 Origin{ 0.0 };  // light position (perspective) or centre of the near plane
+  glm::dvec3 Forward{ 0.0, 0.0, -1.0 };
+  glm::dvec3 Right{ 1.0, 0.0, 0.0 };
+  glm::dvec3 Up{ 0.0, 1.0, 0.0 };
+  double Extent = 1.0;       // half-width of the near plane (ortho) or tan(half angle)
+  double Near = 0.0;         // perspective: where depth 0 is, in distance from the light
+
+  /** Texel ray through face coordinates (u, v) in [-1, 1], starting at depth 0. */
+  void TexelRay(double u, double v, glm::dvec3& origin, glm::dvec3& direction) const;
+  /** Face coordinates and depth of world point p; false if p is behind the face. */
+  bool Project(const glm::dvec3& p, double& u, double& v, double& depth) const;
+};
+
+/** Beyond this many bounding radii a positional light's face is orthographic. */
+constexpr double FarLightRadii = 1000.0;
+
+/** The depth stored where a texel's ray finds nothing (the largest float). */
+constexpr float NoHit = std::numeric_limits<float>::max();
+
+/** Bounding sphere (world) of the box [0, dims - 1] of index space mapped by indexToWorld. */
+VTKDEEPSHADOWCORE_EXPORT void VolumeBoundingSphere(
+  const glm::dmat4& indexToWorld, const glm::ivec3& dims, glm::dvec3& centre, double& radius);
+
+/**
+ * The faces a light needs to see a bounding sphere (centre, radius): one orthographic face
+ * for a directional light or a positional one beyond FarLightRadii, one perspective face for
+ * a positional light outside the sphere, six (a cube: +x, -x, +y, -y, +z, -z) inside it.
+ */
+VTKDEEPSHADOWCORE_EXPORT std::vector<ShadowMapFace> ShadowMapFaces(
+  const Light& light, const glm::dvec3& centre, double radius);
+
+/** For a cube of faces, the face that sees direction `fromLight` (major axis); 0 otherwise. */
+VTKDEEPSHADOWCORE_EXPORT int ShadowMapFaceFor(
+  const std::vector<ShadowMapFace>& faces, const glm::dvec3& fromLight);
+
+/**
+ * Visits the samples of a texel's ray through the volume's box: sample j at depth
+ * t = entry + (j + 0.5) * step (entry clamped to 0), with the scalar there. The visitor
+ * returns false to stop. With `empty`, a run of samples in empty blocks is visited once, at
+ * its last sample inside the box, with skipped = true (they have opacity 0: this is exact).
+ */
+VTKDEEPSHADOWCORE_EXPORT void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin,
+  const glm::dvec3& direction, double step, const EmptySpaceMap* empty,
+  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit);
+
+/**
+ * The common part of light-space techniques: the faces of one light, MapSize^2 texels per
+ * face, and where a world point falls. Subclasses fill their texels in their constructor
+ * with ForEachTexel and answer Visibility() from them.
+ */
+class VTKDEEPSHADOWCORE_EXPORT LightSpaceShadow : public LightShadow
+{
+public:
+  /** Locates p on the faces (lit where no face sees it) and asks MapVisibility(). */
+  glm::dvec3 Visibility(const glm::dvec3& p) const final;
+  const std::vector<ShadowMapFace>& GetFaces() const { return this->Faces; }
+  int GetSize() const { return this->Size; }
+
+protected:
+  LightSpaceShadow(const ShadowParameters& parameters, const ShadowCaster& caster,
+    const Light& light, double step);
+
+  /** Calls build(face, x, y, origin, direction) for every texel of every face, in parallel. */
+  void ForEachTexel(int threads,
+    const std::function<void(int, int, int, const glm::dvec3&, const glm::dvec3&)>& build) const;
+
+  /**
+   * The visibility at continuous texel position (x, y) of a face (texel centres at integers)
+   * and `depth`: the technique's lookup.
+   */
+  virtual glm::dvec3 MapVisibility(int face, double x, double y, double depth) const = 0;
+
+  /**
+   * value(texel) blended bilinearly over the four texels around (x, y) of a face (texel
+   * indices as Texel() gives them).
+   */
+  glm::dvec3 Bilinear(int face, double x, double y,
+    const std::function<glm::dvec3(size_t texel)>& value) const;
+
+  /** Index of texel (x, y) of a face, clamped to the face's edge. */
+  size_t Texel(int face, int x, int y) const;
+  size_t TexelCount() const;
+
+  ShadowParameters Parameters;
+  ShadowCaster Caster;
+  int Size;
+  double Step;
+  std::vector<ShadowMapFace> Faces;
+};
+
+/** Builds a light-space technique's shadow (called by MakeLightShadow). */
+std::unique_ptr<LightShadow> MakeLightSpaceShadow(const ShadowParameters& parameters,
+  const ShadowCaster& caster, const Light& light, double step, int threads);
+
+}
+#endif

@@ -1,0 +1,43 @@
+// Shadow maps ("B" of Ropinski et al.), CPU twin: per texel the depth of the first sample
+// above the threshold; a point is lit where its depth minus the bias is not behind it,
+// percentage-closer filtered. GLSL twins: Shaders/Shadows/ShadowMap.glsl (lookup) and
+// Shaders/Shadows/ShadowMapBuild.glsl (build).
+#ifndef deepshadow_ShadowMap_h
+#define deepshadow_ShadowMap_h
+
+#include "LightSpace.h"
+#include "vtkDeepShadowCoreModule.h"
+
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+namespace deepshadow
+{
+
+/** The Poisson disc of the Poisson filter, in texels (the GLSL twin is generated from it). */
+VTKDEEPSHADOWCORE_EXPORT const std::vector<glm::dvec2>& PoissonDisc();
+
+/**
+ * Percentage-closer filtering of depth comparisons on a size x size map at continuous texel
+ * position (x, y) (texel centres at integers): the twin of the GLSL lookup.
+ */
+VTKDEEPSHADOWCORE_EXPORT double FilterShadowMap(const float* depths, int size, double x,
+  double y, double depth, ShadowFilter filter);
+
+class VTKDEEPSHADOWCORE_EXPORT ShadowMapShadow : public LightSpaceShadow
+{
+public:
+  ShadowMapShadow(const ShadowParameters& parameters, const ShadowCaster& caster,
+    const Light& light, double step, int threads);
+  size_t Bytes() const override { return this->Depths.size() * sizeof(float); }
+
+protected:
+  glm::dvec3 MapVisibility(int face, double x, double y, double depth) const override;
+
+private:
+  std::vector<float> Depths; // per face, size x size; NoHit where no sample is above
+};
+
+}
+#endif

@@ -1,0 +1,91 @@
+/**
+ * @class   vtkDeepShadowDeepShadowMapTechnique
+ * @brief   Deep shadow maps with a guaranteed error bound (Lokovic and Veach; Ropinski et al.,
+ *          section 3).
+ *
+ * Per light-space texel (see vtkDeepShadowLightSpaceTechnique), the visibility V(z) along the
+ * texel's ray (transmittance from the light to depth z), sampled every feeler step and
+ * compressed on the GPU into at most Layers nodes of a piecewise-linear V' with
+ * |V' - V| <= Epsilon at every sample depth. A texel that needs more nodes is compressed
+ * again with a doubled bound (Epsilon' = max(2 Epsilon', 1/1024)) until it fits: its error
+ * grows instead of its shadow being cut off. The last build's statistics (nodes needed per
+ * texel at Epsilon, average and maximum, texels that overflowed, the largest bound used) say
+ * how many layers a scene needs, as Table 4 of Ropinski et al. does.
+ *
+ * Lookup: linear in depth between the two nodes that bracket the point, bilinear across the
+ * four nearest texels. Coloured: one visibility per RGB channel, (1 - alpha (1 - colour)) per
+ * sample, with nodes at shared depths. Memory: Layers x 8 bytes per texel (16 coloured).
+ * deepshadow::DeepShadowMap (Core/Shadows/DeepShadowMap.h) is the CPU twin.
+ */
+#ifndef vtkDeepShadowDeepShadowMapTechnique_h
+#define vtkDeepShadowDeepShadowMapTechnique_h
+
+#include "vtkDeepShadowLightSpaceTechnique.h"
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+
+#include <memory> // For std::unique_ptr
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowDeepShadowMapTechnique
+  : public vtkDeepShadowLightSpaceTechnique
+{
+public:
+  static vtkDeepShadowDeepShadowMapTechnique* New();
+  vtkTypeMacro(vtkDeepShadowDeepShadowMapTechnique, vtkDeepShadowLightSpaceTechnique);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The compression bound on |V' - V| (default 0.01; [0, 1], warned). 0 is exact. */
+  void SetEpsilon(double epsilon);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /** Nodes stored per texel (default 8, as in Voreen; [1, 256], warned). */
+  void SetLayers(int layers);
+  vtkGetMacro(Layers, int);
+  ///@}
+
+  ///@{
+  /** One visibility per colour channel (default off). */
+  vtkSetMacro(Colored, bool);
+  vtkGetMacro(Colored, bool);
+  vtkBooleanMacro(Colored, bool);
+  ///@}
+
+  ///@{
+  /** Statistics of the last build (over texels whose ray meets the volume). */
+  double GetNodesAverage() const;
+  int GetNodesMax() const;
+  long long GetTexelsOverflowed() const;
+  double GetEpsilonMax() const;
+  ///@}
+
+  deepshadow::ShadowParameters GetParameters() const override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkDeepShadowDeepShadowMapTechnique();
+  ~vtkDeepShadowDeepShadowMapTechnique() override;
+
+  std::vector<double> GetStructureKey() const override;
+  unsigned int GetTexelFormat() const override;
+  int GetLayersPerFace() const override { return this->Layers; }
+  std::string GetBuildSource() const override;
+  std::string GetMapLookupSource() const override;
+  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
+  void BeginMapBuild() override;
+  void EndMapBuild() override;
+
+  double Epsilon = 0.01;
+  int Layers = 8;
+  bool Colored = false;
+
+private:
+  vtkDeepShadowDeepShadowMapTechnique(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
+  void operator=(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
+
+  class Statistics;
+  std::unique_ptr<Statistics> Stats;
+};
+
+#endif

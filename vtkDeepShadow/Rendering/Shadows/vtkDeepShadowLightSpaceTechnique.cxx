@@ -1,0 +1,259 @@
+#include "vtkDeepShadowLightSpaceTechnique.h"
+
+#include "GL/ComputeProgram.h"
+#include "LightSpace.h"
+#include "ShadowContext.h"
+#include "ShadowSlots.h"
+#include "vtkDeepShadowLightSpace.h"
+#include "vtkDeepShadowLightSpaceCS.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+// The texels of every face of every shadow-casting light: one 2D array texture, layer
+// ((slot * FacesPerLight) + face) * LayersPerFace + k, and the pass that fills it.
+class vtkDeepShadowLightSpaceTechnique::Maps
+{
+public:
+  unsigned int Texture = 0;
+  unsigned int Format = 0;
+  int Size = 0;
+  int Slabs = 0;
+  int FacesPerLight = 1; // 6 once some light needs a cube of faces
+  int LayersPerFace = 1;
+  int Unit = -1;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  std::vector<std::vector<deepshadow::ShadowMapFace>> Faces; // per slot
+  deepshadow::ComputeProgram Build;
+
+  void Release()
+  {
+    if (this->Texture)
+    {
+      glDeleteTextures(1, &this->Texture);
+      this->Texture = 0;
+    }
+    this->Build.Release();
+  }
+};
+
+namespace
+{
+int BytesPerTexel(unsigned int format)
+{
+  switch (format)
+  {
+    case GL_R32F:
+      return 4;
+    case GL_RG32F:
+      return 8;
+    default:
+      return 16;
+  }
+}
+}
+
+vtkDeepShadowLightSpaceTechnique::vtkDeepShadowLightSpaceTechnique()
+  : LightMaps(new Maps)
+{
+}
+
+vtkDeepShadowLightSpaceTechnique::~vtkDeepShadowLightSpaceTechnique() = default;
+
+void vtkDeepShadowLightSpaceTechnique::SetMapSize(int size)
+{
+  this->SetClamped("MapSize", this->MapSize, size, 1, 65536);
+}
+
+bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
+  deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots)
+{
+  Maps& maps = *this->LightMaps;
+  maps.Window = context.Window;
+  GLint maxSize = 0, maxLayers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+  if (this->MapSize > maxSize)
+  {
+    this->LastError = "shadow map size " + std::to_string(this->MapSize) +
+      " exceeds this GL's texture limit of " + std::to_string(maxSize);
+    return false;
+  }
+  glm::dvec3 centre;
+  double radius = 0.0;
+  deepshadow::VolumeBoundingSphere(context.IndexToWorld, context.Dims, centre, radius);
+  maps.Faces.resize(static_cast<size_t>(slots.Count()));
+  int facesPerLight = 1;
+  for (int slot = 0; slot < slots.Count(); ++slot)
+  {
+    maps.Faces[slot] = deepshadow::ShadowMapFaces(
+      context.Lights[static_cast<size_t>(slots.Light(slot))], centre, radius);
+    facesPerLight = std::max(facesPerLight, static_cast<int>(maps.Faces[slot].size()));
+  }
+  const unsigned int format = this->GetTexelFormat();
+  const int layersPerFace = this->GetLayersPerFace();
+  const bool sameShape = maps.Texture && maps.Size == this->MapSize && maps.Format == format &&
+    maps.LayersPerFace == layersPerFace;
+  // Grow only: fewer shadow-casting lights keep the others' maps.
+  const int slabs = std::max(sameShape ? maps.Slabs : 1, slots.Count());
+  facesPerLight = std::max(facesPerLight, sameShape ? maps.FacesPerLight : 1);
+  const long long layers = static_cast<long long>(slabs) * facesPerLight * layersPerFace;
+  if (layers > maxLayers)
+  {
+    this->LastError = std::to_string(layers) + " light-space layers (" + std::to_string(slabs) +
+      " lights x " + std::to_string(facesPerLight) + " faces x " + std::to_string(layersPerFace) +
+      " per face) exceed this GL's limit of " + std::to_string(maxLayers);
+    return false;
+  }
+  if (!sameShape || maps.Slabs != slabs || maps.FacesPerLight != facesPerLight)
+  {
+    if (maps.Texture)
+    {
+      glDeleteTextures(1, &maps.Texture);
+    }
+    while (glGetError() != GL_NO_ERROR)
+    {
+      // errors of earlier GL calls are not ours to report
+    }
+    glGenTextures(1, &maps.Texture);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, this->MapSize, this->MapSize, static_cast<GLsizei>(layers));
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    if (glGetError() != GL_NO_ERROR)
+    {
+      this->LastError = "the GL could not allocate " +
+        std::to_string(layers * this->MapSize * this->MapSize * BytesPerTexel(format)) +
+        " bytes of light-space maps";
+      glDeleteTextures(1, &maps.Texture);
+      maps.Texture = 0;
+      return false;
+    }
+    maps.Format = format;
+    maps.Size = this->MapSize;
+    maps.Slabs = slabs;
+    maps.FacesPerLight = facesPerLight;
+    maps.LayersPerFace = layersPerFace;
+    slots.Invalidate();
+  }
+  return true;
+}
+
+long long vtkDeepShadowLightSpaceTechnique::GetStructureBytes() const
+{
+  const Maps& maps = *this->LightMaps;
+  if (!maps.Texture)
+  {
+    return 0;
+  }
+  return static_cast<long long>(maps.Size) * maps.Size * maps.Slabs * maps.FacesPerLight *
+    maps.LayersPerFace * BytesPerTexel(maps.Format);
+}
+
+bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext& context,
+  const deepshadow::ShadowSlots&, const std::vector<int>& stale)
+{
+  Maps& maps = *this->LightMaps;
+  if (!this->BeginBuildPass(maps.Build, vtkDeepShadowLightSpaceCS, context, "Build", this->GetBuildSource()))
+  {
+    return false;
+  }
+  deepshadow::UniformSink sink(&maps.Build);
+  maps.Build.Set("u_size", this->MapSize);
+  maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
+  this->SetBuildUniforms(sink, context);
+  this->BeginMapBuild();
+  glBindImageTexture(0, maps.Texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, maps.Format);
+  for (int slot : stale)
+  {
+    for (size_t f = 0; f < maps.Faces[slot].size(); ++f)
+    {
+      const deepshadow::ShadowMapFace& face = maps.Faces[slot][f];
+      maps.Build.Set("u_layer", (slot * maps.FacesPerLight + static_cast<int>(f)) * maps.LayersPerFace);
+      maps.Build.Set("u_face", static_cast<int>(f));
+      maps.Build.Set("u_perspective", face.Perspective ? 1 : 0);
+      maps.Build.Set("u_origin", glm::vec3(face.Origin));
+      maps.Build.Set("u_forward", glm::vec3(face.Forward));
+      maps.Build.Set("u_right", glm::vec3(face.Right));
+      maps.Build.Set("u_up", glm::vec3(face.Up));
+      maps.Build.Set("u_extent", static_cast<float>(face.Extent));
+      maps.Build.Set("u_near", static_cast<float>(face.Near));
+      maps.Build.Dispatch(glm::ivec3(this->MapSize, this->MapSize, 1), glm::ivec3(8, 8, 1));
+    }
+  }
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, maps.Format);
+  this->EndBuildPass(context);
+  this->EndMapBuild();
+  return true;
+}
+
+std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
+{
+  return vtkDeepShadowLightSpace + this->GetMapLookupSource();
+}
+
+void vtkDeepShadowLightSpaceTechnique::BindLookup(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
+{
+  Maps& maps = *this->LightMaps;
+  maps.Unit = context.Window->GetTextureUnitManager()->Allocate();
+  glActiveTexture(GL_TEXTURE0 + maps.Unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
+  sink.Set("u_shadowMap", maps.Unit);
+  std::vector<int> faceCount, perspective;
+  std::vector<glm::vec3> origin, forward, right, up;
+  std::vector<float> extent, nearDistance;
+  for (const auto& faces : maps.Faces)
+  {
+    faceCount.push_back(static_cast<int>(faces.size()));
+    perspective.push_back(faces.front().Perspective ? 1 : 0);
+    origin.emplace_back(faces.front().Origin);
+    forward.emplace_back(faces.front().Forward);
+    right.emplace_back(faces.front().Right);
+    up.emplace_back(faces.front().Up);
+    extent.push_back(static_cast<float>(faces.front().Extent));
+    nearDistance.push_back(static_cast<float>(faces.front().Near));
+  }
+  sink.Set("u_shadowFaceCount", faceCount);
+  sink.Set("u_shadowPerspective", perspective);
+  sink.Set("u_shadowOrigin", origin);
+  sink.Set("u_shadowForward", forward);
+  sink.Set("u_shadowRight", right);
+  sink.Set("u_shadowUp", up);
+  sink.Set("u_shadowExtent", extent);
+  sink.Set("u_shadowNear", nearDistance);
+  sink.Set("u_shadowSize", static_cast<float>(this->MapSize));
+  sink.Set("u_shadowFacesPerLight", maps.FacesPerLight);
+  sink.Set("u_shadowLayersPerFace", maps.LayersPerFace);
+  this->SetMapLookupUniforms(sink, context);
+}
+
+void vtkDeepShadowLightSpaceTechnique::UnbindLookup()
+{
+  Maps& maps = *this->LightMaps;
+  if (maps.Unit >= 0)
+  {
+    glActiveTexture(GL_TEXTURE0 + maps.Unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    maps.Window->GetTextureUnitManager()->Free(maps.Unit);
+    maps.Unit = -1;
+  }
+}
+
+void vtkDeepShadowLightSpaceTechnique::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Superclass::ReleaseGraphicsResources(window);
+  this->LightMaps->Release();
+}
+
+void vtkDeepShadowLightSpaceTechnique::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MapSize: " << this->MapSize << "\n";
+}

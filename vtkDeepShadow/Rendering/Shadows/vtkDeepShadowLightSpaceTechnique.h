@@ -1,0 +1,80 @@
+/**
+ * @class   vtkDeepShadowLightSpaceTechnique
+ * @brief   Base of the techniques that store something per light-space texel.
+ *
+ * Shadow maps, deep shadow maps, opacity levels and stochastic shadow maps all see the
+ * volume from each shadow-casting light (at most 4) through faces: one orthographic face
+ * for a directional light (or a positional one farther than 1000 bounding radii), one
+ * perspective face for a positional or spot light outside the volume's bounding sphere, a
+ * cube of six faces for one inside it. Each face has MapSize x MapSize texels whose rays are
+ * marched through the volume by a compute pass; depths along them are linear distances from
+ * the face's near boundary, 32-bit floats (see Core/Shadows/LightSpace.h for why that keeps
+ * its precision at any near/far ratio). The texels of all faces of all lights live in one 2D
+ * array texture, a technique-defined number of layers per face.
+ */
+#ifndef vtkDeepShadowLightSpaceTechnique_h
+#define vtkDeepShadowLightSpaceTechnique_h
+
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkDeepShadowTechnique.h"
+
+#include <memory> // For std::unique_ptr
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowLightSpaceTechnique : public vtkDeepShadowTechnique
+{
+public:
+  vtkTypeMacro(vtkDeepShadowLightSpaceTechnique, vtkDeepShadowTechnique);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Texels per side of each face (default 512; [1, 65536], warned). Above the GL's texture
+   * limit is an error at render time (the volume is then drawn without shadows).
+   */
+  void SetMapSize(int size);
+  vtkGetMacro(MapSize, int);
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkDeepShadowLightSpaceTechnique();
+  ~vtkDeepShadowLightSpaceTechnique() override;
+
+  // ---- What a light-space technique provides ----
+
+  /** GL internal format of its texels (GL_R32F, GL_RG32F or GL_RGBA32F). */
+  virtual unsigned int GetTexelFormat() const = 0;
+  /** Layers per face (deep shadow map nodes, stochastic photons). */
+  virtual int GetLayersPerFace() const { return 1; }
+  /** Its build: the parts Dec and Texel of vtkDeepShadowLightSpaceCS.glsl's runtime Build. */
+  virtual std::string GetBuildSource() const = 0;
+  /** Its lookup, over Shadows/LightSpace.glsl. */
+  virtual std::string GetMapLookupSource() const = 0;
+  virtual void SetBuildUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
+  virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
+  /** Around the build pass's dispatches (the deep shadow map gathers statistics). */
+  virtual void BeginMapBuild() {}
+  virtual void EndMapBuild() {}
+
+  // ---- vtkDeepShadowTechnique ----
+  int GetMaxShadowLights() const override { return 4; }
+  bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;
+  bool BuildStructures(deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots,
+    const std::vector<int>& stale) override;
+  long long GetStructureBytes() const override;
+  std::string GetLookupSource() const override;
+  void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
+  void UnbindLookup() override;
+
+  int MapSize = 512;
+
+private:
+  vtkDeepShadowLightSpaceTechnique(const vtkDeepShadowLightSpaceTechnique&) = delete;
+  void operator=(const vtkDeepShadowLightSpaceTechnique&) = delete;
+
+  class Maps;
+  std::unique_ptr<Maps> LightMaps;
+};
+
+#endif

@@ -1,0 +1,76 @@
+#include "vtkDeepShadowOpacityLevelsTechnique.h"
+
+#include "ShadowContext.h"
+#include "Shadows.h"
+#include "vtkDeepShadowOpacityLevels.h"
+#include "vtkDeepShadowOpacityLevelsBuild.h"
+
+#include "vtkObjectFactory.h"
+#include "vtk_glew.h"
+
+vtkStandardNewMacro(vtkDeepShadowOpacityLevelsTechnique);
+
+void vtkDeepShadowOpacityLevelsTechnique::SetLevels(double first, double second, double third)
+{
+  if (!(first > 0.0 && first < second && second < third && third <= 1.0))
+  {
+    vtkErrorMacro("opacity levels must increase strictly within (0, 1]; got " << first << ", "
+                                                                              << second << ", " << third);
+    return;
+  }
+  if (first != this->Levels[0] || second != this->Levels[1] || third != this->Levels[2])
+  {
+    this->Levels[0] = first;
+    this->Levels[1] = second;
+    this->Levels[2] = third;
+    this->Modified();
+  }
+}
+
+deepshadow::ShadowParameters vtkDeepShadowOpacityLevelsTechnique::GetParameters() const
+{
+  deepshadow::ShadowParameters parameters;
+  this->FillParameters(parameters);
+  parameters.Kind = deepshadow::ShadowKind::OpacityLevels;
+  parameters.MapSize = this->MapSize;
+  parameters.Levels = { { this->Levels[0], this->Levels[1], this->Levels[2] } };
+  return parameters;
+}
+
+std::vector<double> vtkDeepShadowOpacityLevelsTechnique::GetStructureKey() const
+{
+  return { static_cast<double>(this->MapSize), this->Levels[0], this->Levels[1], this->Levels[2] };
+}
+
+unsigned int vtkDeepShadowOpacityLevelsTechnique::GetTexelFormat() const
+{
+  return GL_RGBA32F;
+}
+
+std::string vtkDeepShadowOpacityLevelsTechnique::GetBuildSource() const
+{
+  return vtkDeepShadowOpacityLevelsBuild;
+}
+
+std::string vtkDeepShadowOpacityLevelsTechnique::GetMapLookupSource() const
+{
+  return vtkDeepShadowOpacityLevels;
+}
+
+void vtkDeepShadowOpacityLevelsTechnique::SetBuildUniforms(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
+{
+  sink.Set("u_levels", glm::vec3(this->Levels[0], this->Levels[1], this->Levels[2]));
+}
+
+void vtkDeepShadowOpacityLevelsTechnique::SetMapLookupUniforms(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
+{
+  this->SetBuildUniforms(sink, context);
+}
+
+void vtkDeepShadowOpacityLevelsTechnique::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Levels: " << this->Levels[0] << ", " << this->Levels[1] << ", " << this->Levels[2] << "\n";
+}

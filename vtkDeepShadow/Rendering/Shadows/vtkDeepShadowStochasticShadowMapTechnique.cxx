@@ -1,0 +1,93 @@
+#include "vtkDeepShadowStochasticShadowMapTechnique.h"
+
+#include "ShaderComposer.h"
+#include "ShadowContext.h"
+#include "Shadows.h"
+#include "StochasticShadowMap.h"
+#include "vtkDeepShadowStochasticShadowMap.h"
+#include "vtkDeepShadowStochasticShadowMapBuild.h"
+
+#include "vtkObjectFactory.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkDeepShadowStochasticShadowMapTechnique);
+
+void vtkDeepShadowStochasticShadowMapTechnique::SetOffsets(int offsets)
+{
+  if (offsets != 7 && offsets != 13 && offsets != 21)
+  {
+    vtkErrorMacro("CSSM offsets must be 7, 13 or 21, not " << offsets << "; keeping " << this->Offsets);
+    return;
+  }
+  if (offsets != this->Offsets)
+  {
+    this->Offsets = offsets;
+    this->Modified();
+  }
+}
+
+void vtkDeepShadowStochasticShadowMapTechnique::SetPhotons(int photons)
+{
+  this->SetClamped("Photons", this->Photons, photons, 1, 64);
+}
+
+deepshadow::ShadowParameters vtkDeepShadowStochasticShadowMapTechnique::GetParameters() const
+{
+  deepshadow::ShadowParameters parameters;
+  this->FillParameters(parameters);
+  parameters.Kind = deepshadow::ShadowKind::Stochastic;
+  parameters.MapSize = this->MapSize;
+  parameters.Offsets = this->Offsets;
+  parameters.Seed = this->Seed;
+  parameters.Photons = this->Photons;
+  return parameters;
+}
+
+std::vector<double> vtkDeepShadowStochasticShadowMapTechnique::GetStructureKey() const
+{
+  return { static_cast<double>(this->MapSize), static_cast<double>(this->Seed),
+    static_cast<double>(this->Photons) };
+}
+
+std::vector<double> vtkDeepShadowStochasticShadowMapTechnique::GetLookupKey() const
+{
+  return { static_cast<double>(this->Offsets) };
+}
+
+unsigned int vtkDeepShadowStochasticShadowMapTechnique::GetTexelFormat() const
+{
+  return GL_RGBA32F;
+}
+
+std::string vtkDeepShadowStochasticShadowMapTechnique::GetBuildSource() const
+{
+  return vtkDeepShadowStochasticShadowMapBuild;
+}
+
+std::string vtkDeepShadowStochasticShadowMapTechnique::GetMapLookupSource() const
+{
+  // The offsets come from Core, the CPU twin's table.
+  std::vector<std::string> offsets;
+  for (const glm::ivec2& offset : deepshadow::StochasticOffsets(this->Offsets))
+  {
+    offsets.push_back("ivec2(" + std::to_string(offset.x) + ", " + std::to_string(offset.y) + ")");
+  }
+  return deepshadow::GlslConstantArray("ivec2", "CSSM_OFFSET", "CSSM_OFFSETS", offsets) +
+    vtkDeepShadowStochasticShadowMap;
+}
+
+void vtkDeepShadowStochasticShadowMapTechnique::SetBuildUniforms(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
+{
+  sink.Set("u_cssmSeed", static_cast<int>(this->Seed));
+}
+
+void vtkDeepShadowStochasticShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Offsets: " << this->Offsets << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Photons: " << this->Photons << "\n";
+}

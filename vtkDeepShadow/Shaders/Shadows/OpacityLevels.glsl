@@ -1,0 +1,37 @@
+// Lookup of "dsm3": 0 before the first level's depth, smoothstep in depth from level to
+// level, the maximum opacity after the last, never above it; bilinear across the four
+// nearest texels (EvaluateOpacityLevels and OpacityLevelsShadow::Visibility in
+// Core/Shadows/OpacityLevels.cxx are the CPU twins).
+//@Dec
+uniform vec3 u_levels;
+
+float levelsOpacity(int layer, ivec2 texel, float depth)
+{
+  vec4 t = texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0);
+  float opacity;
+  if (depth < t.x)
+  {
+    opacity = 0.0;
+  }
+  else if (depth < t.y)
+  {
+    opacity = u_levels.x + smoothstep(t.x, t.y, depth) * (u_levels.y - u_levels.x);
+  }
+  else if (depth < t.z)
+  {
+    opacity = u_levels.y + smoothstep(t.y, t.z, depth) * (u_levels.z - u_levels.y);
+  }
+  else
+  {
+    opacity = t.w;
+  }
+  return min(opacity, t.w);
+}
+
+vec3 mapVisibility(int layer, vec2 xy, float depth)
+{
+  ivec2 i0;
+  vec4 w = lightSpaceBilinear(xy, i0);
+  return vec3(1.0 - w.x * levelsOpacity(layer, i0, depth) - w.y * levelsOpacity(layer, i0 + ivec2(1, 0), depth) -
+    w.z * levelsOpacity(layer, i0 + ivec2(0, 1), depth) - w.w * levelsOpacity(layer, i0 + ivec2(1, 1), depth));
+}

@@ -1,0 +1,13 @@
+// Feature Shadow, common part: every technique's lookup defines
+//   vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
+// (the light's visibility per colour channel), and this scales the light's contribution by
+// 1 - attenuation (1 - visibility), as deepshadow::ReferenceRenderer::MarchRay does.
+//@Dec
+uniform int u_shadowSlot[MaxLights];          // the light's shadow structure, -1: none
+uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
+//@Impl
+    if (u_shadowSlot[i] >= 0)
+    {
+      vec3 visibility = lightVisibility(u_shadowSlot[i], position, toLight, lightDistance);
+      contribution *= 1.0 - u_shadowAttenuation[i] * (1.0 - visibility);
+    }

@@ -1,0 +1,45 @@
+// Lookup of "shadowmap": the depth of the first sample above the threshold per texel,
+// percentage-closer filtered (FilterShadowMap in Core/Shadows/ShadowMap.cxx is the CPU twin).
+// SHADOW_FILTER and the Poisson disc are defined by the technique from Core's tables.
+//@Dec
+uniform float u_shadowBias; // world units
+
+float shadowLit(int layer, ivec2 texel, float depth)
+{
+  return depth <= texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0).r ? 1.0 : 0.0;
+}
+
+float filteredShadow(int layer, vec2 xy, float depth)
+{
+  ivec2 nearest = ivec2(floor(xy + 0.5));
+#if SHADOW_FILTER == 0
+  return shadowLit(layer, nearest, depth);
+#elif SHADOW_FILTER == 1
+  ivec2 i0;
+  vec4 w = lightSpaceBilinear(xy, i0);
+  return w.x * shadowLit(layer, i0, depth) + w.y * shadowLit(layer, i0 + ivec2(1, 0), depth) +
+    w.z * shadowLit(layer, i0 + ivec2(0, 1), depth) + w.w * shadowLit(layer, i0 + ivec2(1, 1), depth);
+#elif SHADOW_FILTER == 2
+  float sum = 0.0;
+  for (int dj = -1; dj <= 1; ++dj)
+  {
+    for (int di = -1; di <= 1; ++di)
+    {
+      sum += shadowLit(layer, nearest + ivec2(di, dj), depth);
+    }
+  }
+  return sum / 9.0;
+#else
+  float sum = 0.0;
+  for (int k = 0; k < POISSON_TAPS; ++k)
+  {
+    sum += shadowLit(layer, ivec2(floor(xy + POISSON_DISC[k] + 0.5)), depth);
+  }
+  return sum / float(POISSON_TAPS);
+#endif
+}
+
+vec3 mapVisibility(int layer, vec2 xy, float depth)
+{
+  return vec3(filteredShadow(layer, xy, depth - u_shadowBias));
+}

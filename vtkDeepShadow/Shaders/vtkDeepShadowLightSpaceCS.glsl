@@ -1,0 +1,71 @@
+#version 430 core
+// Build pass of the light-space techniques: one invocation per texel of one face of one
+// light. It casts the texel's ray (ShadowMapFace::TexelRay), marches its samples as
+// MarchTexelRay in Core/Shadows/LightSpace.cxx does, and hands them to the technique's
+// runtime feature Build, which defines visitSample(), visitSkipped() (a run of empty blocks,
+// at its last sample) and buildTexel() (which calls marchTexel(), once or more).
+layout(local_size_x = 8, local_size_y = 8) in;
+//DeepShadow::VolumeSampling::Dec
+//DeepShadow::EmptySpace::Dec
+//DeepShadow::Feeler::Dec
+//DeepShadow::Hash::Dec
+uniform int u_size;
+uniform int u_layer;       // first layer of this face's texels
+uniform int u_layersPerFace;
+uniform int u_face;        // the face's index among its light's faces
+uniform int u_perspective;
+uniform vec3 u_origin;
+uniform vec3 u_forward;
+uniform vec3 u_right;
+uniform vec3 u_up;
+uniform float u_extent;
+uniform float u_near;
+
+const float NoHit = 3.4028235e38;
+ivec2 g_texel;
+//DeepShadow::Build::Dec
+
+void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
+{
+  vec3 indexStep = indexDirection * u_feelerStep;
+  for (int j = 0;; ++j)
+  {
+    float t = tEnter + (float(j) + 0.5) * u_feelerStep;
+    if (!(t < tExit))
+    {
+      break;
+    }
+    vec3 sampleIndex = indexOrigin + t * indexDirection;
+    //DeepShadow::EmptySpace::TexelSkip
+    if (!visitSample(j, t, sampleScalar(sampleIndex)))
+    {
+      break;
+    }
+  }
+}
+//DeepShadow::Build::Texel
+
+void main()
+{
+  g_texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(g_texel, ivec2(u_size))))
+  {
+    return;
+  }
+  vec2 uv = 2.0 * (vec2(g_texel) + 0.5) / float(u_size) - 1.0;
+  vec3 origin, direction;
+  if (u_perspective != 0)
+  {
+    direction = normalize(u_forward + uv.x * u_extent * u_right + uv.y * u_extent * u_up);
+    origin = u_origin + u_near * direction;
+  }
+  else
+  {
+    origin = u_origin + uv.x * u_extent * u_right + uv.y * u_extent * u_up;
+    direction = u_forward;
+  }
+  vec3 indexOrigin = (u_worldToIndex * vec4(origin, 1.0)).xyz;
+  vec3 indexDirection = (u_worldToIndex * vec4(direction, 0.0)).xyz;
+  vec2 inside = boxInterval(indexOrigin, indexDirection);
+  buildTexel(indexOrigin, indexDirection, max(inside.x, 0.0), inside.y);
+}
