@@ -157,7 +157,7 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--shadow-threshold")
   {
     o.ShadowThreshold = ParseNumber(key, next());
-    if (o.ShadowThreshold < 0.0 || o.ShadowThreshold > 1.0)
+    if (*o.ShadowThreshold < 0.0 || *o.ShadowThreshold > 1.0)
     {
       throw UsageError("--shadow-threshold must be in [0, 1]");
     }
@@ -176,7 +176,7 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--shadow-step-factor")
   {
     o.ShadowStepFactor = ParseNumber(key, next());
-    if (o.ShadowStepFactor < 0.01 || o.ShadowStepFactor > 100.0)
+    if (*o.ShadowStepFactor < 0.01 || *o.ShadowStepFactor > 100.0)
     {
       throw UsageError("--shadow-step-factor must be in [0.01, 100]");
     }
@@ -195,16 +195,16 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--pcf")
   {
     o.Filter = next();
-    if (o.Filter != "none" && o.Filter != "2x2" && o.Filter != "3x3" && o.Filter != "poisson")
+    if (*o.Filter != "none" && *o.Filter != "2x2" && *o.Filter != "3x3" && *o.Filter != "poisson")
     {
-      throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + o.Filter + "'");
+      throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + *o.Filter + "'");
     }
     return true;
   }
   if (key == "--epsilon")
   {
     o.Epsilon = ParseNumber(key, next());
-    if (!(o.Epsilon >= 0.0 && o.Epsilon <= 1.0))
+    if (!(*o.Epsilon >= 0.0 && *o.Epsilon <= 1.0))
     {
       throw UsageError("--epsilon must be in [0, 1]");
     }
@@ -222,12 +222,13 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
     {
       throw UsageError("--opacity-levels expects A,B,C");
     }
+    std::array<double, 3> levels;
     for (int k = 0; k < 3; ++k)
     {
-      o.OpacityLevels[k] = ParseNumber(key, parts[k]);
+      levels[k] = ParseNumber(key, parts[k]);
     }
-    if (!(o.OpacityLevels[0] > 0.0 && o.OpacityLevels[0] < o.OpacityLevels[1] &&
-          o.OpacityLevels[1] < o.OpacityLevels[2] && o.OpacityLevels[2] <= 1.0))
+    o.OpacityLevels = levels;
+    if (!(levels[0] > 0.0 && levels[0] < levels[1] && levels[1] < levels[2] && levels[2] <= 1.0))
     {
       throw UsageError("--opacity-levels must increase strictly within (0, 1]");
     }
@@ -236,7 +237,7 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--cssm-offsets")
   {
     o.CssmOffsets = ParseInteger(key, next(), 7, 21);
-    if (o.CssmOffsets != 7 && o.CssmOffsets != 13 && o.CssmOffsets != 21)
+    if (*o.CssmOffsets != 7 && *o.CssmOffsets != 13 && *o.CssmOffsets != 21)
     {
       throw UsageError("--cssm-offsets must be 7, 13 or 21");
     }
@@ -255,7 +256,7 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--bias")
   {
     o.Bias = ParseNumber(key, next());
-    if (o.Bias < 0.0)
+    if (*o.Bias < 0.0)
     {
       throw UsageError("--bias must not be negative");
     }
@@ -345,10 +346,11 @@ RENDERING:
                           the normalized scalar with --threshold-on scalar
   --threshold-on opacity|scalar
   --shadow-step-factor F  feeler / light-ray step as a factor of the sample distance (default 1)
-  --shadow-volume-size N  *-cached: shadow volume nodes along the longest axis (default 128)
+  --shadow-volume-size N  *-cached: shadow volume nodes along the longest axis (default
+                          128 for rays, 64 for the map techniques)
   --shadow-map-size N     shadowmap, dsm*, cssm: texels per side (default 512)
   --epsilon E             dsm: bound on the compressed visibility's error, in [0, 1]
-                          (default 0.01)
+                          (default 0.03)
   --layers N              dsm: nodes per texel, 1 to 256 (default 8)
   --opacity-levels A,B,C  dsm3: opacity levels (default 0.1,0.5,0.9)
   --cssm-offsets M        cssm: texel offsets averaged per lookup, 7, 13 or 21 (default 13)

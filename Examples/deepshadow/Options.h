@@ -3,6 +3,7 @@
 #define deepshadow_tool_Options_h
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -54,19 +55,20 @@ struct Options
   bool EmptySpaceSkipping = true;
   bool ReplaceNonFinite = false;
   std::string Technique = "none";
-  double ShadowThreshold = 0.5;
+  // The technique's parameters: unset ones keep the technique's own defaults.
+  std::optional<double> ShadowThreshold;
   bool ThresholdOnScalar = false;
-  double ShadowStepFactor = 1.0;
-  int ShadowVolumeSize = 128;
-  int ShadowMapSize = 512;
-  std::string Filter = "3x3";
-  double Bias = 2.0;
-  double Epsilon = 0.01;
-  int Layers = 8;
-  std::array<double, 3> OpacityLevels{ { 0.1, 0.5, 0.9 } };
-  int CssmOffsets = 13;
-  unsigned int CssmSeed = 0;
-  int CssmPhotons = 1;
+  std::optional<double> ShadowStepFactor;
+  std::optional<int> ShadowVolumeSize;
+  std::optional<int> ShadowMapSize;
+  std::optional<std::string> Filter;
+  std::optional<double> Bias;
+  std::optional<double> Epsilon;
+  std::optional<int> Layers;
+  std::optional<std::array<double, 3>> OpacityLevels;
+  std::optional<int> CssmOffsets;
+  std::optional<unsigned int> CssmSeed;
+  std::optional<int> CssmPhotons;
   std::string Backend; // "" = VTK_DEEPSHADOW_BACKEND or OSMesa
 
   // Outputs and measurement.

@@ -62,7 +62,6 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 
 vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
 {
-  vtkSmartPointer<vtkDeepShadowTechnique> technique;
   std::string name = options.Technique;
   const std::string cachedSuffix = "-cached";
   const bool cached = name.size() > cachedSuffix.size() &&
@@ -71,10 +70,8 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
   {
     name.resize(name.size() - cachedSuffix.size());
   }
-  auto lightSpace = [&](vtkDeepShadowLightSpaceTechnique* map) {
-    map->SetMapSize(options.ShadowMapSize);
-    technique = map;
-  };
+  vtkSmartPointer<vtkDeepShadowTechnique> technique;
+  vtkDeepShadowLightSpaceTechnique* lightSpace = nullptr;
   if (name == "rays" || name == "rays-opaque" || name == "rays-color")
   {
     auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
@@ -85,43 +82,81 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
   else if (name == "shadowmap")
   {
     auto map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
-    map->SetBias(options.Bias);
-    map->SetFilter(options.Filter == "none" ? vtkDeepShadowShadowMapTechnique::NoFilter
-        : options.Filter == "2x2"           ? vtkDeepShadowShadowMapTechnique::PCF2x2
-        : options.Filter == "3x3"           ? vtkDeepShadowShadowMapTechnique::PCF3x3
-                                            : vtkDeepShadowShadowMapTechnique::PoissonDisc);
-    lightSpace(map);
+    if (options.Bias)
+    {
+      map->SetBias(*options.Bias);
+    }
+    if (options.Filter)
+    {
+      map->SetFilter(*options.Filter == "none" ? vtkDeepShadowShadowMapTechnique::NoFilter
+          : *options.Filter == "2x2"           ? vtkDeepShadowShadowMapTechnique::PCF2x2
+          : *options.Filter == "3x3"           ? vtkDeepShadowShadowMapTechnique::PCF3x3
+                                               : vtkDeepShadowShadowMapTechnique::PoissonDisc);
+    }
+    technique = lightSpace = map;
   }
   else if (name == "dsm" || name == "dsm-color")
   {
     auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
-    dsm->SetEpsilon(options.Epsilon);
-    dsm->SetLayers(options.Layers);
     dsm->SetColored(name == "dsm-color");
-    lightSpace(dsm);
+    if (options.Epsilon)
+    {
+      dsm->SetEpsilon(*options.Epsilon);
+    }
+    if (options.Layers)
+    {
+      dsm->SetLayers(*options.Layers);
+    }
+    technique = lightSpace = dsm;
   }
   else if (name == "dsm3")
   {
     auto levels = vtkSmartPointer<vtkDeepShadowOpacityLevelsTechnique>::New();
-    levels->SetLevels(options.OpacityLevels[0], options.OpacityLevels[1], options.OpacityLevels[2]);
-    lightSpace(levels);
+    if (options.OpacityLevels)
+    {
+      levels->SetLevels((*options.OpacityLevels)[0], (*options.OpacityLevels)[1], (*options.OpacityLevels)[2]);
+    }
+    technique = lightSpace = levels;
   }
   else if (name == "cssm")
   {
     auto cssm = vtkSmartPointer<vtkDeepShadowStochasticShadowMapTechnique>::New();
-    cssm->SetOffsets(options.CssmOffsets);
-    cssm->SetSeed(options.CssmSeed);
-    cssm->SetPhotons(options.CssmPhotons);
-    lightSpace(cssm);
+    if (options.CssmOffsets)
+    {
+      cssm->SetOffsets(*options.CssmOffsets);
+    }
+    if (options.CssmSeed)
+    {
+      cssm->SetSeed(*options.CssmSeed);
+    }
+    if (options.CssmPhotons)
+    {
+      cssm->SetPhotons(*options.CssmPhotons);
+    }
+    technique = lightSpace = cssm;
   }
-  if (technique)
+  if (!technique)
   {
-    technique->SetThreshold(options.ShadowThreshold);
-    technique->SetThresholdMode(options.ThresholdOnScalar ? vtkDeepShadowTechnique::ScalarThreshold
-                                                          : vtkDeepShadowTechnique::OpacityThreshold);
-    technique->SetStepFactor(options.ShadowStepFactor);
-    technique->SetCached(cached);
-    technique->SetShadowVolumeSize(options.ShadowVolumeSize);
+    return nullptr; // none
+  }
+  if (lightSpace && options.ShadowMapSize)
+  {
+    lightSpace->SetMapSize(*options.ShadowMapSize);
+  }
+  if (options.ShadowThreshold)
+  {
+    technique->SetThreshold(*options.ShadowThreshold);
+  }
+  technique->SetThresholdMode(options.ThresholdOnScalar ? vtkDeepShadowTechnique::ScalarThreshold
+                                                        : vtkDeepShadowTechnique::OpacityThreshold);
+  if (options.ShadowStepFactor)
+  {
+    technique->SetStepFactor(*options.ShadowStepFactor);
+  }
+  technique->SetCached(cached);
+  if (options.ShadowVolumeSize)
+  {
+    technique->SetShadowVolumeSize(*options.ShadowVolumeSize);
   }
   return technique;
 }

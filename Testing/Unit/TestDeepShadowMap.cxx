@@ -339,7 +339,7 @@ TEST(DeepShadowMap, OpaqueStructuresStayOpaqueAtTheDefaults)
   const auto map = MakeLightShadow(p, caster, Directional({ 0.0, 0.0, 1.0 }), 0.5, 2);
   const auto truth = MakeLightShadow(ShadowParameters::GroundTruth(false, 1.0), caster, Directional({ 0.0, 0.0, 1.0 }), 0.5);
   EXPECT_EQ(truth->Visibility({ 16, 16, 8 }).r, 0.0);
-  EXPECT_NEAR(map->Visibility({ 16, 16, 8 }).r, truth->Visibility({ 16, 16, 8 }).r, 0.01 + 1e-6);
+  EXPECT_NEAR(map->Visibility({ 16, 16, 8 }).r, truth->Visibility({ 16, 16, 8 }).r, p.Epsilon + 1e-6);
   EXPECT_EQ(map->Visibility({ 16, 16, 24 }).r, 1.0);
 }
 

@@ -2,7 +2,8 @@
 // Build pass of every cached technique: the technique's own lookup (the runtime feature
 // Lookup) evaluated at each node of the shadow grid, for one light, written into that
 // light's slab of the shadow texture (the CachedShadow constructor in Core/Shadows.cxx is
-// the CPU twin).
+// the CPU twin). Nodes that no view sample can interpolate from (all blocks within a node
+// spacing empty) are skipped: the pictures are the same, the pass is cheaper on sparse data.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 const int MaxLights = 8;
 //DeepShadow::VolumeSampling::Dec
@@ -21,6 +22,8 @@ uniform mat4 u_indexToWorld;
 uniform int u_lightPositional;
 uniform vec3 u_lightPosition;
 uniform vec3 u_lightToward; // directional lights: unit direction towards the light
+uniform int u_cacheSkipEmpty;
+uniform vec3 u_cacheReach;  // one node spacing, in voxels
 
 void main()
 {
@@ -30,6 +33,7 @@ void main()
     return;
   }
   vec3 index = vec3(node) * (u_dims - 1.0) / vec3(u_shadowDims - 1);
+  //DeepShadow::EmptySpace::CacheSkip
   vec3 world = (u_indexToWorld * vec4(index, 1.0)).xyz;
   vec3 toLight = u_lightToward;
   float lightDistance = 1e30;

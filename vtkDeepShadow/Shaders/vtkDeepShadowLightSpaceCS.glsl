@@ -3,7 +3,10 @@
 // light. It casts the texel's ray (ShadowMapFace::TexelRay), marches its samples as
 // MarchTexelRay in Core/Shadows/LightSpace.cxx does, and hands them to the technique's
 // runtime feature Build, which defines visitSample(), visitSkipped() (a run of empty blocks,
-// at its last sample) and buildTexel() (which calls marchTexel(), once or more).
+// at its last sample) and buildTexel() (which calls marchTexel(), once or more). A technique
+// may defer a texel (deferTexel()) to a second dispatch over the deferred texels only
+// (u_deferredPass = 1), for work that few texels need: in lockstep hardware, a texel that
+// works longer inside the first dispatch keeps its neighbours waiting.
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::EmptySpace::Dec
@@ -21,8 +24,20 @@ uniform vec3 u_up;
 uniform float u_extent;
 uniform float u_near;
 
+uniform int u_deferredPass;
+layout(std430, binding = 2) buffer DeferredTexels
+{
+  uint count;
+  uint texels[]; // x | y << 16
+} u_deferred;
+
 const float NoHit = 3.4028235e38;
 ivec2 g_texel;
+
+void deferTexel()
+{
+  u_deferred.texels[atomicAdd(u_deferred.count, 1u)] = uint(g_texel.x) | (uint(g_texel.y) << 16);
+}
 //DeepShadow::Build::Dec
 
 void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
@@ -47,10 +62,22 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
 
 void main()
 {
-  g_texel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(g_texel, ivec2(u_size))))
+  if (u_deferredPass != 0)
   {
-    return;
+    uint index = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    if (index >= u_deferred.count)
+    {
+      return;
+    }
+    g_texel = ivec2(u_deferred.texels[index] & 0xffffu, u_deferred.texels[index] >> 16);
+  }
+  else
+  {
+    g_texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(g_texel, ivec2(u_size))))
+    {
+      return;
+    }
   }
   vec2 uv = 2.0 * (vec2(g_texel) + 0.5) / float(u_size) - 1.0;
   vec3 origin, direction;

@@ -34,7 +34,11 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** The compression bound on |V' - V| (default 0.01; [0, 1], warned). 0 is exact. */
+  /**
+   * The compression bound on |V' - V| ([0, 1], warned; 0 keeps every sample). The default,
+   * 0.03, keeps the standard scenes' errors at those of exact shadow rays with 8 layers,
+   * thin opaque rods included, and overflows few texels (the README's epsilon/layers study).
+   */
   void SetEpsilon(double epsilon);
   vtkGetMacro(Epsilon, double);
   ///@}
@@ -70,13 +74,14 @@ protected:
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
   int GetLayersPerFace() const override { return this->Layers; }
+  bool DefersTexels() const override { return true; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
   void BeginMapBuild() override;
   void EndMapBuild() override;
 
-  double Epsilon = 0.01;
+  double Epsilon = 0.03;
   int Layers = 8;
   bool Colored = false;
 

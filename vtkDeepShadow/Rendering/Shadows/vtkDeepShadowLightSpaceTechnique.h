@@ -53,6 +53,8 @@ protected:
   virtual std::string GetMapLookupSource() const = 0;
   virtual void SetBuildUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
   virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
+  /** Whether its build defers texels to a second dispatch (deferTexel() in the build). */
+  virtual bool DefersTexels() const { return false; }
   /** Around the build pass's dispatches (the deep shadow map gathers statistics). */
   virtual void BeginMapBuild() {}
   virtual void EndMapBuild() {}

@@ -140,6 +140,8 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
   impl.Passes = 0;
   const deepshadow::ShadowParameters parameters = this->GetParameters();
   const bool colored = parameters.IsColored();
+  // The drawn opacity decides which blocks view rays sample (a cache may skip the others).
+  const std::vector<double> drawnOpacityKey = context.TransferKey(false);
   if (this->ShadowProperty)
   {
     context.Transfer = deepshadow::adapter::MakeTransferFunction(this->ShadowProperty);
@@ -212,11 +214,19 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
 
   if (this->Cached)
   {
-    // The cache depends on everything the structure and the lookup do, and on its own size.
+    // The cache depends on everything the structure and the lookup do, on its own size, and
+    // (where it skips nodes no view sample reads) on the blocks the drawn opacity leaves.
+    const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
+    const glm::vec3 reach = glm::vec3(context.Dims - 1) / glm::vec3(dims - 1);
+    const bool skipEmpty = context.Occupancy &&
+      std::max({ reach.x, reach.y, reach.z }) <= context.BlockSize;
     const std::vector<double> lookupKey = this->GetLookupKey();
     key.insert(key.end(), lookupKey.begin(), lookupKey.end());
-    key.push_back(static_cast<double>(this->ShadowVolumeSize));
-    const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
+    key.insert(key.end(), { static_cast<double>(this->ShadowVolumeSize), skipEmpty ? 1.0 : 0.0 });
+    if (skipEmpty)
+    {
+      key.insert(key.end(), drawnOpacityKey.begin(), drawnOpacityKey.end());
+    }
     GLint max3D = 0;
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
     // Grow only: fewer shadow-casting lights keep the others' slabs.
@@ -267,6 +277,8 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
       deepshadow::UniformSink sink(&impl.CacheBuild);
       this->BindLookup(sink, context);
       impl.CacheBuild.Set("u_shadowDims", dims);
+      impl.CacheBuild.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
+      impl.CacheBuild.Set("u_cacheReach", reach);
       impl.CacheBuild.Set("u_indexToWorld", glm::mat4(context.IndexToWorld));
       const GLenum format = colored ? GL_RGBA16F : GL_R16F;
       glBindImageTexture(0, impl.Cache->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);

@@ -91,7 +91,8 @@ public:
   ///@{
   /**
    * Shadow-volume nodes along the volume's longest axis when cached, at most as many as the
-   * data has (default 128; [2, 2048], warned).
+   * data has ([2, 2048], warned). Default 128 for shadow rays; 64 for the light-space
+   * techniques, whose maps already bound the shadows' detail.
    */
   void SetShadowVolumeSize(int size);
   vtkGetMacro(ShadowVolumeSize, int);

@@ -13,6 +13,23 @@ int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
   steps = mix(steps, vec3(1e30), equal(indexStep, vec3(0.0)));
   return max(1, int(ceil(min(min(steps.x, steps.y), steps.z))));
 }
+// Whether every block within `reach` voxels of `index` (per axis) is empty, so that no
+// sample of a view ray comes that near. Checks the blocks of the 8 corners of that box,
+// which are all the blocks it touches when reach <= u_blockSize.
+bool emptyAround(vec3 index, vec3 reach)
+{
+  for (int c = 0; c < 8; ++c)
+  {
+    vec3 corner = index + reach * vec3((c & 1) != 0 ? 1.0 : -1.0, (c & 2) != 0 ? 1.0 : -1.0,
+      (c & 4) != 0 ? 1.0 : -1.0);
+    corner = clamp(corner, vec3(0.0), u_dims - 1.0);
+    if (texelFetch(u_occupancy, ivec3(floor(corner / u_blockSize)), 0).r != 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
 //@Init
   vec3 indexStep = indexDirection * u_step;
 //@Impl
@@ -54,3 +71,10 @@ int stepsToLeaveBlock(vec3 index, vec3 indexStep, vec3 block)
           continue;
         }
       }
+//@CacheSkip
+  // Nodes no view sample interpolates from need no answer (they hold "lit").
+  if (u_cacheSkipEmpty != 0 && emptyAround(index, u_cacheReach))
+  {
+    imageStore(u_output, ivec3(node.xy, node.z + u_slot * u_shadowDims.z), vec4(1.0));
+    return;
+  }

@@ -1,14 +1,49 @@
 // Build of "dsm" / "dsm-color": the texel's visibility sampled as SampleVisibility does and
 // compressed on the fly as VisibilityCompressor and CompressVisibility do (all in
-// Core/Shadows/DeepShadowMap.cxx, the CPU twin; here in float). Grey functions carry the
-// same value in all three channels. Nodes go to layers u_layer + k as (depth, value); a texel
-// that needs more than u_layersPerFace nodes is marched again with a doubled bound. The nodes
-// needed at the requested bound are gathered in u_statistics.
+// Core/Shadows/DeepShadowMap.cxx, the CPU twin; here in float). Grey functions carry one
+// channel (Value is float). Nodes go to layers u_layer + k as (depth, value); a texel that
+// needs more than u_layersPerFace nodes is deferred to the second dispatch, which marches it
+// again with doubled bounds until its nodes fit. The nodes needed at the requested bound are
+// gathered in u_statistics.
 //@Dec
 #ifdef DSM_COLORED
 layout(rgba32f, binding = 0) uniform writeonly image2DArray u_output;
+#define Value vec3
+vec3 transmission(vec4 rgba)
+{
+  return 1.0 - rgba.a * (1.0 - rgba.rgb);
+}
+float largest(vec3 v)
+{
+  return max(max(v.r, v.g), v.b);
+}
+bool ordered(vec3 low, vec3 high)
+{
+  return all(lessThanEqual(low, high));
+}
+vec4 node(float depth, vec3 value)
+{
+  return vec4(depth, value);
+}
 #else
 layout(rg32f, binding = 0) uniform writeonly image2DArray u_output;
+#define Value float
+float transmission(vec4 rgba)
+{
+  return 1.0 - rgba.a;
+}
+float largest(float v)
+{
+  return v;
+}
+bool ordered(float low, float high)
+{
+  return low <= high;
+}
+vec4 node(float depth, float value)
+{
+  return vec4(depth, value, 0.0, 0.0);
+}
 #endif
 layout(std430, binding = 1) buffer DeepShadowStatistics
 {
@@ -25,37 +60,42 @@ float g_bound;
 int g_nodes;
 bool g_hasSegment;
 float g_startDepth;
-vec3 g_startValue;
+Value g_startValue;
 float g_lastDepth;
-vec3 g_lastPreferred;
-vec3 g_slopeLow;
-vec3 g_slopeHigh;
-vec3 g_lastStored;
+Value g_lastPreferred;
+Value g_slopeLow;
+Value g_slopeHigh;
+Value g_lastStored;
 // The sampled visibility's state.
 bool g_started;
-vec3 g_transmittance;
+Value g_transmittance;
 
-void emitNode(float depth, vec3 value)
+void emitNode(float depth, Value value)
 {
   if (g_nodes < u_layersPerFace)
   {
-    imageStore(u_output, ivec3(g_texel, u_layer + g_nodes), vec4(depth, value));
+    imageStore(u_output, ivec3(g_texel, u_layer + g_nodes), node(depth, value));
   }
   g_lastStored = value;
   ++g_nodes;
 }
 
+// Slopes of a segment that has no sample after its start yet: any line is feasible.
+const float AnySlope = 3.0e38;
+
 void endSegment()
 {
   float dz = g_lastDepth - g_startDepth;
-  vec3 value = clamp(g_lastPreferred, g_startValue + g_slopeLow * dz, g_startValue + g_slopeHigh * dz);
+  Value value = clamp(g_lastPreferred, g_startValue + g_slopeLow * dz, g_startValue + g_slopeHigh * dz);
   emitNode(g_lastDepth, value);
   g_startDepth = g_lastDepth;
   g_startValue = value;
+  g_slopeLow = Value(-AnySlope);
+  g_slopeHigh = Value(AnySlope);
   g_hasSegment = false;
 }
 
-void addBounded(float depth, vec3 low, vec3 high, vec3 preferred)
+void addBounded(float depth, Value low, Value high, Value preferred)
 {
   if (g_nodes == 0)
   {
@@ -63,6 +103,8 @@ void addBounded(float depth, vec3 low, vec3 high, vec3 preferred)
     emitNode(depth, g_startValue);
     g_startDepth = depth;
     g_lastDepth = depth;
+    g_slopeLow = Value(-AnySlope);
+    g_slopeHigh = Value(AnySlope);
     g_hasSegment = false;
     return;
   }
@@ -70,39 +112,33 @@ void addBounded(float depth, vec3 low, vec3 high, vec3 preferred)
   {
     depth = uintBitsToFloat(floatBitsToUint(g_lastDepth) + 1u);
   }
-  // At most twice: if no line from the start reaches this sample, a new segment starts at
-  // the previous sample, and one constraint alone is always feasible.
-  for (int attempt = 0; attempt < 2; ++attempt)
+  float inverseDz = 1.0 / (depth - g_startDepth);
+  Value slopeLow = max((low - g_startValue) * inverseDz, g_slopeLow);
+  Value slopeHigh = min((high - g_startValue) * inverseDz, g_slopeHigh);
+  if (!ordered(slopeLow, slopeHigh))
   {
-    float dz = depth - g_startDepth;
-    vec3 low_ = (low - g_startValue) / dz;
-    vec3 high_ = (high - g_startValue) / dz;
-    if (g_hasSegment)
-    {
-      low_ = max(low_, g_slopeLow);
-      high_ = min(high_, g_slopeHigh);
-    }
-    if (!g_hasSegment || all(lessThanEqual(low_, high_)))
-    {
-      g_slopeLow = low_;
-      g_slopeHigh = high_;
-      g_lastDepth = depth;
-      g_lastPreferred = preferred;
-      g_hasSegment = true;
-      return;
-    }
+    // No line from the start reaches this sample too: a new segment starts at the previous
+    // sample, and one constraint alone is always feasible.
     endSegment();
+    inverseDz = 1.0 / (depth - g_startDepth);
+    slopeLow = (low - g_startValue) * inverseDz;
+    slopeHigh = (high - g_startValue) * inverseDz;
   }
+  g_slopeLow = slopeLow;
+  g_slopeHigh = slopeHigh;
+  g_lastDepth = depth;
+  g_lastPreferred = preferred;
+  g_hasSegment = true;
 }
 
 // A point of V at `depth`; false once every channel is at or below the requested bound
 // (then V beyond lies in [0, V], and the point says so).
 bool addPoint(float depth)
 {
-  vec3 v = g_transmittance;
-  if (max(max(v.r, v.g), v.b) <= u_epsilon)
+  Value v = g_transmittance;
+  if (largest(v) <= u_epsilon)
   {
-    addBounded(depth, v - g_bound, vec3(g_bound), v);
+    addBounded(depth, v - g_bound, Value(g_bound), v);
     return false;
   }
   addBounded(depth, v - g_bound, v + g_bound, v);
@@ -121,7 +157,7 @@ void startPoint(float t)
 bool visitSample(int j, float t, float scalar)
 {
   startPoint(t);
-  g_transmittance *= feelerTransmission(feelerSample(scalar));
+  g_transmittance *= transmission(feelerSample(scalar));
   return addPoint(t + 0.5 * u_feelerStep);
 }
 
@@ -137,14 +173,14 @@ void compressTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tE
   g_nodes = 0;
   g_hasSegment = false;
   g_started = false;
-  g_transmittance = vec3(1.0);
-  g_lastStored = vec3(1.0);
+  g_transmittance = Value(1.0);
+  g_lastStored = Value(1.0);
   if (tEnter < tExit)
   {
     marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   }
   // A level last segment needs no end node.
-  if (g_hasSegment && !(all(lessThanEqual(g_slopeLow, vec3(0.0))) && all(greaterThanEqual(g_slopeHigh, vec3(0.0)))))
+  if (g_hasSegment && !(ordered(g_slopeLow, Value(0.0)) && ordered(Value(0.0), g_slopeHigh)))
   {
     endSegment();
   }
@@ -152,25 +188,44 @@ void compressTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tE
 
 void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
-  compressTexel(indexOrigin, indexDirection, tEnter, tExit, u_epsilon);
-  int needed = g_nodes;
   float bound = u_epsilon;
-  for (int attempt = 0; g_nodes > u_layersPerFace && attempt < 64; ++attempt)
+  if (u_deferredPass == 0)
   {
-    bound = max(2.0 * bound, 1.0 / 1024.0);
     compressTexel(indexOrigin, indexDirection, tEnter, tExit, bound);
+    int needed = g_nodes;
+    if (needed > 0)
+    {
+      atomicAdd(u_statistics.texelsHit, 1u);
+      atomicAdd(u_statistics.nodesTotal, uint(needed));
+      atomicMax(u_statistics.nodesMax, uint(needed));
+    }
+    if (needed > u_layersPerFace)
+    {
+      atomicAdd(u_statistics.texelsOverflowed, 1u);
+      deferTexel();
+      return;
+    }
+  }
+  else
+  {
+    // Overflowed in the first dispatch: double the bound until the nodes fit.
+    for (int attempt = 0; attempt < 64; ++attempt)
+    {
+      bound = max(2.0 * bound, 1.0 / 1024.0);
+      compressTexel(indexOrigin, indexDirection, tEnter, tExit, bound);
+      if (g_nodes <= u_layersPerFace)
+      {
+        break;
+      }
+    }
   }
   // Unused nodes repeat the last value far away.
-  for (int k = min(g_nodes, u_layersPerFace); k < u_layersPerFace; ++k)
+  for (int k = g_nodes; k < u_layersPerFace; ++k)
   {
-    imageStore(u_output, ivec3(g_texel, u_layer + k), vec4(NoHit, g_lastStored));
+    imageStore(u_output, ivec3(g_texel, u_layer + k), node(NoHit, g_lastStored));
   }
-  if (needed > 0)
+  if (g_nodes > 0)
   {
-    atomicAdd(u_statistics.texelsHit, 1u);
-    atomicAdd(u_statistics.nodesTotal, uint(needed));
-    atomicMax(u_statistics.nodesMax, uint(needed));
-    atomicAdd(u_statistics.texelsOverflowed, needed > u_layersPerFace ? 1u : 0u);
     atomicMax(u_statistics.epsilonMaxBits, floatBitsToUint(bound));
   }
 }
