@@ -44,6 +44,11 @@ expect 2 "unknown scene" -- "$tool" render --scene teapot --out x.png
 expect 2 "unknown technique" -- "$tool" render --technique magic --out x.png
 expect 2 "threshold out of range" -- "$tool" render --technique shadowmap --shadow-threshold 2 --out x.png
 expect 2 "bad filter" -- "$tool" render --technique shadowmap --pcf 5x5 --out x.png
+expect 2 "epsilon out of range" -- "$tool" render --technique dsm --epsilon 1.5 --out x.png
+expect 2 "layers out of range" -- "$tool" render --technique dsm --layers 0 --out x.png
+expect 2 "bad CSSM offsets" -- "$tool" render --technique cssm --cssm-offsets 9 --out x.png
+expect 2 "bad opacity levels" -- "$tool" render --technique dsm3 --opacity-levels 0.5,0.2,0.9 --out x.png
+expect 2 "bad technique spec" -- "$tool" shadow-bench --techniques dsm:colour=red
 expect 2 "bad light" -- "$tool" render --light lamp:1,2,3 --out x.png
 expect 2 "spot without angle" -- "$tool" render --light spot:0,0,100 --out x.png
 expect 2 "scene and volume" -- "$tool" render --scene box --volume a.vti --out x.png
@@ -74,6 +79,22 @@ expect 0 "render with a technique" -- "$tool" render --scene bucky --scale 0.5 -
   --out shadowed.png --json shadowed.json
 grep -q '"shadow_builds": 2' shadowed.json || { echo "FAILED: expected 2 shadow builds (two lights)"; failures=$((failures + 1)); }
 grep -q '"technique": "shadowmap"' shadowed.json || { echo "FAILED: technique not recorded"; failures=$((failures + 1)); }
+expect 0 "render with a deep shadow map" -- "$tool" render --scene bucky --scale 0.5 --size 64x64 --frames 1 \
+  --technique dsm --epsilon 0.01 --layers 4 --shadow-map-size 64 --out dsm.png --json dsm.json
+for field in dsm_nodes_avg dsm_nodes_max shadow_bytes; do
+  grep -q "\"$field\":" dsm.json || { echo "FAILED: dsm.json lacks $field"; failures=$((failures + 1)); }
+done
+# 64 x 64 texels x 4 nodes x 8 bytes, plus the 4096-texel feeler table (16 bytes each).
+grep -q '"shadow_bytes": 196608' dsm.json || { echo "FAILED: dsm shadow_bytes"; grep shadow_bytes dsm.json; failures=$((failures + 1)); }
+grep -q '"dsm_nodes_max": 0' dsm.json && { echo "FAILED: no nodes counted"; failures=$((failures + 1)); }
+for t in dsm-color dsm3 cssm cssm-cached; do
+  expect 0 "render with $t" -- "$tool" render --scene bucky --scale 0.5 --size 64x64 --frames 1 \
+    --technique $t --cssm-offsets 7 --cssm-seed 3 --out $t.png --json $t.json
+  grep -q "\"technique\": \"$t\"" $t.json || { echo "FAILED: $t not recorded"; failures=$((failures + 1)); }
+done
+expect 0 "shadow-bench with technique specs" -- "$tool" shadow-bench --scenes bucky --scale 0.5 \
+  --size 64x64 --error-size 16x16 --frames 1 --techniques dsm:layers=2:epsilon=0.1,cssm:cssm-photons=2
+grep -q "dsm:layers=2:epsilon=0.1" out.txt || { echo "FAILED: shadow-bench row for the spec"; failures=$((failures + 1)); }
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || { echo "FAILED: reference.json lacks render_ms"; failures=$((failures + 1)); }
 expect 0 "scenes" -- "$tool" scenes
