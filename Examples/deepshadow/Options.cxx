@@ -350,7 +350,7 @@ RENDERING:
                           128 for rays, 64 for the map techniques)
   --shadow-map-size N     shadowmap, dsm*, cssm: texels per side (default 512)
   --epsilon E             dsm: bound on the compressed visibility's error, in [0, 1]
-                          (default 0.03)
+                          (default 0.02)
   --layers N              dsm: nodes per texel, 1 to 256 (default 8)
   --opacity-levels A,B,C  dsm3: opacity levels (default 0.1,0.5,0.9)
   --cssm-offsets M        cssm: texel offsets averaged per lookup, 7, 13 or 21 (default 13)

@@ -54,7 +54,7 @@ int TestDeepShadowEdgeCases(int, char*[])
   levels->SetLevels(0.5, 0.2, 0.9);
   ok = Check("opacity levels 0.5, 0.2, 0.9: refused, kept",
          levels->GetLevels()[1] == 0.5 && capture->ErrorContains("increase strictly")) && ok;
-  dsm->SetEpsilon(0.03);
+  dsm->SetEpsilon(0.02);
   dsm->SetLayers(8);
 
   auto data = deepshadow::testing::MakeShadowVolume(32);

@@ -83,7 +83,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   ShadowFilter Filter = ShadowFilter::PCF3x3;
 
   // Deep shadow maps.
-  double Epsilon = 0.03;    // |V' - V| <= Epsilon at every sample depth (see the README)
+  double Epsilon = 0.02;    // |V' - V| <= Epsilon at every sample depth (see the README)
   int Layers = 8;           // nodes per texel (and channel)
 
   // Opacity levels: depths where the accumulated opacity crosses these.

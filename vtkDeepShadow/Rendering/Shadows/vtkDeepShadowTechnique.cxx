@@ -148,28 +148,7 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
   }
   impl.SkipEmpty = this->ShadowProperty == nullptr;
 
-  // The feeler's table, shared by lookups and build passes.
-  const double step = this->FeelerStep(context);
-  std::vector<double> tableKey = context.TransferKey(colored);
-  tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
-    static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
-  if (!impl.FeelerTable || tableKey != impl.FeelerKey)
-  {
-    const deepshadow::TransferTable table = deepshadow::TransferTable::Sample(
-      context.Transfer, context.Range.x, context.Range.y, context.TableSize, step);
-    if (impl.FeelerTable)
-    {
-      impl.FeelerTable->ReleaseGraphicsResources(context.Window);
-    }
-    impl.FeelerTable = vtkSmartPointer<vtkTextureObject>::New();
-    impl.FeelerTable->SetContext(context.Window);
-    impl.FeelerTable->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.FeelerTable->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.FeelerTable->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.FeelerTable->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.FeelerTable->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT, const_cast<float*>(table.RGBA.data()));
-    impl.FeelerKey = tableKey;
-  }
+  this->UpdateFeelerTable(context, colored);
 
   // Which lights get a shadow, and which of their structures are stale.
   const int maxLights = this->Cached ? std::min(this->GetMaxShadowLights(), MaxCachedLights)
@@ -214,87 +193,9 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
 
   if (this->Cached)
   {
-    // The cache depends on everything the structure and the lookup do, on its own size, and
-    // (where it skips nodes no view sample reads) on the blocks the drawn opacity leaves.
-    const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
-    const glm::vec3 reach = glm::vec3(context.Dims - 1) / glm::vec3(dims - 1);
-    const bool skipEmpty = context.Occupancy &&
-      std::max({ reach.x, reach.y, reach.z }) <= context.BlockSize;
-    const std::vector<double> lookupKey = this->GetLookupKey();
-    key.insert(key.end(), lookupKey.begin(), lookupKey.end());
-    key.insert(key.end(), { static_cast<double>(this->ShadowVolumeSize), skipEmpty ? 1.0 : 0.0 });
-    if (skipEmpty)
+    if (!this->PrepareCache(context, key, drawnOpacityKey, rebuilt))
     {
-      key.insert(key.end(), drawnOpacityKey.begin(), drawnOpacityKey.end());
-    }
-    GLint max3D = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-    // Grow only: fewer shadow-casting lights keep the others' slabs.
-    const int slabs = std::max(impl.Cache && dims == impl.CacheDims ? impl.CacheSlabs : 1, impl.Slots.Count());
-    if (std::max({ dims.x, dims.y, dims.z * slabs }) > max3D)
-    {
-      this->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
-        std::to_string(dims.y) + "x" + std::to_string(dims.z) + " per light) exceeds this GL's 3D "
-        "texture limit of " + std::to_string(max3D);
       return false;
-    }
-    if (!impl.Cache || dims != impl.CacheDims || slabs != impl.CacheSlabs || colored != impl.CacheColored)
-    {
-      impl.ReleaseCache(context.Window);
-      impl.Cache = vtkSmartPointer<vtkTextureObject>::New();
-      impl.Cache->SetContext(context.Window);
-      impl.Cache->SetInternalFormat(colored ? GL_RGBA16F : GL_R16F);
-      impl.Cache->SetFormat(colored ? GL_RGBA : GL_RED);
-      impl.Cache->SetDataType(GL_FLOAT);
-      impl.Cache->SetWrapS(vtkTextureObject::ClampToEdge);
-      impl.Cache->SetWrapT(vtkTextureObject::ClampToEdge);
-      impl.Cache->SetWrapR(vtkTextureObject::ClampToEdge);
-      impl.Cache->SetMinificationFilter(vtkTextureObject::Linear);
-      impl.Cache->SetMagnificationFilter(vtkTextureObject::Linear);
-      impl.Cache->Allocate3D(static_cast<unsigned int>(dims.x), static_cast<unsigned int>(dims.y),
-        static_cast<unsigned int>(dims.z * slabs), colored ? 4 : 1, VTK_FLOAT);
-      impl.CacheDims = dims;
-      impl.CacheSlabs = slabs;
-      impl.CacheColored = colored;
-    }
-    impl.CacheSlots.Assign(context.Lights, maxLights);
-    std::vector<int> staleCache;
-    for (int slot = 0; slot < impl.CacheSlots.Count(); ++slot)
-    {
-      if (impl.CacheSlots.Stale(slot, context, key))
-      {
-        staleCache.push_back(slot);
-      }
-    }
-    if (!staleCache.empty())
-    {
-      const std::string lookup = (colored ? "//@Dec\n#define CACHE_COLORED\n" : "") + this->GetLookupSource();
-      if (!this->BeginBuildPass(impl.CacheBuild, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
-      {
-        impl.CacheSlots.Invalidate();
-        return false;
-      }
-      deepshadow::UniformSink sink(&impl.CacheBuild);
-      this->BindLookup(sink, context);
-      impl.CacheBuild.Set("u_shadowDims", dims);
-      impl.CacheBuild.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
-      impl.CacheBuild.Set("u_cacheReach", reach);
-      impl.CacheBuild.Set("u_indexToWorld", glm::mat4(context.IndexToWorld));
-      const GLenum format = colored ? GL_RGBA16F : GL_R16F;
-      glBindImageTexture(0, impl.Cache->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-      for (int slot : staleCache)
-      {
-        const deepshadow::Light& light = context.Lights[static_cast<size_t>(impl.CacheSlots.Light(slot))];
-        impl.CacheBuild.Set("u_slot", slot);
-        impl.CacheBuild.Set("u_lightPositional", light.Positional ? 1 : 0);
-        impl.CacheBuild.Set("u_lightPosition", glm::vec3(light.Position));
-        impl.CacheBuild.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
-        impl.CacheBuild.Dispatch(dims, glm::ivec3(4));
-      }
-      glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-      this->UnbindLookup();
-      this->EndBuildPass(context);
-      rebuilt.insert(staleCache.begin(), staleCache.end());
     }
   }
   else if (impl.Cache)
@@ -306,6 +207,123 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
   {
     this->BuildCount += static_cast<int>(rebuilt.size());
     this->LastBuildMilliseconds = impl.PassMilliseconds;
+  }
+  return true;
+}
+
+void vtkDeepShadowTechnique::UpdateFeelerTable(const deepshadow::ShadowContext& context, bool colored)
+{
+  Internals& impl = *this->Impl;
+  const double step = this->FeelerStep(context);
+  std::vector<double> tableKey = context.TransferKey(colored);
+  tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
+    static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
+  if (!impl.FeelerTable || tableKey != impl.FeelerKey)
+  {
+    const deepshadow::TransferTable table = deepshadow::TransferTable::Sample(
+      context.Transfer, context.Range.x, context.Range.y, context.TableSize, step);
+    if (impl.FeelerTable)
+    {
+      impl.FeelerTable->ReleaseGraphicsResources(context.Window);
+    }
+    impl.FeelerTable = vtkSmartPointer<vtkTextureObject>::New();
+    impl.FeelerTable->SetContext(context.Window);
+    impl.FeelerTable->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.FeelerTable->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.FeelerTable->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.FeelerTable->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.FeelerTable->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT, const_cast<float*>(table.RGBA.data()));
+    impl.FeelerKey = tableKey;
+  }
+}
+
+bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
+  std::vector<double> key, const std::vector<double>& drawnOpacityKey, std::set<int>& rebuilt)
+{
+  Internals& impl = *this->Impl;
+  const bool colored = this->GetParameters().IsColored();
+  const int maxLights = std::min(this->GetMaxShadowLights(), MaxCachedLights);
+  // The cache depends on everything the structure and the lookup do, on its own size, and
+  // (where it skips nodes no view sample reads) on the blocks the drawn opacity leaves.
+  const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
+  const glm::vec3 reach = glm::vec3(context.Dims - 1) / glm::vec3(dims - 1);
+  const bool skipEmpty = context.Occupancy &&
+    std::max({ reach.x, reach.y, reach.z }) <= context.BlockSize;
+  const std::vector<double> lookupKey = this->GetLookupKey();
+  key.insert(key.end(), lookupKey.begin(), lookupKey.end());
+  key.insert(key.end(), { static_cast<double>(this->ShadowVolumeSize), skipEmpty ? 1.0 : 0.0 });
+  if (skipEmpty)
+  {
+    key.insert(key.end(), drawnOpacityKey.begin(), drawnOpacityKey.end());
+  }
+  GLint max3D = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+  // Grow only: fewer shadow-casting lights keep the others' slabs.
+  const int slabs = std::max(impl.Cache && dims == impl.CacheDims ? impl.CacheSlabs : 1, impl.Slots.Count());
+  if (std::max({ dims.x, dims.y, dims.z * slabs }) > max3D)
+  {
+    this->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
+      std::to_string(dims.y) + "x" + std::to_string(dims.z) + " per light) exceeds this GL's 3D "
+      "texture limit of " + std::to_string(max3D);
+    return false;
+  }
+  if (!impl.Cache || dims != impl.CacheDims || slabs != impl.CacheSlabs || colored != impl.CacheColored)
+  {
+    impl.ReleaseCache(context.Window);
+    impl.Cache = vtkSmartPointer<vtkTextureObject>::New();
+    impl.Cache->SetContext(context.Window);
+    impl.Cache->SetInternalFormat(colored ? GL_RGBA16F : GL_R16F);
+    impl.Cache->SetFormat(colored ? GL_RGBA : GL_RED);
+    impl.Cache->SetDataType(GL_FLOAT);
+    impl.Cache->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.Cache->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.Cache->SetWrapR(vtkTextureObject::ClampToEdge);
+    impl.Cache->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.Cache->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.Cache->Allocate3D(static_cast<unsigned int>(dims.x), static_cast<unsigned int>(dims.y),
+      static_cast<unsigned int>(dims.z * slabs), colored ? 4 : 1, VTK_FLOAT);
+    impl.CacheDims = dims;
+    impl.CacheSlabs = slabs;
+    impl.CacheColored = colored;
+  }
+  impl.CacheSlots.Assign(context.Lights, maxLights);
+  std::vector<int> staleCache;
+  for (int slot = 0; slot < impl.CacheSlots.Count(); ++slot)
+  {
+    if (impl.CacheSlots.Stale(slot, context, key))
+    {
+      staleCache.push_back(slot);
+    }
+  }
+  if (!staleCache.empty())
+  {
+    const std::string lookup = (colored ? "//@Dec\n#define CACHE_COLORED\n" : "") + this->GetLookupSource();
+    if (!this->BeginBuildPass(impl.CacheBuild, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
+    {
+      impl.CacheSlots.Invalidate();
+      return false;
+    }
+    deepshadow::UniformSink sink(&impl.CacheBuild);
+    this->BindLookup(sink, context);
+    impl.CacheBuild.Set("u_shadowDims", dims);
+    impl.CacheBuild.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
+    impl.CacheBuild.Set("u_cacheReach", reach);
+    impl.CacheBuild.Set("u_indexToWorld", glm::mat4(context.IndexToWorld));
+    const GLenum format = colored ? GL_RGBA16F : GL_R16F;
+    glBindImageTexture(0, impl.Cache->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    for (int slot : staleCache)
+    {
+      const deepshadow::Light& light = context.Lights[static_cast<size_t>(impl.CacheSlots.Light(slot))];
+      impl.CacheBuild.Set("u_slot", slot);
+      impl.CacheBuild.Set("u_lightPositional", light.Positional ? 1 : 0);
+      impl.CacheBuild.Set("u_lightPosition", glm::vec3(light.Position));
+      impl.CacheBuild.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
+      impl.CacheBuild.Dispatch(dims, glm::ivec3(4));
+    }
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    this->UnbindLookup();
+    this->EndBuildPass(context);
+    rebuilt.insert(staleCache.begin(), staleCache.end());
   }
   return true;
 }

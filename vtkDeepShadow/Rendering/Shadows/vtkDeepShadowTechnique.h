@@ -32,6 +32,7 @@
 #include "vtkObject.h"
 
 #include <memory> // For std::unique_ptr
+#include <set>    // For std::set
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -223,7 +224,11 @@ private:
   vtkDeepShadowTechnique(const vtkDeepShadowTechnique&) = delete;
   void operator=(const vtkDeepShadowTechnique&) = delete;
 
-  bool PrepareCache(deepshadow::ShadowContext& context, const std::vector<int>& changed);
+  /** The feeler's table (the casting transfer function for the feeler step), if stale. */
+  void UpdateFeelerTable(const deepshadow::ShadowContext& context, bool colored);
+  /** Brings the cache of every slot whose `key` (structure, lookup, cache) changed up to date. */
+  bool PrepareCache(deepshadow::ShadowContext& context, std::vector<double> key,
+    const std::vector<double>& drawnOpacityKey, std::set<int>& rebuilt);
 
   class Internals;
   std::unique_ptr<Internals> Impl;
