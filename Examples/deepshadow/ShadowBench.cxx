@@ -211,7 +211,9 @@ int RunShadowBench(const Options& options)
         .Set("ground_truth_ms", truthMs)
         .Set("rebuilt_when_camera_moved", rebuiltForCamera)
         .Set("dsm_nodes_avg", dsm ? dsm->GetNodesAverage() : 0.0)
-        .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0);
+        .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
+        .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
+        .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0);
       rows.push_back(row);
     }
     setup.Mapper->SetShadowTechnique(nullptr);
