@@ -80,32 +80,31 @@ void emitNode(float depth, Value value)
   ++g_nodes;
 }
 
-// Slopes of a segment that has no sample after its start yet: any line is feasible.
-const float AnySlope = 3.0e38;
+// Emits the node (depth, value) and starts a segment there; with no sample after its start
+// yet, any line (slope) is feasible.
+void startSegment(float depth, Value value)
+{
+  emitNode(depth, value);
+  g_startDepth = depth;
+  g_startValue = value;
+  g_lastDepth = depth;
+  g_slopeLow = Value(-3.0e38);
+  g_slopeHigh = Value(3.0e38);
+  g_hasSegment = false;
+}
 
 void endSegment()
 {
   float dz = g_lastDepth - g_startDepth;
-  Value value = clamp(g_lastPreferred, g_startValue + g_slopeLow * dz, g_startValue + g_slopeHigh * dz);
-  emitNode(g_lastDepth, value);
-  g_startDepth = g_lastDepth;
-  g_startValue = value;
-  g_slopeLow = Value(-AnySlope);
-  g_slopeHigh = Value(AnySlope);
-  g_hasSegment = false;
+  startSegment(g_lastDepth,
+    clamp(g_lastPreferred, g_startValue + g_slopeLow * dz, g_startValue + g_slopeHigh * dz));
 }
 
 void addBounded(float depth, Value low, Value high, Value preferred)
 {
   if (g_nodes == 0)
   {
-    g_startValue = clamp(preferred, low, high);
-    emitNode(depth, g_startValue);
-    g_startDepth = depth;
-    g_lastDepth = depth;
-    g_slopeLow = Value(-AnySlope);
-    g_slopeHigh = Value(AnySlope);
-    g_hasSegment = false;
+    startSegment(depth, clamp(preferred, low, high));
     return;
   }
   if (!(depth > g_lastDepth))
