@@ -96,7 +96,9 @@ public:
   ///@{
   /**
    * How the volume shadows itself (null, the default: no shadows, and no shadow code in the
-   * shader). See vtkDeepShadowRayTechnique and vtkDeepShadowShadowMapTechnique.
+   * shader). See vtkDeepShadowRayTechnique, vtkDeepShadowShadowMapTechnique,
+   * vtkDeepShadowDeepShadowMapTechnique, vtkDeepShadowOpacityLevelsTechnique and
+   * vtkDeepShadowStochasticShadowMapTechnique.
    */
   void SetShadowTechnique(vtkDeepShadowTechnique* technique);
   vtkGetObjectMacro(ShadowTechnique, vtkDeepShadowTechnique);
