@@ -2,6 +2,7 @@
 
 #include "vtkDeepShadowFeatureEmptySpace.h"
 #include "vtkDeepShadowFeatureFeeler.h"
+#include "vtkDeepShadowFeatureFeelerColored.h"
 #include "vtkDeepShadowFeatureGradient.h"
 #include "vtkDeepShadowFeatureHash.h"
 #include "vtkDeepShadowFeatureIsotropic.h"
@@ -49,6 +50,7 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     auto add = [&all](const char* name, const char* source) { all[name] = ShaderFeature(name, source); };
     add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
     add("Feeler", vtkDeepShadowFeatureFeeler);
+    add("FeelerColored", vtkDeepShadowFeatureFeelerColored);
     add("Gradient", vtkDeepShadowFeatureGradient);
     add("Hash", vtkDeepShadowFeatureHash);
     add("Isotropic", vtkDeepShadowFeatureIsotropic);

@@ -597,6 +597,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     {
       features.insert("Feeler");
     }
+    for (const std::string& feature : technique->GetLookupFeatures())
+    {
+      features.insert(feature);
+    }
   }
   if (this->Jitter)
   {

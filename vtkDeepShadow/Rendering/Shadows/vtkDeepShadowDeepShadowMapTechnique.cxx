@@ -74,8 +74,7 @@ unsigned int vtkDeepShadowDeepShadowMapTechnique::GetTexelFormat() const
 
 std::string vtkDeepShadowDeepShadowMapTechnique::GetBuildSource() const
 {
-  return (this->Colored ? std::string("//@Dec\n#define DSM_COLORED\n") : std::string()) +
-    vtkDeepShadowDeepShadowMapBuild;
+  return vtkDeepShadowDeepShadowMapBuild;
 }
 
 std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const

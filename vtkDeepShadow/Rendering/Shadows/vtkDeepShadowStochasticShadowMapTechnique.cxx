@@ -45,6 +45,13 @@ deepshadow::ShadowParameters vtkDeepShadowStochasticShadowMapTechnique::GetParam
   return parameters;
 }
 
+std::vector<std::string> vtkDeepShadowStochasticShadowMapTechnique::GetBuildFeatures() const
+{
+  std::vector<std::string> features = this->Superclass::GetBuildFeatures();
+  features.push_back("Hash"); // the random thresholds
+  return features;
+}
+
 std::vector<double> vtkDeepShadowStochasticShadowMapTechnique::GetStructureKey() const
 {
   return { static_cast<double>(this->MapSize), static_cast<double>(this->Seed),

@@ -47,7 +47,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
-  std::vector<std::string> GetBuildFeatures() const override { return { "Hash" }; }
+  std::vector<std::string> GetBuildFeatures() const override;
 
 protected:
   vtkDeepShadowStochasticShadowMapTechnique() = default;

@@ -328,6 +328,24 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
   return true;
 }
 
+std::vector<std::string> vtkDeepShadowTechnique::GetLookupFeatures() const
+{
+  if (this->NeedsFeeler() && this->GetParameters().IsColored())
+  {
+    return { "FeelerColored" };
+  }
+  return {};
+}
+
+std::vector<std::string> vtkDeepShadowTechnique::GetBuildFeatures() const
+{
+  if (this->GetParameters().IsColored())
+  {
+    return { "FeelerColored" };
+  }
+  return {};
+}
+
 std::string vtkDeepShadowTechnique::GetShaderFeatureSource() const
 {
   if (!this->Cached)
@@ -366,7 +384,6 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
         ? this->Threshold
         : deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)));
   sink.Set("u_feelerThresholdOnScalar", onScalar ? 1 : 0);
-  sink.Set("u_feelerColored", parameters.IsColored() ? 1 : 0);
   sink.Set("u_scalarRange", glm::vec2(context.Range));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);

@@ -130,8 +130,10 @@ public:
   std::string GetShaderFeatureSource() const;
   /** Whether the ray caster also needs the Feeler feature. */
   bool NeedsFeeler() const { return !this->Cached && this->LookupNeedsFeeler(); }
-  /** Shader features the build passes need besides VolumeSampling, Feeler, EmptySpace. */
-  virtual std::vector<std::string> GetBuildFeatures() const { return {}; }
+  /** Shader features its lookup needs in the ray caster (FeelerColored for coloured feelers). */
+  std::vector<std::string> GetLookupFeatures() const;
+  /** Shader features its build passes need besides VolumeSampling, Feeler, EmptySpace. */
+  virtual std::vector<std::string> GetBuildFeatures() const;
   /** Sets the lookup's uniforms and binds its textures on the ray caster's program. */
   void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context);
   void Unbind();

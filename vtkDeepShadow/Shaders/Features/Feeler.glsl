@@ -3,10 +3,11 @@
 // is the CPU twin), and the sample lookups of the light-space builds. Samples sit at (j + 0.5) * u_feelerStep from the start; colour and opacity come
 // from u_feelerTable, opacity corrected for that step. Opaque: 0 at the first sample above
 // the threshold; translucent: the product of (1 - alpha), or per channel of
-// (1 - alpha (1 - colour)) when coloured, stopped once below u_feelerTermination (0: never).
+// (1 - alpha (1 - colour)) when coloured (feature FeelerColored), stopped once below
+// u_feelerTermination (0: never).
 //@Dec
+//DeepShadow::FeelerColored::Dec
 uniform sampler2D u_feelerTable;   // RGBA table; alpha = opacity corrected for u_feelerStep
-uniform int u_feelerColored;       // a transmittance per colour channel
 uniform float u_feelerStep;        // world units
 uniform float u_feelerThreshold;   // corrected opacity, or normalized scalar
 uniform int u_feelerThresholdOnScalar;
@@ -24,11 +25,28 @@ float feelerAlpha(float scalar)
   return feelerSample(scalar).a;
 }
 
-// What a sample of colour and opacity `rgba` lets through: grey or per channel.
+// What a sample of colour and opacity `rgba` lets through, and the largest channel of it.
+#ifdef FEELER_COLORED
+#define FeelerTransmittance vec3
 vec3 feelerTransmission(vec4 rgba)
 {
-  return u_feelerColored != 0 ? 1.0 - rgba.a * (1.0 - rgba.rgb) : vec3(1.0 - rgba.a);
+  return 1.0 - rgba.a * (1.0 - rgba.rgb);
 }
+float feelerLargest(vec3 transmittance)
+{
+  return max(max(transmittance.r, transmittance.g), transmittance.b);
+}
+#else
+#define FeelerTransmittance float
+float feelerTransmission(vec4 rgba)
+{
+  return 1.0 - rgba.a;
+}
+float feelerLargest(float transmittance)
+{
+  return transmittance;
+}
+#endif
 
 bool feelerAbove(float scalar)
 {
@@ -44,7 +62,7 @@ bool feelerAbove(float scalar)
 // to world distance tEnd. `opaque`: binary visibility; else the transmittance.
 vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
 {
-  vec3 transmittance = vec3(1.0);
+  FeelerTransmittance transmittance = FeelerTransmittance(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
   for (int j = 0;; ++j)
   {
@@ -65,12 +83,12 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
       continue;
     }
     transmittance *= feelerTransmission(feelerSample(scalar));
-    if (max(max(transmittance.r, transmittance.g), transmittance.b) < u_feelerTermination)
+    if (feelerLargest(transmittance) < u_feelerTermination)
     {
       break;
     }
   }
-  return transmittance;
+  return vec3(transmittance);
 }
 
 // Visibility of a light from world point `position`: the feeler from there towards it, up to

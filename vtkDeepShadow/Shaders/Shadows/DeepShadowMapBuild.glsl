@@ -1,22 +1,15 @@
 // Build of "dsm" / "dsm-color": the texel's visibility sampled as SampleVisibility does and
 // compressed on the fly as VisibilityCompressor and CompressVisibility do (all in
 // Core/Shadows/DeepShadowMap.cxx, the CPU twin; here in float). Grey functions carry one
-// channel (Value is float). Nodes go to layers u_layer + k as (depth, value); a texel that
+// channel (Value is float; vec3 with the feature FeelerColored). Nodes go to layers u_layer + k as (depth, value); a texel that
 // needs more than u_layersPerFace nodes is deferred to the second dispatch, which marches it
 // again with doubled bounds until its nodes fit. The nodes needed at the requested bound are
 // gathered in u_statistics.
 //@Dec
-#ifdef DSM_COLORED
+// Values have the feelers' transmittance type: vec3 when coloured, else float.
+#define Value FeelerTransmittance
+#ifdef FEELER_COLORED
 layout(rgba32f, binding = 0) uniform writeonly image2DArray u_output;
-#define Value vec3
-vec3 transmission(vec4 rgba)
-{
-  return 1.0 - rgba.a * (1.0 - rgba.rgb);
-}
-float largest(vec3 v)
-{
-  return max(max(v.r, v.g), v.b);
-}
 bool ordered(vec3 low, vec3 high)
 {
   return all(lessThanEqual(low, high));
@@ -27,15 +20,6 @@ vec4 node(float depth, vec3 value)
 }
 #else
 layout(rg32f, binding = 0) uniform writeonly image2DArray u_output;
-#define Value float
-float transmission(vec4 rgba)
-{
-  return 1.0 - rgba.a;
-}
-float largest(float v)
-{
-  return v;
-}
 bool ordered(float low, float high)
 {
   return low <= high;
@@ -135,7 +119,7 @@ void addBounded(float depth, Value low, Value high, Value preferred)
 bool addPoint(float depth)
 {
   Value v = g_transmittance;
-  if (largest(v) <= u_epsilon)
+  if (feelerLargest(v) <= u_epsilon)
   {
     addBounded(depth, v - g_bound, Value(g_bound), v);
     return false;
@@ -156,7 +140,7 @@ void startPoint(float t)
 bool visitSample(int j, float t, float scalar)
 {
   startPoint(t);
-  g_transmittance *= transmission(feelerSample(scalar));
+  g_transmittance *= feelerTransmission(feelerSample(scalar));
   return addPoint(t + 0.5 * u_feelerStep);
 }
 
