@@ -30,6 +30,7 @@ LightSample Light::At(const glm::dvec3& p) const
     const double coneCos = std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0);
     attenuation = coneDot >= coneCos ? attenuation * std::pow(coneDot, this->Exponent) : 0.0;
   }
+  sample.Reach = attenuation;
   sample.Diffuse = attenuation * this->Diffuse;
   sample.Specular = attenuation * this->Specular;
   return sample;

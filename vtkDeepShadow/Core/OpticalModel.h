@@ -57,6 +57,8 @@ struct LightSample
   glm::dvec3 ToLight{ 0.0, 0.0, 1.0 }; // unit vector from the point towards the light
   glm::dvec3 Diffuse{ 1.0 };
   glm::dvec3 Specular{ 1.0 };
+  /** Distance and cone attenuation alone (0: the light does not reach the point). */
+  double Reach = 1.0;
 };
 
 /**

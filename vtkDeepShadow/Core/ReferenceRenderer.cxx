@@ -78,7 +78,8 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
 {
   const TransferTable* table = prepared.Table.get();
   const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
-  const bool lit = volume.Shade || shadowed;
+  const bool shadowTerm = settings.Output == RenderOutput::ShadowTerm;
+  const bool lit = volume.Shade || shadowed || shadowTerm;
   const VolumeGrid& grid = *volume.Grid;
   double tEnter = 0.0, tExit = 0.0;
   if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1),
@@ -133,13 +134,22 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (lit)
     {
       const glm::dvec3 position = ray.Origin + t * ray.Direction;
-      const glm::dvec3 normal = volume.Shade
+      const glm::dvec3 normal = volume.Shade && !shadowTerm
         ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling))
         : glm::dvec3(0.0);
       glm::dvec3 light = volume.Surface.Ambient * color * scene.AmbientLight;
+      glm::dvec3 term(1.0);
       for (size_t l = 0; l < scene.Lights.size(); ++l)
       {
         const LightSample sample = scene.Lights[l].At(position);
+        if (shadowTerm)
+        {
+          if (shadowed && prepared.Shadows[l] && sample.Reach > 0.0)
+          {
+            term *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - prepared.Shadows[l]->Visibility(position));
+          }
+          continue;
+        }
         glm::dvec3 contribution = volume.Shade
           ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
           : volume.Surface.Diffuse * sample.Diffuse * color;
@@ -150,7 +160,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         }
         light += contribution;
       }
-      color = glm::clamp(light, 0.0, 1.0);
+      color = glm::clamp(shadowTerm ? term : light, 0.0, 1.0);
     }
     CompositeFrontToBack(accumulated, color, alpha);
   }

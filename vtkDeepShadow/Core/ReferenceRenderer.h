@@ -62,8 +62,22 @@ struct Scene
   std::vector<VolumeInstance> Volumes;
 };
 
+/**
+ * What an image shows: the lit colour, or the shadow term alone: each sample's colour
+ * replaced by the product, over the lights that reach it and cast shadows, of
+ * 1 - attenuation (1 - visibility) (1 where nothing shadows it), composited with the
+ * volume's opacity as colours are. Comparing shadow-term images measures a technique's
+ * error in the light-attenuation term without shading or colour mixed in.
+ */
+enum class RenderOutput
+{
+  Color,
+  ShadowTerm
+};
+
 struct MarchSettings
 {
+  RenderOutput Output = RenderOutput::Color;
   double SampleDistance = 1.0; // world units between samples
   bool Jitter = false;
   uint32_t JitterSeed = 0;

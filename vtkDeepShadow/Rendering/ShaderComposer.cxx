@@ -9,6 +9,7 @@
 #include "vtkDeepShadowFeatureJitter.h"
 #include "vtkDeepShadowFeatureLighting.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
+#include "vtkDeepShadowFeatureShadowTerm.h"
 #include "vtkDeepShadowFeatureVolumeSampling.h"
 
 #include <sstream>
@@ -57,6 +58,7 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("Jitter", vtkDeepShadowFeatureJitter);
     add("Lighting", vtkDeepShadowFeatureLighting);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
+    add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
     add("VolumeSampling", vtkDeepShadowFeatureVolumeSampling);
     return all;
   }();

@@ -110,6 +110,10 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::I
         settings = deepshadow::MarchSettings::GpuTwin(0.0, ours->GetTransferTableSize(),
           ours->GetJitter(), ours->GetJitterSeed(), ours->GetTerminationOpacity());
       }
+      if (ours->GetOutputMode() == vtkDeepShadowVolumeMapper::OutputShadowTerm)
+      {
+        settings.Output = deepshadow::RenderOutput::ShadowTerm;
+      }
     }
   }
   if (scene.Volumes.empty())

@@ -14,6 +14,7 @@
  * - GpuTwin: what vtkDeepShadowVolumeMapper computes (its transfer table, its termination
  *   opacity, its jitter), to compare GPU and CPU formula by formula.
  * Shadows follow each mapper's vtkDeepShadowTechnique (its CPU twin), or the ground truth.
+ * The image shows what the mapper's OutputMode says: the lit colour, or the shadow term.
  */
 #ifndef vtkDeepShadowReferenceRenderer_h
 #define vtkDeepShadowReferenceRenderer_h

@@ -367,6 +367,7 @@ void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   this->ErrorThisFrame = false;
+  this->LastPasses.clear();
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
   {
@@ -469,6 +470,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       impl.Volume->Create3DFromRaw(static_cast<unsigned int>(impl.Dims.x), static_cast<unsigned int>(impl.Dims.y),
         static_cast<unsigned int>(impl.Dims.z), 1, vtkType, const_cast<void*>(texels));
       ++this->VolumeUploads;
+      this->LastPasses.emplace_back("volume-upload");
     }
   }
   if (!impl.DataError.empty())
@@ -513,6 +515,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.TransferStep = step;
     impl.TransferSize = this->TransferTableSize;
     ++this->TransferTableBuilds;
+    this->LastPasses.emplace_back("transfer-table");
   }
 
   // 3. Empty-space block map: depends on the data and the opacity function only.
@@ -538,6 +541,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.OccupancyOpacityTime = opacityTime;
     impl.OccupancyUploadCount = this->VolumeUploads;
     ++this->OccupancyBuilds;
+    this->LastPasses.emplace_back("occupancy");
   }
   const bool skipEmpty = this->EmptySpaceSkipping && impl.AnyEmptyBlock;
   this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.EmptyBlockFraction : 0.0;
@@ -547,7 +551,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   const deepshadow::Camera camera = adapter::MakeCamera(renderer);
   vtkDeepShadowTechnique* technique = this->ShadowTechnique;
-  const bool lit = shade || technique;
+  const bool shadowTerm = this->OutputMode == OutputShadowTerm;
+  const bool lit = shade || technique || shadowTerm;
   bool truncated = false;
   deepshadow::ShadowContext context;
   context.Window = window;
@@ -573,7 +578,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (technique)
   {
     context.Transfer = adapter::MakeTransferFunction(property);
-    if (!technique->Prepare(context))
+    const bool prepared = technique->Prepare(context);
+    const std::vector<std::string>& passes = technique->GetLastPasses();
+    this->LastPasses.insert(this->LastPasses.end(), passes.begin(), passes.end());
+    if (!prepared)
     {
       // A defined picture: the volume without shadows, and the reason said once.
       this->ReportError("shadows are off: " + technique->GetLastError());
@@ -588,7 +596,12 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (lit)
   {
     features.insert("Lighting");
-    features.insert(shade ? "Gradient" : "Isotropic");
+    // The shadow term needs no normal.
+    features.insert(shade && !shadowTerm ? "Gradient" : "Isotropic");
+  }
+  if (shadowTerm)
+  {
+    features.insert("ShadowTerm");
   }
   if (technique)
   {
@@ -726,6 +739,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     glFrontFace(mirrored ? GL_CW : GL_CCW);
     glEnable(GL_DEPTH_CLAMP);
     glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+    this->LastPasses.emplace_back("ray-cast");
     glDisable(GL_DEPTH_CLAMP);
     glFrontFace(GL_CCW);
     state->vtkglCullFace(GL_BACK);
@@ -767,6 +781,7 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";
   os << indent << "ReplaceNonFiniteScalars: " << this->ReplaceNonFiniteScalars << "\n";
+  os << indent << "OutputMode: " << (this->OutputMode == OutputShadowTerm ? "ShadowTerm" : "Color") << "\n";
   os << indent << "RenderCount: " << this->RenderCount << "\n";
   os << indent << "VolumeUploads: " << this->VolumeUploads << "\n";
   os << indent << "TransferTableBuilds: " << this->TransferTableBuilds << "\n";

@@ -106,6 +106,25 @@ public:
   /** Shadow structures built so far (0 without a technique). */
   int GetShadowBuilds();
 
+  ///@{
+  /**
+   * What the image shows: the lit colour (OutputColor, the default), or the shadow term
+   * alone (OutputShadowTerm): each sample's colour replaced by the product, over the lights
+   * that reach it, of 1 - ShadowAttenuation (1 - visibility), composited with the volume's
+   * opacity; 1 (white) where nothing shadows. It measures a technique's error without the
+   * shading; vtkDeepShadowReferenceRenderer::SetOutput() is its CPU twin.
+   */
+  enum OutputModes
+  {
+    OutputColor = 0,
+    OutputShadowTerm = 1
+  };
+  vtkSetClampMacro(OutputMode, int, OutputColor, OutputShadowTerm);
+  vtkGetMacro(OutputMode, int);
+  void SetOutputModeToColor() { this->SetOutputMode(OutputColor); }
+  void SetOutputModeToShadowTerm() { this->SetOutputMode(OutputShadowTerm); }
+  ///@}
+
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
 
@@ -126,6 +145,12 @@ public:
   /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
   const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
   const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }
+  /**
+   * The GPU passes the last frame ran, in order: "volume-upload", "transfer-table",
+   * "occupancy" (each only when what it depends on changed), the technique's passes
+   * (vtkDeepShadowTechnique::GetLastPasses()) and "ray-cast".
+   */
+  const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
   /** Fraction of empty-space blocks that are skipped (0 when skipping is off). */
   vtkGetMacro(EmptyBlockFraction, double);
   /** GPU memory of the volume, table and block map, in bytes. */
@@ -151,6 +176,7 @@ protected:
   bool EmptySpaceSkipping = true;
   int TransferTableSize = 4096;
   bool ReplaceNonFiniteScalars = false;
+  int OutputMode = OutputColor;
   vtkDeepShadowTechnique* ShadowTechnique = nullptr;
 
   int RenderCount = 0;
@@ -159,6 +185,7 @@ protected:
   int OccupancyBuilds = 0;
   int ShaderCompositions = 0;
   std::vector<std::string> ShaderFeatures;
+  std::vector<std::string> LastPasses;
   std::string FragmentShaderSource;
   double EmptyBlockFraction = 0.0;
   long long GPUMemoryBytes = 0;

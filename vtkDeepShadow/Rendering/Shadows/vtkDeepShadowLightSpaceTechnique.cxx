@@ -219,6 +219,7 @@ bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(deferred), &deferred);
       }
       maps.Build.Dispatch(glm::ivec3(this->MapSize, this->MapSize, 1), glm::ivec3(8, 8, 1));
+      this->LastPasses.emplace_back("light-space-build");
       if (defers)
       {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, maps.Deferred);
@@ -229,6 +230,7 @@ bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext
         // The deferred texels, 64 to a group (the pass's 8 x 8 invocations).
         maps.Build.Set("u_deferredPass", 1);
         maps.Build.Dispatch(glm::ivec3(static_cast<int>(deferred), 1, 1), glm::ivec3(64, 1, 1));
+        this->LastPasses.emplace_back("light-space-deferred");
       }
     }
   }

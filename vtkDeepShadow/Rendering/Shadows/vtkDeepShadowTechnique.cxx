@@ -136,6 +136,7 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
 {
   Internals& impl = *this->Impl;
   this->LastError.clear();
+  this->LastPasses.clear();
   impl.PassMilliseconds = 0.0;
   impl.Passes = 0;
   const deepshadow::ShadowParameters parameters = this->GetParameters();
@@ -234,6 +235,7 @@ void vtkDeepShadowTechnique::UpdateFeelerTable(const deepshadow::ShadowContext& 
     impl.FeelerTable->SetMagnificationFilter(vtkTextureObject::Linear);
     impl.FeelerTable->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT, const_cast<float*>(table.RGBA.data()));
     impl.FeelerKey = tableKey;
+    this->LastPasses.emplace_back("feeler-table");
   }
 }
 
@@ -319,6 +321,7 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
       impl.CacheBuild.Set("u_lightPosition", glm::vec3(light.Position));
       impl.CacheBuild.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
       impl.CacheBuild.Dispatch(dims, glm::ivec3(4));
+      this->LastPasses.emplace_back("shadow-cache");
     }
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     this->UnbindLookup();

@@ -120,6 +120,12 @@ public:
   vtkGetMacro(LastBuildMilliseconds, double);
   long long GetShadowBytes() const;
   const std::string& GetLastError() const { return this->LastError; }
+  /**
+   * The GPU passes the last frame ran for this technique, in order: "feeler-table" (the
+   * feeler's transfer table re-uploaded), "light-space-build" and "light-space-deferred"
+   * (per face built), "shadow-cache" (per light cached). Empty when nothing was rebuilt.
+   */
+  const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
   ///@}
 
   // ---- Used by vtkDeepShadowVolumeMapper, not by applications ----
@@ -221,6 +227,7 @@ protected:
   int BuildCount = 0;
   double LastBuildMilliseconds = 0.0;
   std::string LastError;
+  std::vector<std::string> LastPasses;
 
 private:
   vtkDeepShadowTechnique(const vtkDeepShadowTechnique&) = delete;

@@ -24,6 +24,7 @@ uniform int u_twoSidedLighting;
 vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
 {
   vec3 lit = u_material.x * color * u_ambientLight;
+  //DeepShadow::ShadowTerm::Start
   //DeepShadow::Gradient::Normal
   for (int i = 0; i < u_lightCount; ++i)
   {
@@ -53,6 +54,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
     //DeepShadow::Shadow::Impl
     lit += attenuation * contribution;
   }
+  //DeepShadow::ShadowTerm::Return
   return clamp(lit, 0.0, 1.0);
 }
 //@Impl

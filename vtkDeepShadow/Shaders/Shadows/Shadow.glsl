@@ -9,5 +9,7 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
     if (u_shadowSlot[i] >= 0)
     {
       vec3 visibility = lightVisibility(u_shadowSlot[i], position, toLight, lightDistance);
-      contribution *= 1.0 - u_shadowAttenuation[i] * (1.0 - visibility);
+      vec3 shadowFactor = 1.0 - u_shadowAttenuation[i] * (1.0 - visibility);
+      contribution *= shadowFactor;
+      //DeepShadow::ShadowTerm::Accumulate
     }
