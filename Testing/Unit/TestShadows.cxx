@@ -185,4 +185,19 @@ TEST(Shadows, ReferenceRendererDarkensWhatTheSlabShadows)
   const double underSlab = shadowed.At(18, 12).x, open = shadowed.At(5, 12).x;
   EXPECT_LT(underSlab, 0.5 * open);
   EXPECT_GT(open, 0.2);
+
+  // The shadow term, asked for alongside the colour, changes the colour not at all and equals
+  // the ShadowTerm output; it is grey (a grey technique), in [0, 1], darker under the slab.
+  Image term;
+  EXPECT_EQ(ReferenceRenderer::Render(scene, settings, 2, &term).RGB, shadowed.RGB);
+  MarchSettings termOnly = settings;
+  termOnly.Output = RenderOutput::ShadowTerm;
+  EXPECT_EQ(ReferenceRenderer::Render(scene, termOnly, 2).RGB, term.RGB);
+  for (double v : term.RGB)
+  {
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 1.0);
+  }
+  EXPECT_EQ(term.At(18, 12).x, term.At(18, 12).z);
+  EXPECT_LT(term.At(18, 12).x, 0.5 * term.At(5, 12).x);
 }

@@ -74,12 +74,13 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
 
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-  const MarchSettings& settings)
+  const MarchSettings& settings, glm::dvec4* shadowTerm)
 {
   const TransferTable* table = prepared.Table.get();
   const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
-  const bool shadowTerm = settings.Output == RenderOutput::ShadowTerm;
-  const bool lit = volume.Shade || shadowed || shadowTerm;
+  const bool termOnly = settings.Output == RenderOutput::ShadowTerm;
+  const bool wantTerm = termOnly || shadowTerm;
+  const bool lit = volume.Shade || shadowed || termOnly;
   const VolumeGrid& grid = *volume.Grid;
   double tEnter = 0.0, tExit = 0.0;
   if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1),
@@ -95,6 +96,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(ray.Direction, 0.0));
 
   glm::dvec4 accumulated(0.0);
+  glm::dvec4 termAccumulated(0.0);
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
@@ -134,7 +136,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (lit)
     {
       const glm::dvec3 position = ray.Origin + t * ray.Direction;
-      const glm::dvec3 normal = volume.Shade && !shadowTerm
+      const glm::dvec3 normal = volume.Shade && !termOnly
         ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling))
         : glm::dvec3(0.0);
       glm::dvec3 light = volume.Surface.Ambient * color * scene.AmbientLight;
@@ -142,36 +144,53 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       for (size_t l = 0; l < scene.Lights.size(); ++l)
       {
         const LightSample sample = scene.Lights[l].At(position);
-        if (shadowTerm)
+        glm::dvec3 contribution(0.0);
+        if (!termOnly)
         {
-          if (shadowed && prepared.Shadows[l] && sample.Reach > 0.0)
-          {
-            term *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - prepared.Shadows[l]->Visibility(position));
-          }
-          continue;
+          contribution = volume.Shade
+            ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
+            : volume.Surface.Diffuse * sample.Diffuse * color;
         }
-        glm::dvec3 contribution = volume.Shade
-          ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
-          : volume.Surface.Diffuse * sample.Diffuse * color;
-        if (shadowed && prepared.Shadows[l] && contribution != glm::dvec3(0.0))
+        const bool termReached = wantTerm && sample.Reach > 0.0;
+        if (shadowed && prepared.Shadows[l] && (contribution != glm::dvec3(0.0) || termReached))
         {
           const glm::dvec3 visibility = prepared.Shadows[l]->Visibility(position);
-          contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+          const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+          contribution *= factor;
+          term *= termReached ? factor : glm::dvec3(1.0);
         }
         light += contribution;
       }
-      color = glm::clamp(shadowTerm ? term : light, 0.0, 1.0);
+      term = glm::clamp(term, 0.0, 1.0);
+      color = termOnly ? term : glm::clamp(light, 0.0, 1.0);
+      if (shadowTerm)
+      {
+        CompositeFrontToBack(termAccumulated, term, alpha);
+      }
+    }
+    else if (shadowTerm)
+    {
+      CompositeFrontToBack(termAccumulated, glm::dvec3(1.0), alpha);
     }
     CompositeFrontToBack(accumulated, color, alpha);
+  }
+  if (shadowTerm)
+  {
+    *shadowTerm = termAccumulated;
   }
   return accumulated;
 }
 
-Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads)
+Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
+  Image* shadowTerm)
 {
   const int width = scene.View.GetWidth();
   const int height = scene.View.GetHeight();
   Image image(width, height);
+  if (shadowTerm)
+  {
+    *shadowTerm = Image(width, height);
+  }
 
   std::vector<PreparedVolume> prepared;
   for (const VolumeInstance& volume : scene.Volumes)
@@ -189,13 +208,20 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           ? JitterOffset(static_cast<uint32_t>(x), static_cast<uint32_t>(y), settings.JitterSeed)
           : UnjitteredOffset;
         glm::dvec3 pixel = scene.Background;
+        glm::dvec3 termPixel = scene.Background;
         for (size_t v = 0; v < scene.Volumes.size(); ++v)
         {
+          glm::dvec4 term(0.0);
           const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray,
-            std::numeric_limits<double>::infinity(), offset, settings);
+            std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
           pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+          termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
         }
         image.Set(x, y, pixel);
+        if (shadowTerm)
+        {
+          shadowTerm->Set(x, y, termPixel);
+        }
       }
     },
     threads);

@@ -96,8 +96,13 @@ struct MarchSettings
 class VTKDEEPSHADOWCORE_EXPORT ReferenceRenderer
 {
 public:
-  /** Renders the scene; `threads` 0 uses DefaultThreadCount(). */
-  static Image Render(const Scene& scene, const MarchSettings& settings, int threads = 0);
+  /**
+   * Renders the scene; `threads` 0 uses DefaultThreadCount(). With `shadowTerm`, also its
+   * shadow-term image (RenderOutput::ShadowTerm) from the same march: the visibilities,
+   * which cost the most, are evaluated once for both.
+   */
+  static Image Render(const Scene& scene, const MarchSettings& settings, int threads = 0,
+    Image* shadowTerm = nullptr);
 
   /** What rendering a volume needs beyond its description, computed once per image. */
   struct PreparedVolume
@@ -113,11 +118,12 @@ public:
 
   /**
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
-   * first sample `offset` steps (in [0, 1)) past the entry.
+   * first sample `offset` steps (in [0, 1)) past the entry; with `shadowTerm`, also the
+   * premultiplied shadow term along the same ray.
    */
   static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume,
     const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-    const MarchSettings& settings);
+    const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr);
 };
 
 }

@@ -34,7 +34,8 @@ void vtkDeepShadowReferenceRenderer::PrepareRenderer(vtkRenderer* renderer)
   renderer->UpdateLightsGeometryToFollowCamera();
 }
 
-bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::Image& image)
+bool vtkDeepShadowReferenceRenderer::Render(
+  vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm)
 {
   this->LastError.clear();
   deepshadow::Scene scene;
@@ -126,6 +127,10 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::I
         image.Set(x, y, scene.Background);
       }
     }
+    if (shadowTerm)
+    {
+      *shadowTerm = image;
+    }
     return true;
   }
   if (sampleDistance <= 0.0)
@@ -134,7 +139,7 @@ bool vtkDeepShadowReferenceRenderer::Render(vtkRenderer* renderer, deepshadow::I
       deepshadow::DefaultSampleDistance(scene.Volumes.front().Grid->GetIndexToWorld());
   }
   settings.SampleDistance = sampleDistance;
-  image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads);
+  image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm);
   return true;
 }
 

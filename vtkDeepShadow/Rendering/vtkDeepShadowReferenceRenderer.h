@@ -89,8 +89,11 @@ public:
    * GetLastError() (also vtkErrorMacro) when the scene cannot be rendered.
    */
   bool Render(vtkRenderer* renderer, vtkImageData* image);
-  /** The same, as linear double RGB. */
-  bool Render(vtkRenderer* renderer, deepshadow::Image& image);
+  /**
+   * The same, as linear double RGB; with `shadowTerm`, also the shadow-term image
+   * (vtkDeepShadowVolumeMapper::OutputShadowTerm) from the same march, for about the cost of one.
+   */
+  bool Render(vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm = nullptr);
 
   const std::string& GetLastError() const { return this->LastError; }
 
