@@ -11,27 +11,13 @@
 //     et al.'s Table 4).
 #include "Commands.h"
 #include "Json.h"
-#include "SceneSetup.h"
+#include "Measure.h"
 
-#include "Image.h"
 #include "Shadows.h"
-#include "vtkDeepShadowDeepShadowMapTechnique.h"
-#include "vtkDeepShadowImageConversion.h"
-#include "vtkDeepShadowRayTechnique.h"
-#include "vtkDeepShadowReferenceRenderer.h"
-#include "vtkDeepShadowRenderWindow.h"
+
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowTechnique.h"
-#include "vtkDeepShadowVolumeMapper.h"
 
-#include "vtkCamera.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
-#include "vtkNew.h"
-#include "vtkRenderer.h"
-#include "vtkTransform.h"
-
-#include <chrono>
 #include <cstdio>
 
 namespace deepshadow
@@ -40,33 +26,6 @@ namespace tool
 {
 namespace
 {
-// Median frame time over `frames` frames, each after `step` changes the view or light.
-template <typename Step>
-double TimeFrames(SceneSetup& setup, int frames, Step step)
-{
-  std::vector<double> times;
-  for (int f = 0; f < frames; ++f)
-  {
-    step(f);
-    times.push_back(RenderFrame(setup.Window));
-  }
-  return Median(times);
-}
-
-Image CaptureAt(SceneSetup& setup, int width, int height, int restoreWidth, int restoreHeight)
-{
-  setup.Window->SetSize(width, height);
-  RenderFrame(setup.Window);
-  Image image = CaptureWindow(setup.Window);
-  setup.Window->SetSize(restoreWidth, restoreHeight);
-  return image;
-}
-
-vtkLight* KeyLight(vtkRenderer* renderer)
-{
-  return vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
-}
-
 // The techniques measured when --techniques is not given.
 const std::vector<std::string> DefaultTechniques{ "rays", "rays-cached", "rays-opaque",
   "rays-color", "shadowmap", "dsm", "dsm-cached", "dsm-color", "dsm3", "cssm", "cssm-cached" };
@@ -84,139 +43,55 @@ int RunShadowBench(const Options& options)
   std::vector<Json> rows;
   for (const std::string& name : scenes)
   {
-    Options sceneOptions = options;
-    sceneOptions.Scene = name;
-    sceneOptions.VolumeFile.clear();
-    sceneOptions.Technique = "none";
-    SceneSetup setup = SceneSetup::Build(sceneOptions);
-    vtkCamera* camera = setup.Renderer->GetActiveCamera();
-    vtkNew<vtkCamera> startCamera;
-    startCamera->DeepCopy(camera);
-    vtkLight* key = KeyLight(setup.Renderer);
-    double startPosition[3];
-    key->GetPosition(startPosition);
-    auto restore = [&]() {
-      camera->DeepCopy(startCamera);
-      key->SetPosition(startPosition);
-      setup.Renderer->ResetCameraClippingRange();
-    };
-    auto orbit = [&](int) {
-      camera->Azimuth(3.0);
-      setup.Renderer->ResetCameraClippingRange();
-    };
-    auto turnLight = [&](int) {
-      // Turn the key light's direction by 3 degrees about the view-up.
-      const double* focal = key->GetFocalPoint();
-      double* up = camera->GetViewUp();
-      vtkNew<vtkTransform> turn;
-      turn->Translate(focal[0], focal[1], focal[2]);
-      turn->RotateWXYZ(3.0, up);
-      turn->Translate(-focal[0], -focal[1], -focal[2]);
-      double position[3];
-      key->GetPosition(position);
-      turn->TransformPoint(position, position);
-      key->SetPosition(position);
-    };
-
-    RenderFrame(setup.Window);
-    RequireDrawn(setup);
-    const double baseline = TimeFrames(setup, options.Frames, orbit);
-    restore();
-
-    // The ground truths at the error size, from the start view: grey, and coloured once a
-    // coloured technique asks for it.
-    double truthMs = 0.0;
-    auto groundTruth = [&](bool colored) {
-      vtkNew<vtkDeepShadowRayTechnique> model; // says only grey or coloured
-      model->SetColored(colored);
-      vtkSmartPointer<vtkDeepShadowTechnique> current = setup.Mapper->GetShadowTechnique();
-      setup.Mapper->SetShadowTechnique(model);
-      setup.Window->SetSize(options.ErrorWidth, options.ErrorHeight);
-      RenderFrame(setup.Window); // lights and clipping as the GPU frames have them
-      vtkNew<vtkDeepShadowReferenceRenderer> reference;
-      reference->SetShadows(vtkDeepShadowReferenceRenderer::GroundTruthShadows);
-      Image truth;
-      const auto start = std::chrono::steady_clock::now();
-      reference->Render(setup.Renderer, truth);
-      truthMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      setup.Window->SetSize(options.Width, options.Height);
-      setup.Mapper->SetShadowTechnique(current);
-      return truth;
-    };
-    const Image truth = groundTruth(false);
-    Image coloredTruth;
-    const Image unshadowed = CaptureAt(setup, options.ErrorWidth, options.ErrorHeight, options.Width, options.Height);
-    const ImageDifference unshadowedError = Compare(unshadowed, truth);
+    SceneBench bench(options, name);
+    const Measurement none = bench.Measure(nullptr, false);
+    const double baseline = none.CameraMs;
+    const GroundTruth& truth = bench.Truth(false);
+    const ImageDifference unshadowedError = Compare(none.Picture, truth.Picture);
     std::printf("%-8s %-24s %9.1f %8s %8s %9s %11s %9.5f %8.4f   (ground truth %.0f ms)\n",
       name.c_str(), "none", baseline, "1.00", "1.00", "-", "0", unshadowedError.RMSE,
-      unshadowedError.MaxAbs, truthMs);
+      unshadowedError.MaxAbs, truth.Milliseconds);
     std::fflush(stdout);
 
     for (const std::string& technique : techniques)
     {
-      const Options techniqueOptions = WithTechniqueSpec(sceneOptions, technique);
-      auto shadow = MakeTechnique(techniqueOptions);
+      auto shadow = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), technique));
       const bool colored = shadow->GetParameters().IsColored();
-      if (colored && coloredTruth.RGB.empty())
-      {
-        coloredTruth = groundTruth(true);
-      }
-      setup.Mapper->SetShadowTechnique(shadow);
-      restore();
-      RenderFrame(setup.Window); // builds
-      RequireDrawn(setup);
-      const int builds = shadow->GetBuildCount();
-      const double cameraMs = TimeFrames(setup, options.Frames, orbit);
-      const bool rebuiltForCamera = shadow->GetBuildCount() != builds;
-      restore();
-      // Every light-moving frame rebuilds: the build time is the median of theirs.
-      std::vector<double> buildTimes;
-      const double lightMs = TimeFrames(setup, options.Frames, [&](int f) {
-        if (f > 0)
-        {
-          buildTimes.push_back(shadow->GetLastBuildMilliseconds());
-        }
-        turnLight(f);
-      });
-      buildTimes.push_back(shadow->GetLastBuildMilliseconds());
-      const double buildMs = Median(buildTimes);
-      restore();
-      const Image image = CaptureAt(setup, options.ErrorWidth, options.ErrorHeight, options.Width, options.Height);
-      const ImageDifference error = Compare(image, colored ? coloredTruth : truth);
-      auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(shadow);
+      const Measurement m = bench.Measure(shadow, false);
+      const ImageDifference error = Compare(m.Picture, bench.Truth(colored).Picture);
+      const bool dsm = m.NodesMax > 0;
       char nodes[64] = "";
       if (dsm)
       {
-        std::snprintf(nodes, sizeof(nodes), "%.2f/%d", dsm->GetNodesAverage(), dsm->GetNodesMax());
+        std::snprintf(nodes, sizeof(nodes), "%.2f/%d", m.NodesAverage, m.NodesMax);
       }
       std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", name.c_str(),
-        technique.c_str(), cameraMs, cameraMs / baseline, lightMs / baseline, buildMs,
-        shadow->GetShadowBytes(), error.RMSE, error.MaxAbs, nodes,
-        rebuiltForCamera ? "  (rebuilt when the camera moved!)" : "");
+        technique.c_str(), m.CameraMs, m.CameraMs / baseline, m.LightMs / baseline, m.BuildMs,
+        m.ShadowBytes, error.RMSE, error.MaxAbs, nodes,
+        m.RebuiltForCamera ? "  (rebuilt when the camera moved!)" : "");
       std::fflush(stdout);
       Json row;
       row.Set("scene", name)
         .Set("technique", technique)
         .Set("unshadowed_ms", baseline)
-        .Set("camera_ms", cameraMs)
-        .Set("light_ms", lightMs)
-        .Set("camera_ratio", cameraMs / baseline)
-        .Set("light_ratio", lightMs / baseline)
-        .Set("build_ms", buildMs)
-        .Set("shadow_bytes", shadow->GetShadowBytes())
+        .Set("camera_ms", m.CameraMs)
+        .Set("light_ms", m.LightMs)
+        .Set("camera_ratio", m.CameraMs / baseline)
+        .Set("light_ratio", m.LightMs / baseline)
+        .Set("build_ms", m.BuildMs)
+        .Set("shadow_bytes", m.ShadowBytes)
         .Set("colored", colored)
         .Set("rmse", error.RMSE)
         .Set("max_abs", error.MaxAbs)
         .Set("unshadowed_rmse", unshadowedError.RMSE)
-        .Set("ground_truth_ms", truthMs)
-        .Set("rebuilt_when_camera_moved", rebuiltForCamera)
-        .Set("dsm_nodes_avg", dsm ? dsm->GetNodesAverage() : 0.0)
-        .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
-        .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
-        .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0);
+        .Set("ground_truth_ms", bench.Truth(colored).Milliseconds)
+        .Set("rebuilt_when_camera_moved", m.RebuiltForCamera)
+        .Set("dsm_nodes_avg", m.NodesAverage)
+        .Set("dsm_nodes_max", m.NodesMax)
+        .Set("dsm_texels_overflowed", m.TexelsOverflowed)
+        .Set("dsm_epsilon_max", m.EpsilonMax);
       rows.push_back(row);
     }
-    setup.Mapper->SetShadowTechnique(nullptr);
   }
   if (!options.Json.empty())
   {

@@ -1,0 +1,166 @@
+#include "Measure.h"
+
+#include "Json.h"
+
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
+#include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowRayTechnique.h"
+#include "vtkDeepShadowReferenceRenderer.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkRenderer.h"
+#include "vtkTransform.h"
+
+#include <chrono>
+
+namespace deepshadow
+{
+namespace tool
+{
+
+SceneBench::SceneBench(const Options& options, const std::string& name)
+  : Settings(options)
+{
+  this->Settings.Scene = name;
+  this->Settings.VolumeFile.clear();
+  this->Settings.Technique = "none";
+  this->Scene = SceneSetup::Build(this->Settings);
+  this->StartCamera->DeepCopy(this->Scene.Renderer->GetActiveCamera());
+  this->Key = vtkLight::SafeDownCast(this->Scene.Renderer->GetLights()->GetItemAsObject(0));
+  this->Key->GetPosition(this->StartPosition);
+  RenderFrame(this->Scene.Window);
+  RequireDrawn(this->Scene);
+}
+
+void SceneBench::Restore()
+{
+  this->Scene.Renderer->GetActiveCamera()->DeepCopy(this->StartCamera);
+  this->Key->SetPosition(this->StartPosition);
+  this->Scene.Renderer->ResetCameraClippingRange();
+}
+
+void SceneBench::Orbit()
+{
+  this->Scene.Renderer->GetActiveCamera()->Azimuth(3.0);
+  this->Scene.Renderer->ResetCameraClippingRange();
+}
+
+void SceneBench::TurnLight()
+{
+  // The key light's direction turns by 3 degrees about the view-up.
+  const double* focal = this->Key->GetFocalPoint();
+  double* up = this->Scene.Renderer->GetActiveCamera()->GetViewUp();
+  vtkNew<vtkTransform> turn;
+  turn->Translate(focal[0], focal[1], focal[2]);
+  turn->RotateWXYZ(3.0, up);
+  turn->Translate(-focal[0], -focal[1], -focal[2]);
+  double position[3];
+  this->Key->GetPosition(position);
+  turn->TransformPoint(position, position);
+  this->Key->SetPosition(position);
+}
+
+Image SceneBench::Capture(bool shadowTerm)
+{
+  vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
+  mapper->SetOutputMode(shadowTerm ? vtkDeepShadowVolumeMapper::OutputShadowTerm
+                                   : vtkDeepShadowVolumeMapper::OutputColor);
+  this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
+  RenderFrame(this->Scene.Window);
+  Image image = CaptureWindow(this->Scene.Window);
+  this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
+  mapper->SetOutputModeToColor();
+  return image;
+}
+
+Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTerm)
+{
+  Measurement m;
+  vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
+  mapper->SetShadowTechnique(technique);
+  this->Restore();
+  RenderFrame(this->Scene.Window); // warm-up: builds and compiles
+  RequireDrawn(this->Scene);
+  const int builds = mapper->GetShadowBuilds();
+  std::vector<double> times;
+  for (int f = 0; f < this->Settings.Frames; ++f)
+  {
+    this->Orbit();
+    times.push_back(RenderFrame(this->Scene.Window));
+  }
+  m.CameraMs = Median(times);
+  m.CameraPasses = mapper->GetLastPasses();
+  m.Features = mapper->GetShaderFeatures();
+  m.RebuiltForCamera = mapper->GetShadowBuilds() != builds;
+  this->Restore();
+  // Every light-moving frame rebuilds: the build time is the median of theirs.
+  times.clear();
+  std::vector<double> buildTimes;
+  for (int f = 0; f < this->Settings.Frames; ++f)
+  {
+    this->TurnLight();
+    times.push_back(RenderFrame(this->Scene.Window));
+    if (technique)
+    {
+      buildTimes.push_back(technique->GetLastBuildMilliseconds());
+    }
+  }
+  m.LightMs = Median(times);
+  m.BuildMs = buildTimes.empty() ? 0.0 : Median(buildTimes);
+  this->Restore();
+  m.Picture = this->Capture(false);
+  if (shadowTerm)
+  {
+    m.ShadowTerm = this->Capture(true);
+  }
+  if (technique)
+  {
+    m.ShadowBytes = technique->GetShadowBytes();
+  }
+  if (auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(technique))
+  {
+    m.NodesAverage = dsm->GetNodesAverage();
+    m.NodesMax = dsm->GetNodesMax();
+    m.TexelsOverflowed = dsm->GetTexelsOverflowed();
+    m.EpsilonMax = dsm->GetEpsilonMax();
+  }
+  mapper->SetShadowTechnique(nullptr);
+  return m;
+}
+
+const GroundTruth& SceneBench::Truth(bool colored)
+{
+  GroundTruth& truth = this->Truths[colored ? 1 : 0];
+  if (this->HaveTruth[colored ? 1 : 0])
+  {
+    return truth;
+  }
+  vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
+  vtkNew<vtkDeepShadowRayTechnique> model; // says only grey or coloured
+  model->SetColored(colored);
+  mapper->SetShadowTechnique(model);
+  this->Restore();
+  this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
+  RenderFrame(this->Scene.Window); // lights and clipping as the GPU frames have them
+  vtkNew<vtkDeepShadowReferenceRenderer> reference;
+  reference->SetShadows(vtkDeepShadowReferenceRenderer::GroundTruthShadows);
+  const auto start = std::chrono::steady_clock::now();
+  if (!reference->Render(this->Scene.Renderer, truth.Picture, &truth.ShadowTerm))
+  {
+    throw std::runtime_error("the ground truth failed: " + reference->GetLastError());
+  }
+  truth.Milliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
+  mapper->SetShadowTechnique(nullptr);
+  this->HaveTruth[colored ? 1 : 0] = true;
+  return truth;
+}
+
+}
+}
