@@ -28,21 +28,6 @@ namespace tool
 {
 namespace
 {
-std::string RendererString(vtkDeepShadowRenderWindow* window)
-{
-  std::istringstream report(window->ReportCapabilities());
-  std::string line;
-  const std::string key = "OpenGL renderer string:";
-  while (std::getline(report, line))
-  {
-    if (line.rfind(key, 0) == 0)
-    {
-      return line.substr(line.find_first_not_of(' ', key.size()));
-    }
-  }
-  return "unknown";
-}
-
 struct GpuRun
 {
   double FirstFrameMs = 0.0;

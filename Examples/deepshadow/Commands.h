@@ -16,6 +16,7 @@ int RunAll(const Options& options);
 int RunScenes(const Options& options);
 int RunBench(const Options& options);
 int RunShadowBench(const Options& options);
+int RunReport(const Options& options);
 
 }
 }

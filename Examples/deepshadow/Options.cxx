@@ -297,6 +297,8 @@ Usage:
   deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
   deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
                        [--frames N] [--json shadows.json]
+  deepshadow report    --out DIR [--quick] [--scenes a,b] [--techniques t,u] [--size WxH]
+                       [--error-size WxH] [--frames N]
   deepshadow scenes
   deepshadow --help
 
@@ -318,6 +320,15 @@ Commands:
               a quarter step, coloured for coloured techniques) at --error-size (default
               256x256). --techniques takes technique specs, NAME[:OPTION=VALUE...] with any
               technique option below without its dashes, e.g. dsm:layers=2:epsilon=0.05.
+  report      Error against run time for every technique over a sweep of its parameters
+              (step factors, cache and map sizes, PCF kernels, epsilon and layers, CSSM
+              offsets and photons, cached and recomputed) on the standard scenes: writes
+              DIR/results.csv (build and frame times, ratios to the unshadowed frame,
+              memory, RMSE and maximum error of the image and of the shadow term against
+              the ground truth), DIR/<scene>/error-vs-time.png (Pareto front dashed), the
+              pictures, and DIR/README.md (tables, pictures side by side, the best technique
+              per budget). Defaults 512x512, errors at 256x256, 5 frames; --quick: a short
+              sweep at 256x256, errors at 128x128, 3 frames. Progress on stderr.
   scenes      Lists the standard scenes.
 
 SCENE (default: --scene box):
@@ -400,7 +411,7 @@ Options Options::Parse(int argc, char* argv[])
     i = 1;
   }
   static const char* const commands[] = { "render", "reference", "all", "bench", "shadow-bench",
-    "scenes" };
+    "report", "scenes" };
   bool known = false;
   for (const char* c : commands)
   {
@@ -409,6 +420,16 @@ Options Options::Parse(int argc, char* argv[])
   if (!known)
   {
     throw UsageError("unknown command '" + o.Command + "' (try deepshadow --help)");
+  }
+
+  o.Arguments.assign(args.begin() + static_cast<std::ptrdiff_t>(i), args.end());
+  if (o.Command == "report")
+  {
+    // Its own defaults; explicit options below still override them.
+    o.Quick = std::find(args.begin(), args.end(), "--quick") != args.end();
+    o.Width = o.Height = o.Quick ? 256 : 512;
+    o.ErrorWidth = o.ErrorHeight = o.Quick ? 128 : 256;
+    o.Frames = o.Quick ? 3 : 5;
   }
 
   bool sawScene = false;
@@ -577,6 +598,10 @@ Options Options::Parse(int argc, char* argv[])
       o.ErrorWidth = ParseInteger(key, parts[0], 1, 16384);
       o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
     }
+    else if (key == "--quick" && o.Command == "report")
+    {
+      o.Quick = true;
+    }
     else if (key == "--bench-sizes")
     {
       o.BenchSizes.clear();
@@ -599,11 +624,12 @@ Options Options::Parse(int argc, char* argv[])
   {
     o.Scene = "box";
   }
-  if ((o.Command == "render" || o.Command == "reference" || o.Command == "all") && o.Out.empty())
+  if ((o.Command == "render" || o.Command == "reference" || o.Command == "all" ||
+        o.Command == "report") && o.Out.empty())
   {
     throw UsageError(o.Command + " needs --out");
   }
-  if (o.Command == "all")
+  if (o.Command == "all" || o.Command == "report")
   {
     o.OutDir = o.Out;
   }

@@ -39,7 +39,8 @@ std::vector<std::string> TechniqueNames();
 
 struct Options
 {
-  std::string Command; // render | reference | bench | all | scenes | help
+  std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | help
+  std::vector<std::string> Arguments; // as given, after the command
 
   // What to render.
   std::string Scene;      // standard scene name
@@ -90,6 +91,8 @@ struct Options
   std::vector<std::string> BenchTechniques; // empty: all but none
   int ErrorWidth = 256;
   int ErrorHeight = 256;
+  // report
+  bool Quick = false; // the short sweep at smaller sizes
 
   /** Parses argv; throws UsageError. `--help` sets Command to "help". */
   static Options Parse(int argc, char* argv[]);

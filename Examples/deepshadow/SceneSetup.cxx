@@ -25,6 +25,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 namespace deepshadow
 {
@@ -290,6 +291,21 @@ void RequireDrawn(const SceneSetup& setup)
   {
     throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
   }
+}
+
+std::string RendererString(vtkDeepShadowRenderWindow* window)
+{
+  std::istringstream report(window->ReportCapabilities());
+  std::string line;
+  const std::string key = "OpenGL renderer string:";
+  while (std::getline(report, line))
+  {
+    if (line.rfind(key, 0) == 0)
+    {
+      return line.substr(line.find_first_not_of(' ', key.size()));
+    }
+  }
+  return "unknown";
 }
 
 void WritePNG(vtkImageData* image, const std::string& path)

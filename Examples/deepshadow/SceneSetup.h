@@ -44,6 +44,9 @@ double RenderFrame(vtkDeepShadowRenderWindow* window);
 /** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
 void RequireDrawn(const SceneSetup& setup);
 
+/** The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"). */
+std::string RendererString(vtkDeepShadowRenderWindow* window);
+
 /** Writes the window's pixels as PNG; throws UsageError if the file cannot be written. */
 void WritePNG(vtkDeepShadowRenderWindow* window, const std::string& path);
 void WritePNG(vtkImageData* image, const std::string& path);

@@ -41,6 +41,10 @@ int main(int argc, char* argv[])
     {
       return RunShadowBench(options);
     }
+    if (options.Command == "report")
+    {
+      return RunReport(options);
+    }
     return RunScenes(options);
   }
   catch (const UsageError& error)

@@ -97,6 +97,26 @@ expect 0 "shadow-bench with technique specs" -- "$tool" shadow-bench --scenes bu
 grep -q "dsm:layers=2:epsilon=0.1" out.txt || { echo "FAILED: shadow-bench row for the spec"; failures=$((failures + 1)); }
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || { echo "FAILED: reference.json lacks render_ms"; failures=$((failures + 1)); }
+expect 0 "report" -- "$tool" report --scenes bucky,rods --scale 0.5 --size 64x64 --error-size 32x32 \
+  --frames 1 --techniques dsm,shadowmap,cssm-cached --out report
+for f in results.csv README.md bucky/error-vs-time.png rods/error-vs-time.png rods/dsm.png \
+  rods/dsm-diff.png rods/truth.png rods/truth-color.png rods/truth-shadow.png; do
+  [ -s "report/$f" ] || { echo "FAILED: report/$f missing"; failures=$((failures + 1)); }
+done
+[ "$(wc -l < report/results.csv)" -eq 9 ] || { echo "FAILED: results.csv: expected a header and 8 rows"; failures=$((failures + 1)); }
+[ "$(grep -c '^report: \[' err.txt)" -eq 8 ] || { echo "FAILED: report progress on stderr"; failures=$((failures + 1)); }
+grep -q '^| >= ' report/README.md || { echo "FAILED: README.md lacks the budget table"; failures=$((failures + 1)); }
+# The Pareto flags (camera-moving frames): a flagged row is beaten by no other in both frame
+# time and RMSE; an unflagged one is matched or beaten by some row in both.
+awk -F, 'NR > 1 { s[NR] = $1; t[NR] = $13; e[NR] = $18; p[NR] = $22 }
+  END { bad = 0
+    for (i in s) { beaten = 0; matched = 0
+      for (j in s) if (i != j && s[i] == s[j] && t[j] <= t[i] && e[j] <= e[i]) {
+        matched = 1; if (t[j] < t[i] || e[j] < e[i]) beaten = 1 }
+      if ((p[i] == 1 && beaten) || (p[i] == 0 && !matched)) { print "row " i " pareto " p[i]; bad = 1 } }
+    exit bad }' report/results.csv || { echo "FAILED: Pareto flags"; failures=$((failures + 1)); }
+expect 2 "report without --out" -- "$tool" report --quick
+expect 2 "report of an unknown scene" -- "$tool" report --scenes teapot --out report2
 expect 0 "scenes" -- "$tool" scenes
 [ "$(wc -l < out.txt)" -eq 6 ] || { echo "FAILED: expected 6 scenes"; failures=$((failures + 1)); }
 
