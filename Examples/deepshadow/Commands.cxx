@@ -41,6 +41,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
   GpuRun run;
   run.FirstFrameMs = RenderFrame(setup.Window);
   RequireDrawn(setup);
+  const std::vector<std::string> firstPasses = setup.Mapper->GetLastPasses();
   for (int f = 0; f < options.Frames; ++f)
   {
     run.FrameMs.push_back(RenderFrame(setup.Window));
@@ -63,7 +64,8 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
     .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0)
     .Set("shadow_builds", mapper->GetShadowBuilds())
-    .Set("passes", std::vector<std::string>{ "volume" })
+    .Set("first_frame_passes", firstPasses)
+    .Set("passes", mapper->GetLastPasses()) // of the last timed frame
     .Set("shader_features", mapper->GetShaderFeatures())
     .Set("sample_distance", mapper->GetEffectiveSampleDistance())
     .Set("empty_block_fraction", mapper->GetEmptyBlockFraction())

@@ -87,6 +87,11 @@ done
 # 64 x 64 texels x 4 nodes x 8 bytes, plus the 4096-texel feeler table (16 bytes each).
 grep -q '"shadow_bytes": 196608' dsm.json || { echo "FAILED: dsm shadow_bytes"; grep shadow_bytes dsm.json; failures=$((failures + 1)); }
 grep -q '"dsm_nodes_max": 0' dsm.json && { echo "FAILED: no nodes counted"; failures=$((failures + 1)); }
+# Which passes ran: the first frame builds the map; the timed frames (nothing changed) only cast.
+tr -d ' \n' < dsm.json | grep -q '"first_frame_passes":\[[^]]*"light-space-build"' ||
+  { echo "FAILED: first frame's passes lack the map build"; failures=$((failures + 1)); }
+tr -d ' \n' < dsm.json | grep -q '"passes":\["ray-cast"\]' ||
+  { echo "FAILED: a repeated frame ran more than the ray cast"; failures=$((failures + 1)); }
 for t in dsm-color dsm3 cssm cssm-cached; do
   expect 0 "render with $t" -- "$tool" render --scene bucky --scale 0.5 --size 64x64 --frames 1 \
     --technique $t --cssm-offsets 7 --cssm-seed 3 --out $t.png --json $t.json
