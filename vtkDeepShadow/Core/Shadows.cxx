@@ -249,7 +249,9 @@ public:
   glm::dvec3 Visibility(const glm::dvec3& p) const override
   {
     const glm::dvec3 index = glm::dvec3(this->Grid.GetWorldToIndex() * glm::dvec4(p, 1.0));
-    const glm::dvec3 node = glm::clamp(index * glm::dvec3(this->Dims - 1) / glm::dvec3(this->Grid.GetDims() - 1),
+    // A grid one point thick along an axis has no extent there: node 0 (not 0 / 0).
+    const glm::dvec3 extent = glm::max(glm::dvec3(this->Grid.GetDims() - 1), glm::dvec3(1.0));
+    const glm::dvec3 node = glm::clamp(index * glm::dvec3(this->Dims - 1) / extent,
       glm::dvec3(0.0), glm::dvec3(this->Dims - 1));
     const glm::ivec3 n0 = glm::min(glm::ivec3(glm::floor(node)), this->Dims - 2);
     const glm::dvec3 t = node - glm::dvec3(n0);

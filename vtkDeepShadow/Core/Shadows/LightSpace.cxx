@@ -221,6 +221,10 @@ glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
 glm::dvec3 LightSpaceShadow::Bilinear(
   int face, double x, double y, const std::function<glm::dvec3(size_t texel)>& value) const
 {
+  // Texels clamp to the edge, so coordinates beyond [-1, Size] change nothing; clamped, far
+  // (or NaN, from a degenerate face) coordinates cannot overflow the int conversion.
+  x = std::isnan(x) ? 0.0 : std::clamp(x, -1.0, static_cast<double>(this->Size));
+  y = std::isnan(y) ? 0.0 : std::clamp(y, -1.0, static_cast<double>(this->Size));
   const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
   const double fx = x - i, fy = y - j;
   return (1.0 - fx) * (1.0 - fy) * value(this->Texel(face, i, j)) +
