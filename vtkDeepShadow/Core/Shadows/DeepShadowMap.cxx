@@ -75,8 +75,12 @@ void VisibilityCompressor::Add(double depth, const glm::dvec3& value)
 }
 
 void VisibilityCompressor::AddBounded(
-  double depth, const glm::dvec3& low, const glm::dvec3& high, const glm::dvec3& preferred)
+  double depth, const glm::dvec3& lowBound, const glm::dvec3& highBound, const glm::dvec3& preferred)
 {
+  // A visibility lies in [0, 1]: so must every node (a negative one would take light away
+  // from what it shadows). The band always keeps the sample's own value.
+  const glm::dvec3 low = glm::max(lowBound, glm::dvec3(0.0));
+  const glm::dvec3 high = glm::min(highBound, glm::dvec3(1.0));
   // Depths are stored as floats: work with the stored depth, strictly increasing.
   float stored = static_cast<float>(depth);
   if (this->Started && !(static_cast<double>(stored) > this->LastDepth))

@@ -86,6 +86,9 @@ void endSegment()
 
 void addBounded(float depth, Value low, Value high, Value preferred)
 {
+  // Nodes stay in [0, 1], as in deepshadow::VisibilityCompressor::AddBounded.
+  low = max(low, Value(0.0));
+  high = min(high, Value(1.0));
   if (g_nodes == 0)
   {
     startSegment(depth, clamp(preferred, low, high));
