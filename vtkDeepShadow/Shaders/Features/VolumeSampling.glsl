@@ -21,6 +21,13 @@ vec2 boxInterval(vec3 index, vec3 direction)
   vec3 tB = (u_dims - 1.0 - index) * inverseDirection;
   vec3 tLow = min(tA, tB);
   vec3 tHigh = max(tA, tB);
+  // An axis the direction is parallel to (1/0: a point on its face gives 0 * inf = NaN)
+  // constrains nothing inside its slab and empties the interval outside, as
+  // deepshadow::IntersectBox does. mix() with a bvec selects, so no NaN leaks through.
+  bvec3 parallel = equal(direction, vec3(0.0));
+  bvec3 inside = bvec3(vec3(greaterThanEqual(index, vec3(0.0))) * vec3(lessThanEqual(index, u_dims - 1.0)));
+  tLow = mix(tLow, mix(vec3(3.0e38), vec3(-3.0e38), inside), parallel);
+  tHigh = mix(tHigh, mix(vec3(-3.0e38), vec3(3.0e38), inside), parallel);
   return vec2(max(max(tLow.x, tLow.y), tLow.z), min(min(tHigh.x, tHigh.y), tHigh.z));
 }
 
