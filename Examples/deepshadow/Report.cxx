@@ -177,7 +177,7 @@ void ChartScene(const std::string& directory, const std::string& scene, std::vec
 }
 
 // "Which technique for which budget": the Pareto front read from the fastest up.
-void WriteBudgets(std::ostream& md, std::vector<Row*> rows, bool cameraOnly)
+void WriteBudgets(std::ostream& md, std::vector<const Row*> rows, bool cameraOnly)
 {
   std::sort(rows.begin(), rows.end(), [&](const Row* a, const Row* b) {
     return cameraOnly ? a->M.CameraMs < b->M.CameraMs : a->M.LightMs < b->M.LightMs;
@@ -272,12 +272,12 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   md << "Per scene, the whole Pareto front read from the fastest up:\n\n";
   for (const std::string& scene : scenes)
   {
-    std::vector<Row*> sceneRows;
+    std::vector<const Row*> sceneRows;
     for (const Row& r : rows)
     {
       if (r.Scene == scene)
       {
-        sceneRows.push_back(const_cast<Row*>(&r));
+        sceneRows.push_back(&r);
       }
     }
     md << "### " << scene << "\n\nOnly the camera moves:\n\n";
