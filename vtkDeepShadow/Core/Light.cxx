@@ -7,6 +7,11 @@
 namespace deepshadow
 {
 
+double Light::ConeCosine() const
+{
+  return this->ConeAngle < 90.0 ? std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0) : -2.0;
+}
+
 LightSample Light::At(const glm::dvec3& p) const
 {
   LightSample sample;
@@ -23,11 +28,11 @@ LightSample Light::At(const glm::dvec3& p) const
   double attenuation = 1.0 /
     (this->Attenuation.x + this->Attenuation.y * distance +
       this->Attenuation.z * distance * distance);
-  if (this->ConeAngle < 90.0)
+  const double coneCos = this->ConeCosine();
+  if (coneCos >= -1.0)
   {
     const glm::dvec3 axis = glm::normalize(this->FocalPoint - this->Position);
     const double coneDot = glm::dot(-sample.ToLight, axis);
-    const double coneCos = std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0);
     attenuation = coneDot >= coneCos ? attenuation * std::pow(coneDot, this->Exponent) : 0.0;
   }
   sample.Reach = attenuation;

@@ -25,6 +25,9 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
   /** vtkLight::ShadowAttenuation: 0 casts no shadow, 1 full shadows (the default). */
   double ShadowAttenuation = 1.0;
 
+  /** The spot's cone cosine, cos(ConeAngle); -2 (below any cosine) when it is no spot. */
+  double ConeCosine() const;
+
   /** Direction and colour of this light as seen from world point `p`. */
   LightSample At(const glm::dvec3& p) const;
 };

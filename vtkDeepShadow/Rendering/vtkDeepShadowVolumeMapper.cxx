@@ -126,9 +126,7 @@ void SetLightingUniforms(deepshadow::UniformSink& sink, const std::vector<deepsh
     specular.emplace_back(light.Specular);
     attenuation.emplace_back(light.Attenuation);
     positional.push_back(light.Positional ? 1 : 0);
-    coneCos.push_back(light.ConeAngle < 90.0
-        ? static_cast<float>(std::cos(light.ConeAngle * 3.14159265358979323846 / 180.0))
-        : -2.0f);
+    coneCos.push_back(static_cast<float>(light.ConeCosine())); // < -1: no cone
     exponent.push_back(static_cast<float>(light.Exponent));
   }
   sink.Set("u_lightCount", static_cast<int>(lights.size()));
