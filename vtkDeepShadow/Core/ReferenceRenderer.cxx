@@ -157,15 +157,17 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
           const glm::dvec3 visibility = prepared.Shadows[l]->Visibility(position);
           const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
           contribution *= factor;
-          term *= termReached ? factor : glm::dvec3(1.0);
+          if (termReached)
+          {
+            term *= factor;
+          }
         }
         light += contribution;
       }
-      term = glm::clamp(term, 0.0, 1.0);
-      color = termOnly ? term : glm::clamp(light, 0.0, 1.0);
+      color = glm::clamp(termOnly ? term : light, 0.0, 1.0);
       if (shadowTerm)
       {
-        CompositeFrontToBack(termAccumulated, term, alpha);
+        CompositeFrontToBack(termAccumulated, glm::clamp(term, 0.0, 1.0), alpha);
       }
     }
     else if (shadowTerm)
