@@ -70,6 +70,20 @@ inline double CoveredFraction(const Image& image, const glm::dvec3& background)
   return static_cast<double>(covered) / (static_cast<double>(image.Width) * image.Height);
 }
 
+/** Prints one checked statement with ok or FAILED (ctest shows it) and returns `good`. */
+inline bool Check(const std::string& what, bool good)
+{
+  std::printf("%-60s %s\n", what.c_str(), good ? "ok" : "FAILED");
+  return good;
+}
+
+/** Whether the mapper's last composed shader has `feature`. */
+inline bool HasFeature(vtkDeepShadowVolumeMapper* mapper, const std::string& feature)
+{
+  const auto& features = mapper->GetShaderFeatures();
+  return std::find(features.begin(), features.end(), feature) != features.end();
+}
+
 /**
  * Checks a difference against stated bounds and prints it (ctest shows it). Returns true
  * when RMSE <= maxRMSE and at most `maxFraction` of pixels differ by more than `threshold`.

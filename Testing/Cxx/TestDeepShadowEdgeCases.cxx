@@ -17,16 +17,8 @@
 #include <cmath>
 #include <functional>
 
+using deepshadow::testing::Check;
 using deepshadow::testing::MessageCapture;
-
-namespace
-{
-bool Check(const char* what, bool good)
-{
-  std::printf("%-52s %s\n", what, good ? "ok" : "FAILED");
-  return good;
-}
-}
 
 int TestDeepShadowEdgeCases(int, char*[])
 {

@@ -16,7 +16,9 @@
 
 #include <algorithm>
 
+using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
+using deepshadow::testing::HasFeature;
 
 int TestShadowTermOutput(int, char*[])
 {
@@ -27,12 +29,9 @@ int TestShadowTermOutput(int, char*[])
 
   scene.Window->Render();
   const deepshadow::Image coverage = Grab(scene.Window);
-  const auto& features = scene.Mapper->GetShaderFeatures();
-  const bool composed = std::count(features.begin(), features.end(), "ShadowTerm") == 1 &&
-    std::count(features.begin(), features.end(), "Gradient") == 0 &&
-    scene.Mapper->GetFragmentShaderSource().find("lightVisibility") == std::string::npos;
-  std::printf("no technique: ShadowTerm composed, no Gradient, no shadow code: %s\n", composed ? "ok" : "FAILED");
-  ok = composed && ok;
+  ok = Check("no technique: ShadowTerm composed, no Gradient, no shadow code",
+         HasFeature(scene.Mapper, "ShadowTerm") && !HasFeature(scene.Mapper, "Gradient") &&
+           scene.Mapper->GetFragmentShaderSource().find("lightVisibility") == std::string::npos) && ok;
   double grey = 0.0;
   for (int y = 0; y < coverage.Height; ++y)
     for (int x = 0; x < coverage.Width; ++x)
@@ -40,8 +39,8 @@ int TestShadowTermOutput(int, char*[])
       const glm::dvec3 c = coverage.At(x, y);
       grey = std::max({ grey, std::abs(c.x - c.y), std::abs(c.y - c.z) });
     }
-  std::printf("no technique: grey coverage (largest channel spread %.4f): %s\n", grey, grey <= 1.0 / 255.0 ? "ok" : "FAILED");
-  ok = grey <= 1.0 / 255.0 && ok;
+  ok = Check("no technique: grey coverage (largest channel spread " + std::to_string(grey) + ")",
+         grey <= 1.0 / 255.0) && ok;
   ok = deepshadow::testing::WithinTolerance("no technique vs twin", coverage,
          deepshadow::testing::Reference(scene.Renderer, true), 2.0 / 255.0, 12.0 / 255.0, 0.01) && ok;
 
@@ -74,10 +73,9 @@ int TestShadowTermOutput(int, char*[])
       }
     const double shadowed = deepshadow::testing::ShadowScene::FloorUnderBall(term).y;
     const double lit = deepshadow::testing::ShadowScene::FloorUnderBall(coverage).y;
-    const bool darker = brighter <= 1.0 / 255.0 && shadowed < 0.8 * lit;
-    std::printf("%-10s never brighter than the coverage (by %.4f), floor under the ball %.3f of %.3f: %s\n",
-      c.Name, brighter, shadowed, lit, darker ? "ok" : "FAILED");
-    ok = darker && ok;
+    ok = Check(std::string(c.Name) + ": never brighter than the coverage (by " + std::to_string(brighter) +
+           "), floor under the ball " + std::to_string(shadowed) + " of " + std::to_string(lit),
+           brighter <= 1.0 / 255.0 && shadowed < 0.8 * lit) && ok;
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

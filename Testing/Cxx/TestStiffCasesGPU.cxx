@@ -40,17 +40,12 @@
 #include <vector>
 
 using deepshadow::Image;
+using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
 using deepshadow::testing::MessageCapture;
 
 namespace
 {
-bool Check(const std::string& what, bool good)
-{
-  std::printf("%-60s %s\n", what.c_str(), good ? "ok" : "FAILED");
-  return good;
-}
-
 double MaxDifference(const Image& a, const Image& b)
 {
   return deepshadow::Compare(a, b).MaxAbs;
@@ -363,9 +358,8 @@ int TestStiffCasesGPU(int, char*[])
     double middle = 0.0;
     const double below = belowAmbient(coarse, middle);
     // Once 5/255 below: nodes were not kept in [0, 1].
-    const bool aboveAmbient = below <= 1.0 / 255.0;
-    std::printf("dsm, epsilon 0.2: never below ambient only (%.2f/255) %s\n", 255.0 * below, aboveAmbient ? "ok" : "FAILED");
-    ok = aboveAmbient && ok;
+    ok = Check("dsm, epsilon 0.2: never below ambient only (" + std::to_string(255.0 * below) + "/255)",
+           below <= 1.0 / 255.0) && ok;
     stage.Uniform(0.0);
     stage.Directional(0.3, 0.2, 1.0);
     for (const Technique& t : EveryTechnique())

@@ -19,7 +19,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
-#include <algorithm>
+using deepshadow::testing::HasFeature;
 
 namespace
 {
@@ -42,12 +42,6 @@ bool Check(const char* step, vtkDeepShadowVolumeMapper* m, const Counters& expec
   std::printf("%-40s uploads %d tables %d blocks %d shaders %d %s\n", step, c.Uploads, c.Tables,
     c.Blocks, c.Shaders, ok ? "ok" : "FAILED");
   return ok;
-}
-
-bool HasFeature(vtkDeepShadowVolumeMapper* m, const std::string& feature)
-{
-  const auto& f = m->GetShaderFeatures();
-  return std::find(f.begin(), f.end(), feature) != f.end();
 }
 }
 
