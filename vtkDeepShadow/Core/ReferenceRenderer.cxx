@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <limits>
 
 namespace deepshadow
@@ -50,6 +51,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Transfer = &casting;
   caster.Sampling = volume.Sampling;
   caster.Empty = prepared.Empty.get();
+  caster.Bound = volume.Bound.get();
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
@@ -95,6 +97,12 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   const glm::dvec3 indexDirection =
     glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(ray.Direction, 0.0));
 
+  std::optional<BoundRegion::Walker> bound;
+  if (volume.Bound)
+  {
+    bound.emplace(*volume.Bound, indexOrigin, indexDirection);
+  }
+
   glm::dvec4 accumulated(0.0);
   glm::dvec4 termAccumulated(0.0);
   for (long k = 0;; ++k)
@@ -103,6 +111,14 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (!(t < t1) || accumulated.a > settings.TerminationOpacity)
     {
       break;
+    }
+    if (bound)
+    {
+      if (const long skip = bound->SkipSteps(t, dt))
+      {
+        k += skip - 1;
+        continue;
+      }
     }
     const glm::dvec3 index = indexOrigin + t * indexDirection;
     if (prepared.Empty)

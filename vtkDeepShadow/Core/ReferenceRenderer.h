@@ -19,6 +19,7 @@
 #ifndef deepshadow_ReferenceRenderer_h
 #define deepshadow_ReferenceRenderer_h
 
+#include "BoundRegion.h"
 #include "Camera.h"
 #include "Image.h"
 #include "Light.h"
@@ -50,6 +51,11 @@ struct VolumeInstance
   ShadowParameters Shadows;
   /** The transfer function that casts shadows, if not the one that is drawn. */
   std::optional<TransferFunction> ShadowTransfer;
+  /**
+   * Where the volume exists, in voxel-index space (null: its whole box). Outside it the
+   * volume is empty: it neither shows nor casts shadows.
+   */
+  std::shared_ptr<const BoundRegion> Bound;
 };
 
 struct Scene

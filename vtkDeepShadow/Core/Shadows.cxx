@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -144,6 +145,11 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   const EmptySpaceMap* empty =
     parameters.Opaque && parameters.Mode == ThresholdMode::Scalar ? nullptr : caster.Empty;
   const glm::dvec3 indexStep = indexDirection * step;
+  std::optional<BoundRegion::Walker> bound;
+  if (caster.Bound)
+  {
+    bound.emplace(*caster.Bound, indexOrigin, indexDirection);
+  }
   glm::dvec3 transmittance(1.0);
   for (long j = 0;; ++j)
   {
@@ -151,6 +157,14 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
     if (!(t < tEnd))
     {
       break;
+    }
+    if (bound)
+    {
+      if (const long skip = bound->SkipSteps(t, step))
+      {
+        j += skip - 1;
+        continue;
+      }
     }
     const glm::dvec3 index = indexOrigin + t * indexDirection;
     if (empty)

@@ -17,6 +17,7 @@
 #ifndef deepshadow_Shadows_h
 #define deepshadow_Shadows_h
 
+#include "BoundRegion.h"
 #include "EmptySpace.h"
 #include "Light.h"
 #include "TransferFunction.h"
@@ -128,6 +129,8 @@ struct ShadowCaster
   const TransferTable* FeelerTable = nullptr;
   /** Optional: blocks of zero opacity that feelers may skip (exactly; see EmptySpace.h). */
   const EmptySpaceMap* Empty = nullptr;
+  /** Optional: where the volume exists (BoundRegion.h); outside, it casts nothing. */
+  const BoundRegion* Bound = nullptr;
 
   /** Colour (transmission) and opacity corrected for `step` at `scalar`. */
   glm::dvec4 Sample(double scalar, double step) const;

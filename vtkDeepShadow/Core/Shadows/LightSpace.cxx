@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace deepshadow
 {
@@ -146,25 +147,39 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
   const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(origin, 1.0));
   const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(direction, 0.0));
   const glm::dvec3 indexStep = indexDirection * step;
-  for (long j = 0; depthOf(j) < tExit; ++j)
+  std::optional<BoundRegion::Walker> bound;
+  if (caster.Bound)
+  {
+    bound.emplace(*caster.Bound, indexOrigin, indexDirection);
+  }
+  // The last sample inside the box (a skipped run is visited there at the latest).
+  long lastInBox = static_cast<long>(std::floor((tExit - t0) / step - 0.5));
+  while (lastInBox >= 0 && !(depthOf(lastInBox) < tExit))
+  {
+    --lastInBox;
+  }
+  while (depthOf(lastInBox + 1) < tExit)
+  {
+    ++lastInBox;
+  }
+  for (long j = 0; j <= lastInBox; ++j)
   {
     const glm::dvec3 index = indexOrigin + depthOf(j) * indexDirection;
-    if (empty)
+    // Samples outside the bound, or in empty blocks, are one skipped run, visited at its end.
+    long skip = bound ? bound->SkipSteps(depthOf(j), step) : 0;
+    if (!skip && empty)
     {
-      if (const int skip = empty->SkipSteps(index, indexStep))
+      skip = empty->SkipSteps(index, indexStep);
+    }
+    if (skip)
+    {
+      const long last = std::min(j + skip - 1, lastInBox);
+      if (!visit(last, depthOf(last), 0.0, true))
       {
-        long last = j + skip - 1;
-        while (last > j && !(depthOf(last) < tExit))
-        {
-          --last;
-        }
-        if (!visit(last, depthOf(last), 0.0, true))
-        {
-          return;
-        }
-        j = last;
-        continue;
+        return;
       }
+      j = last;
+      continue;
     }
     if (!visit(j, depthOf(j), grid.Sample(index, caster.Sampling), false))
     {
