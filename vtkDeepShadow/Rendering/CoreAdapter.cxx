@@ -1,6 +1,7 @@
 #include "CoreAdapter.h"
 
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -10,6 +11,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkCellData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -221,6 +223,73 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
   image->GetDimensions(dims);
   return std::make_shared<VolumeGrid>(
     glm::ivec3(dims[0], dims[1], dims[2]), std::move(values), IndexToWorld(image, propMatrix));
+}
+
+std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
+  const std::string& expression, const glm::dmat4& dataToIndex, std::string& error)
+{
+  const int count = static_cast<int>(bounds.size());
+  if (count > CSGExpression::MaxLeaves)
+  {
+    error = std::to_string(count) + " bounds given; a volume takes at most " +
+      std::to_string(CSGExpression::MaxLeaves) + " (combine more with vtkDeepShadowCSGFilter)";
+    return nullptr;
+  }
+  CSGExpression parsed;
+  if (!CSGExpression::Parse(expression, count, parsed, error))
+  {
+    return nullptr;
+  }
+  std::vector<std::vector<Triangle>> leaves;
+  for (int b = 0; b < count; ++b)
+  {
+    const std::string name = "bound " + CSGExpression::LeafName(b);
+    vtkPolyData* mesh = bounds[static_cast<size_t>(b)];
+    if (!mesh)
+    {
+      error = name + " is null";
+      return nullptr;
+    }
+    std::vector<Triangle> triangles;
+    auto point = [&](vtkIdType id) {
+      double p[3];
+      mesh->GetPoint(id, p);
+      return glm::dvec3(dataToIndex * glm::dvec4(p[0], p[1], p[2], 1.0));
+    };
+    // Polygons as fans, strips as alternating triangles; vertices and lines bound nothing.
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    vtkCellArray* polys = mesh->GetPolys();
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    {
+      for (vtkIdType i = 1; i + 1 < n; ++i)
+      {
+        triangles.push_back({ point(ids[0]), point(ids[i]), point(ids[i + 1]) });
+      }
+    }
+    vtkCellArray* strips = mesh->GetStrips();
+    for (strips->InitTraversal(); strips->GetNextCell(n, ids);)
+    {
+      for (vtkIdType i = 0; i + 2 < n; ++i)
+      {
+        triangles.push_back(i % 2 == 0 ? Triangle{ point(ids[i]), point(ids[i + 1]), point(ids[i + 2]) }
+                                       : Triangle{ point(ids[i + 1]), point(ids[i]), point(ids[i + 2]) });
+      }
+    }
+    if (!triangles.empty())
+    {
+      const std::string problem = CheckClosedMesh(triangles);
+      if (!problem.empty())
+      {
+        error = name + " " + problem;
+        return nullptr;
+      }
+      OrientOutward(triangles);
+    }
+    leaves.push_back(std::move(triangles));
+  }
+  error.clear();
+  return std::make_shared<const BoundRegion>(std::move(leaves), parsed);
 }
 
 TransferFunction MakeTransferFunction(vtkVolumeProperty* property)

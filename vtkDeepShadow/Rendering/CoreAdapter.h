@@ -3,6 +3,7 @@
 #ifndef vtkDeepShadowCoreAdapter_h
 #define vtkDeepShadowCoreAdapter_h
 
+#include "BoundRegion.h"
 #include "Camera.h"
 #include "Light.h"
 #include "OpticalModel.h"
@@ -18,6 +19,7 @@
 class vtkDataArray;
 class vtkImageData;
 class vtkMatrix4x4;
+class vtkPolyData;
 class vtkRenderer;
 class vtkVolumeProperty;
 
@@ -55,6 +57,16 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
  */
 TransferFunction MakeTransferFunction(vtkVolumeProperty* property);
 Material MakeMaterial(vtkVolumeProperty* property);
+
+/**
+ * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and
+ * strips as triangles (points moved by `dataToIndex`), checked (CheckClosedMesh), oriented
+ * outward, combined by `expression` (CSGExpression; "" is the union). An empty bound is an
+ * empty solid, not an error. Returns null with `error` naming the bound ("bound B ...") on
+ * bad input.
+ */
+std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
+  const std::string& expression, const glm::dmat4& dataToIndex, std::string& error);
 
 /** Switched-on lights of the renderer in world space (at most MaxLights). */
 std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated = nullptr);

@@ -1,5 +1,6 @@
 #include "ShaderComposer.h"
 
+#include "vtkDeepShadowFeatureBound.h"
 #include "vtkDeepShadowFeatureEmptySpace.h"
 #include "vtkDeepShadowFeatureFeeler.h"
 #include "vtkDeepShadowFeatureFeelerColored.h"
@@ -49,6 +50,7 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
   static const std::map<std::string, ShaderFeature> features = [] {
     std::map<std::string, ShaderFeature> all;
     auto add = [&all](const char* name, const char* source) { all[name] = ShaderFeature(name, source); };
+    add("Bound", vtkDeepShadowFeatureBound);
     add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
     add("Feeler", vtkDeepShadowFeatureFeeler);
     add("FeelerColored", vtkDeepShadowFeatureFeelerColored);

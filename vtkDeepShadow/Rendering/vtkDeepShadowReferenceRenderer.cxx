@@ -17,6 +17,8 @@
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 #include <cstring>
 
@@ -90,6 +92,24 @@ bool vtkDeepShadowReferenceRenderer::Render(
       if (technique->GetShadowProperty())
       {
         instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
+      }
+    }
+    if (ours && ours->GetNumberOfBounds() > 0)
+    {
+      // The mapper's bound, built the same way (in the data's coordinates).
+      std::vector<vtkPolyData*> bounds;
+      for (int b = 0; b < ours->GetNumberOfBounds(); ++b)
+      {
+        bounds.push_back(ours->GetBound(b));
+      }
+      auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
+      instance.Bound = adapter::MakeBoundRegion(bounds, ours->GetBoundExpression(),
+        glm::inverse(adapter::IndexToWorld(image, nullptr)), error);
+      if (!instance.Bound)
+      {
+        this->LastError = error;
+        vtkErrorMacro(<< error);
+        return false;
       }
     }
     if (this->Shadows == GroundTruthShadows)

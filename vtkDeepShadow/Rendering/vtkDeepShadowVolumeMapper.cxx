@@ -24,6 +24,7 @@
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -199,7 +200,20 @@ public:
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
   vtkSmartPointer<vtkOpenGLBufferObject> Corners;
   vtkSmartPointer<vtkOpenGLBufferObject> Triangles;
-  vtkShaderProgram* BoundProgram = nullptr;
+  vtkShaderProgram* VertexArrayProgram = nullptr;
+
+  // The polyhedral bound (feature Bound) and what it was built from.
+  std::vector<vtkSmartPointer<vtkPolyData>> Bounds;
+  std::shared_ptr<const deepshadow::BoundRegion> Region;
+  deepshadow::BoundTextures BoundGPU;
+  vtkSmartPointer<vtkTextureObject> BoundNodes;
+  vtkSmartPointer<vtkTextureObject> BoundTriangles;
+  std::vector<vtkMTimeType> BoundTimes; // each bound's MTime when built
+  std::string BoundBuiltExpression;
+  glm::dmat4 BoundDataToIndex{ 0.0 };
+  bool BoundEnclosesNothing = false;
+  std::string BoundError;
+  long long BoundBytes = 0;
 
   std::string LastSource;
 
@@ -274,9 +288,19 @@ public:
     {
       this->Triangles->ReleaseGraphicsResources();
     }
+    for (vtkTextureObject* texture : { this->BoundNodes.Get(), this->BoundTriangles.Get() })
+    {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
+    }
+    // What was composed, and the bounds the user set, are independent of GL resources.
     const std::string lastSource = this->LastSource;
+    auto bounds = std::move(this->Bounds);
     *this = Internals();
-    this->LastSource = lastSource; // what was composed is independent of GL resources
+    this->LastSource = lastSource;
+    this->Bounds = std::move(bounds);
   }
 };
 
@@ -307,6 +331,142 @@ void vtkDeepShadowVolumeMapper::SetShadowTechnique(vtkDeepShadowTechnique* techn
     technique->Register(this);
   }
   this->Modified();
+}
+
+void vtkDeepShadowVolumeMapper::AddBound(vtkPolyData* bound)
+{
+  this->Impl->Bounds.emplace_back(bound);
+  this->Modified();
+}
+
+void vtkDeepShadowVolumeMapper::RemoveAllBounds()
+{
+  if (!this->Impl->Bounds.empty())
+  {
+    this->Impl->Bounds.clear();
+    this->Modified();
+  }
+}
+
+int vtkDeepShadowVolumeMapper::GetNumberOfBounds() const
+{
+  return static_cast<int>(this->Impl->Bounds.size());
+}
+
+vtkPolyData* vtkDeepShadowVolumeMapper::GetBound(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfBounds() ? this->Impl->Bounds[static_cast<size_t>(index)].Get()
+                                                          : nullptr;
+}
+
+void vtkDeepShadowVolumeMapper::SetBoundExpression(const std::string& expression)
+{
+  if (expression != this->BoundExpression)
+  {
+    this->BoundExpression = expression;
+    this->Modified();
+  }
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input)
+{
+  Internals& impl = *this->Impl;
+  if (impl.Bounds.empty())
+  {
+    impl.Region.reset();
+    impl.BoundTimes.clear();
+    impl.BoundBytes = 0;
+    return true;
+  }
+  // The bound lives in the data's coordinates: it follows the image's placement, not the prop's.
+  const glm::dmat4 dataToIndex = glm::inverse(adapter::IndexToWorld(input, nullptr));
+  std::vector<vtkMTimeType> times;
+  std::vector<vtkPolyData*> meshes;
+  for (const auto& bound : impl.Bounds)
+  {
+    times.push_back(bound ? bound->GetMTime() : 0);
+    meshes.push_back(bound);
+  }
+  const bool changed = times != impl.BoundTimes || this->BoundExpression != impl.BoundBuiltExpression ||
+    dataToIndex != impl.BoundDataToIndex || (!impl.Region && impl.BoundError.empty());
+  if (changed)
+  {
+    impl.BoundTimes = times;
+    impl.BoundBuiltExpression = this->BoundExpression;
+    impl.BoundDataToIndex = dataToIndex;
+    impl.Region = adapter::MakeBoundRegion(meshes, this->BoundExpression, dataToIndex, impl.BoundError);
+    if (impl.Region)
+    {
+      const deepshadow::BoundRegion::GPUData data = impl.Region->PackForGPU();
+      GLint maxSize = 0;
+      glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+      constexpr int width = 4096; // BoundTextureWidth in Features/Bound.glsl
+      const size_t rowsNeeded = (std::max(data.Triangles.size(), data.Nodes.size()) + width - 1) / width;
+      if (data.MaxDepth >= 32)
+      {
+        impl.BoundError = "the bound's hierarchy is deeper than the GPU's walk allows (32)";
+      }
+      else if (rowsNeeded > static_cast<size_t>(maxSize) || data.Triangles.size() / 3 >= (1u << 24))
+      {
+        impl.BoundError = "the bound has too many triangles for this GL (" +
+          std::to_string(data.Triangles.size() / 3) + ")";
+      }
+      if (!impl.BoundError.empty())
+      {
+        impl.Region.reset();
+      }
+      else
+      {
+        auto upload = [&](vtkSmartPointer<vtkTextureObject>& texture, std::vector<glm::vec4> texels) {
+          const int columns = static_cast<int>(std::min<size_t>(width, std::max<size_t>(texels.size(), 1)));
+          const int rows = static_cast<int>((std::max<size_t>(texels.size(), 1) + columns - 1) / columns);
+          texels.resize(static_cast<size_t>(columns) * rows, glm::vec4(0.0f));
+          if (texture)
+          {
+            texture->ReleaseGraphicsResources(window);
+          }
+          texture = NewTexture(window);
+          texture->SetMinificationFilter(vtkTextureObject::Nearest);
+          texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+          texture->Create2DFromRaw(static_cast<unsigned int>(columns), static_cast<unsigned int>(rows), 4,
+            VTK_FLOAT, glm::value_ptr(texels.front()));
+          return static_cast<long long>(texels.size()) * 16;
+        };
+        impl.BoundBytes = upload(impl.BoundNodes, data.Nodes) + upload(impl.BoundTriangles, data.Triangles);
+        impl.BoundGPU.Nodes = impl.BoundNodes;
+        impl.BoundGPU.Triangles = impl.BoundTriangles;
+        impl.BoundGPU.LeafRoots = data.LeafRoots;
+        impl.BoundGPU.TruthTable = data.TruthTable;
+        // Nothing can be inside when the states the empty bounds allow all evaluate false.
+        uint32_t emptyLeaves = 0;
+        for (int i = 0; i < impl.Region->GetLeafCount(); ++i)
+        {
+          emptyLeaves |= impl.Region->GetLeaf(i).Empty() ? (1u << i) : 0u;
+        }
+        impl.BoundEnclosesNothing = true;
+        for (uint32_t state = 0; state < (1u << impl.Region->GetLeafCount()); ++state)
+        {
+          if (!(state & emptyLeaves) && impl.Region->GetExpression().Evaluate(state))
+          {
+            impl.BoundEnclosesNothing = false;
+            break;
+          }
+        }
+        if (impl.BoundEnclosesNothing)
+        {
+          vtkWarningMacro("the volume's bound encloses nothing (its meshes are empty): nothing is drawn");
+        }
+        ++this->BoundBuilds;
+        this->LastPasses.emplace_back("bound-upload");
+      }
+    }
+  }
+  if (!impl.BoundError.empty())
+  {
+    this->ReportError(impl.BoundError);
+    return false;
+  }
+  return true;
 }
 
 int vtkDeepShadowVolumeMapper::GetShadowBuilds()
@@ -544,6 +704,19 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const bool skipEmpty = this->EmptySpaceSkipping && impl.AnyEmptyBlock;
   this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.EmptyBlockFraction : 0.0;
 
+  // 3b. The polyhedral bound: rebuilt when a bound, the expression or the data's placement changed.
+  if (!this->UpdateBound(window, input))
+  {
+    return;
+  }
+  const bool bounded = impl.Region != nullptr;
+  if (bounded && impl.BoundEnclosesNothing)
+  {
+    this->LastError.clear();
+    ++this->RenderCount;
+    return; // said when the bound was built
+  }
+
   // 4. Viewport, matrices, lights, and the shadow technique's structures.
   int width = 0, height = 0, x0 = 0, y0 = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
@@ -568,6 +741,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   context.WorldToIndex = worldToIndex;
   context.ViewStep = step;
   context.DataVersion = this->VolumeUploads;
+  context.Bound = bounded ? &impl.BoundGPU : nullptr;
+  context.BoundVersion = this->BoundBuilds;
   context.Lights = lit ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
   if (truncated)
   {
@@ -622,6 +797,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("EmptySpace");
   }
+  if (bounded)
+  {
+    features.insert("Bound");
+  }
   if (needDepth)
   {
     features.insert("OpaqueDepth");
@@ -654,12 +833,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 
   // 6. Uniforms.
   deepshadow::UniformSink sink(program);
-  impl.Volume->Activate();
+  context.ActivateVolumeTextures();
   impl.Transfer->Activate();
-  if (skipEmpty)
-  {
-    impl.Occupancy->Activate();
-  }
   context.SetVolumeUniforms(sink);
   sink.Set("u_transfer", impl.Transfer->GetTextureUnit());
   sink.Set("u_boxMax", glm::vec3(impl.Dims - 1));
@@ -706,7 +881,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.Corners->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
     impl.Triangles->Upload(triangles, vtkOpenGLBufferObject::ElementArrayBuffer);
   }
-  const bool programChanged = impl.BoundProgram != program;
+  const bool programChanged = impl.VertexArrayProgram != program;
   if (programChanged)
   {
     impl.VertexArray->ShaderProgramChanged(); // drops the VAO: rebind before adding arrays
@@ -716,7 +891,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     impl.VertexArray->AddAttributeArray(
       program, impl.Corners, "a_corner", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    impl.BoundProgram = program;
+    impl.VertexArrayProgram = program;
   }
   impl.Triangles->Bind();
 
@@ -749,12 +924,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     technique->Unbind();
   }
-  impl.Volume->Deactivate();
+  context.DeactivateVolumeTextures();
   impl.Transfer->Deactivate();
-  if (skipEmpty)
-  {
-    impl.Occupancy->Deactivate();
-  }
   if (needDepth)
   {
     impl.Depth->Deactivate();
@@ -762,7 +933,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   this->GPUMemoryBytes = static_cast<long long>(impl.Dims.x) * impl.Dims.y * impl.Dims.z *
       (impl.ScalarMap.x == 255.0 ? 1 : impl.ScalarMap.x == 1.0 ? 4 : 2) +
     static_cast<long long>(impl.Table.Size) * 16 +
-    (this->EmptySpaceSkipping ? static_cast<long long>(impl.Blocks.Min.size()) : 0);
+    (this->EmptySpaceSkipping ? static_cast<long long>(impl.Blocks.Min.size()) : 0) +
+    (bounded ? impl.BoundBytes : 0);
   if (!this->ErrorThisFrame)
   {
     this->LastError.clear();
@@ -779,10 +951,13 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";
   os << indent << "ReplaceNonFiniteScalars: " << this->ReplaceNonFiniteScalars << "\n";
+  os << indent << "Bounds: " << this->Impl->Bounds.size() << " (expression \"" << this->BoundExpression
+     << "\")\n";
   os << indent << "OutputMode: " << (this->OutputMode == OutputShadowTerm ? "ShadowTerm" : "Color") << "\n";
   os << indent << "RenderCount: " << this->RenderCount << "\n";
   os << indent << "VolumeUploads: " << this->VolumeUploads << "\n";
   os << indent << "TransferTableBuilds: " << this->TransferTableBuilds << "\n";
   os << indent << "OccupancyBuilds: " << this->OccupancyBuilds << "\n";
   os << indent << "ShaderCompositions: " << this->ShaderCompositions << "\n";
+  os << indent << "BoundBuilds: " << this->BoundBuilds << "\n";
 }

@@ -18,6 +18,10 @@
  * OpaqueDepth): see GetShaderFeatures() and GetFragmentShaderSource(). Work is redone only
  * when what it depends on changed; the counters below make that observable.
  *
+ * Polyhedral bounds (AddBound, SetBoundExpression) restrict the volume to the inside of
+ * closed meshes combined by Boolean operations: it is drawn, and casts and receives shadows,
+ * only there (feature Bound; the CPU twin is deepshadow::BoundRegion).
+ *
  * Bad input (no input, empty or flat volume, unsupported type or component count,
  * non-finite samples, a volume larger than the GL's 3D texture limit) is reported once per
  * change with vtkErrorMacro (also in GetLastError()) and the volume is not drawn.
@@ -35,6 +39,7 @@
 
 class vtkDeepShadowTechnique;
 class vtkOpenGLRenderWindow;
+class vtkPolyData;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkVolumeMapper
 {
@@ -125,6 +130,30 @@ public:
   void SetOutputModeToShadowTerm() { this->SetOutputMode(OutputShadowTerm); }
   ///@}
 
+  ///@{
+  /**
+   * Polyhedral bounds: the volume exists only inside the region they enclose. It is drawn
+   * there only, and casts and receives shadows there only, with every technique. Each bound
+   * is a closed triangle mesh (polygons and strips are triangulated; points shared or merely
+   * coincident, as in STL) in the coordinates of the image data's points, so it moves with the
+   * vtkVolume; any shape: non-convex, with holes, several components. Bounds are named A, B,
+   * C... in the order added; SetBoundExpression combines them, e.g. "union(A,diff(B,C))"
+   * (union, intersection/inter, difference/diff; see deepshadow::CSGExpression); "" (the
+   * default) is their union. At most 8 bounds: combine more, or use the mesh of
+   * vtkDeepShadowCSGFilter as one bound. Along each ray the region is evaluated exactly from
+   * every bound's crossings (every entry and exit, not only the first and last); samples
+   * outside are skipped, which also saves time. A bound that is open or not consistently
+   * oriented is an error naming it; an empty bound (e.g. an empty CSG result) encloses
+   * nothing, and a volume bounded by nothing is not drawn (with a warning).
+   */
+  void AddBound(vtkPolyData* bound);
+  void RemoveAllBounds();
+  int GetNumberOfBounds() const;
+  vtkPolyData* GetBound(int index) const;
+  void SetBoundExpression(const std::string& expression);
+  const std::string& GetBoundExpression() const { return this->BoundExpression; }
+  ///@}
+
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
 
@@ -142,18 +171,19 @@ public:
   vtkGetMacro(TransferTableBuilds, int);  // TF table rebuilds: TF, range or step changed
   vtkGetMacro(OccupancyBuilds, int);      // empty-space block maps: data or opacity changed
   vtkGetMacro(ShaderCompositions, int);   // times the composed shader source changed
+  vtkGetMacro(BoundBuilds, int);          // bound hierarchies built: a bound or placement changed
   /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
   const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
   const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }
   /**
    * The GPU passes the last frame ran, in order: "volume-upload", "transfer-table",
-   * "occupancy" (each only when what it depends on changed), the technique's passes
+   * "occupancy", "bound-upload" (each only when what it depends on changed), the technique's passes
    * (vtkDeepShadowTechnique::GetLastPasses()) and "ray-cast".
    */
   const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
   /** Fraction of empty-space blocks that are skipped (0 when skipping is off). */
   vtkGetMacro(EmptyBlockFraction, double);
-  /** GPU memory of the volume, table and block map, in bytes. */
+  /** GPU memory of the volume, table, block map and bound, in bytes. */
   vtkGetMacro(GPUMemoryBytes, long long);
   ///@}
 
@@ -178,12 +208,14 @@ protected:
   bool ReplaceNonFiniteScalars = false;
   int OutputMode = OutputColor;
   vtkDeepShadowTechnique* ShadowTechnique = nullptr;
+  std::string BoundExpression;
 
   int RenderCount = 0;
   int VolumeUploads = 0;
   int TransferTableBuilds = 0;
   int OccupancyBuilds = 0;
   int ShaderCompositions = 0;
+  int BoundBuilds = 0;
   std::vector<std::string> ShaderFeatures;
   std::vector<std::string> LastPasses;
   std::string FragmentShaderSource;
@@ -197,6 +229,8 @@ private:
   void operator=(const vtkDeepShadowVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
+  bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

@@ -10,6 +10,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::EmptySpace::Dec
+//DeepShadow::Bound::Dec
 //DeepShadow::Feeler::Dec
 //DeepShadow::Hash::Dec
 uniform int u_size;
@@ -42,16 +43,40 @@ void deferTexel()
 
 void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
+  if (!(tEnter < tExit))
+  {
+    return;
+  }
   vec3 indexStep = indexDirection * u_feelerStep;
-  for (int j = 0;; ++j)
+  // The last sample inside the box: a skipped run is visited there at the latest.
+  int lastInBox = int(floor((tExit - tEnter) / u_feelerStep - 0.5));
+  while (lastInBox >= 0 && !(tEnter + (float(lastInBox) + 0.5) * u_feelerStep < tExit))
+  {
+    --lastInBox;
+  }
+  while (tEnter + (float(lastInBox + 1) + 0.5) * u_feelerStep < tExit)
+  {
+    ++lastInBox;
+  }
+  //DeepShadow::Bound::TexelInit
+  for (int j = 0; j <= lastInBox; ++j)
   {
     float t = tEnter + (float(j) + 0.5) * u_feelerStep;
-    if (!(t < tExit))
-    {
-      break;
-    }
     vec3 sampleIndex = indexOrigin + t * indexDirection;
+    // Samples outside the bound, or in empty blocks, are one skipped run, visited at its end.
+    int skip = 0;
+    //DeepShadow::Bound::TexelSkip
     //DeepShadow::EmptySpace::TexelSkip
+    if (skip > 0)
+    {
+      int last = min(j + skip - 1, lastInBox);
+      if (!visitSkipped(last, tEnter + (float(last) + 0.5) * u_feelerStep))
+      {
+        break;
+      }
+      j = last;
+      continue;
+    }
     if (!visitSample(j, t, sampleScalar(sampleIndex)))
     {
       break;

@@ -34,6 +34,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Jitter::Dec
 //DeepShadow::OpaqueDepth::Dec
 //DeepShadow::EmptySpace::Dec
+//DeepShadow::Bound::Dec
 //DeepShadow::Feeler::Dec
 //DeepShadow::Lighting::Dec
 
@@ -63,6 +64,7 @@ void main()
 
   vec4 accumulated = vec4(0.0);
   //DeepShadow::EmptySpace::Init
+  //DeepShadow::Bound::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -70,6 +72,7 @@ void main()
     {
       break;
     }
+    //DeepShadow::Bound::Impl
     vec3 index = indexOrigin + t * indexDirection;
     //DeepShadow::EmptySpace::Impl
 

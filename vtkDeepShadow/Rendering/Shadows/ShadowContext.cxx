@@ -117,6 +117,42 @@ void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
     sink.Set("u_occupancy", this->Occupancy->GetTextureUnit());
     sink.Set("u_blockSize", this->BlockSize);
   }
+  if (this->Bound)
+  {
+    sink.Set("u_boundNodes", this->Bound->Nodes->GetTextureUnit());
+    sink.Set("u_boundTriangles", this->Bound->Triangles->GetTextureUnit());
+    sink.Set("u_boundLeafCount", static_cast<int>(this->Bound->LeafRoots.size()));
+    sink.Set("u_boundLeafRoot", this->Bound->LeafRoots);
+    sink.Set("u_boundTruth", this->Bound->TruthTable);
+  }
+}
+
+void ShadowContext::ActivateVolumeTextures() const
+{
+  this->Volume->Activate();
+  if (this->Occupancy)
+  {
+    this->Occupancy->Activate();
+  }
+  if (this->Bound)
+  {
+    this->Bound->Nodes->Activate();
+    this->Bound->Triangles->Activate();
+  }
+}
+
+void ShadowContext::DeactivateVolumeTextures() const
+{
+  this->Volume->Deactivate();
+  if (this->Occupancy)
+  {
+    this->Occupancy->Deactivate();
+  }
+  if (this->Bound)
+  {
+    this->Bound->Nodes->Deactivate();
+    this->Bound->Triangles->Deactivate();
+  }
 }
 
 }

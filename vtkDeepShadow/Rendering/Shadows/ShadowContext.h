@@ -52,6 +52,15 @@ private:
   ComputeProgram* Compute = nullptr;
 };
 
+/** A volume's polyhedral bound as the GPU walks it (Features/Bound.glsl). */
+struct BoundTextures
+{
+  vtkTextureObject* Nodes = nullptr;
+  vtkTextureObject* Triangles = nullptr;
+  std::vector<int> LeafRoots;
+  std::vector<int> TruthTable;
+};
+
 struct ShadowContext
 {
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -69,9 +78,11 @@ struct ShadowContext
   glm::dmat4 IndexToWorld{ 1.0 };
   glm::dmat4 WorldToIndex{ 1.0 };
   double ViewStep = 1.0;
+  const BoundTextures* Bound = nullptr; // null: the volume fills its box
 
   // What shadow structures depend on, besides lights and technique parameters.
   int DataVersion = 0;            // increments with every volume upload
+  int BoundVersion = 0;           // increments with every change of the bound
   TransferFunction Transfer;      // the volume's; a technique may cast with its own
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
@@ -79,8 +90,11 @@ struct ShadowContext
   /** The content of Transfer (opacity, and colours if asked), to compare builds by. */
   std::vector<double> TransferKey(bool colors) const;
 
-  /** Uniforms of the VolumeSampling and EmptySpace features. */
+  /** Uniforms of the VolumeSampling, EmptySpace and Bound features. */
   void SetVolumeUniforms(UniformSink& sink) const;
+  /** Binds (releases) the textures those features read. */
+  void ActivateVolumeTextures() const;
+  void DeactivateVolumeTextures() const;
 };
 
 }

@@ -406,6 +406,10 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
   {
     features.insert("EmptySpace");
   }
+  if (context.Bound)
+  {
+    features.insert("Bound");
+  }
   for (const std::string& feature : this->GetBuildFeatures())
   {
     features.insert(feature);
@@ -421,11 +425,7 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
     return false;
   }
   this->Impl->PassStart = NowMilliseconds();
-  context.Volume->Activate();
-  if (context.Occupancy)
-  {
-    context.Occupancy->Activate();
-  }
+  context.ActivateVolumeTextures();
   this->ActivateFeelerTable();
   program.Use();
   deepshadow::UniformSink sink(&program);
@@ -438,11 +438,7 @@ void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& conte
 {
   glFinish(); // the build time includes the GPU's work
   this->DeactivateFeelerTable();
-  context.Volume->Deactivate();
-  if (context.Occupancy)
-  {
-    context.Occupancy->Deactivate();
-  }
+  context.DeactivateVolumeTextures();
   // VTK tracks the bound program; ours replaced it.
   context.Window->GetShaderCache()->ReleaseCurrentShader();
   this->Impl->PassMilliseconds += NowMilliseconds() - this->Impl->PassStart;

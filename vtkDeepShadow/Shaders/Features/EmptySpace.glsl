@@ -52,25 +52,14 @@ bool emptyAround(vec3 index, vec3 reach)
         }
       }
 //@TexelSkip
-      if (u_feelerSkipEmpty != 0)
+    if (skip == 0 && u_feelerSkipEmpty != 0)
+    {
+      vec3 block = floor(sampleIndex / u_blockSize);
+      if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
       {
-        vec3 block = floor(sampleIndex / u_blockSize);
-        if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
-        {
-          // One visit for the run, at its last sample inside the box.
-          int last = j + stepsToLeaveBlock(sampleIndex, indexStep, block) - 1;
-          while (last > j && !(tEnter + (float(last) + 0.5) * u_feelerStep < tExit))
-          {
-            --last;
-          }
-          if (!visitSkipped(last, tEnter + (float(last) + 0.5) * u_feelerStep))
-          {
-            break;
-          }
-          j = last;
-          continue;
-        }
+        skip = stepsToLeaveBlock(sampleIndex, indexStep, block);
       }
+    }
 //@CacheSkip
   // Nodes no view sample interpolates from need no answer (they hold "lit").
   if (u_cacheSkipEmpty != 0 && emptyAround(index, u_cacheReach))

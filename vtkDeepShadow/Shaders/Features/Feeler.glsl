@@ -64,6 +64,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
 {
   FeelerTransmittance transmittance = FeelerTransmittance(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
+  //DeepShadow::Bound::FeelerInit
   for (int j = 0;; ++j)
   {
     float t = (float(j) + 0.5) * u_feelerStep;
@@ -71,6 +72,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
     {
       break;
     }
+    //DeepShadow::Bound::FeelerSkip
     vec3 sampleIndex = start + t * indexDirection;
     //DeepShadow::EmptySpace::FeelerSkip
     float scalar = sampleScalar(sampleIndex);
