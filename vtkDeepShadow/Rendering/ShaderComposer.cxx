@@ -81,6 +81,14 @@ std::string GlslConstantArray(const std::string& type, const std::string& name,
   return text.str();
 }
 
+ShaderFeature BoundShaderFeature(int leaves)
+{
+  std::string source = vtkDeepShadowFeatureBound;
+  const std::string dec = "//@Dec\n";
+  source.insert(source.find(dec) + dec.size(), "#define BOUND_LEAVES " + std::to_string(leaves) + "\n");
+  return ShaderFeature("Bound", source);
+}
+
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,
   const std::map<std::string, ShaderFeature>& runtime)
 {

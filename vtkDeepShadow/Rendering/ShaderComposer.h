@@ -33,6 +33,9 @@ private:
 /** The features embedded in the library, by name (Jitter, Shading, ...). */
 const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 
+/** The Bound feature for a region of `leaves` leaves (BOUND_LEAVES defined in its Dec part). */
+ShaderFeature BoundShaderFeature(int leaves);
+
 /**
  * Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing.
  * `runtime` features (built at run time, e.g. a shadow technique's "Shadow") take precedence

@@ -799,7 +799,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (bounded)
   {
-    features.insert("Bound");
+    runtime["Bound"] = deepshadow::BoundShaderFeature(impl.Region->GetLeafCount());
   }
   if (needDepth)
   {
@@ -811,6 +811,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     impl.LastSource = source;
     this->FragmentShaderSource = source;
     this->ShaderFeatures.assign(features.begin(), features.end());
+    if (bounded)
+    {
+      this->ShaderFeatures.emplace_back("Bound");
+    }
     if (technique)
     {
       this->ShaderFeatures.push_back("Shadow:" + technique->GetName());

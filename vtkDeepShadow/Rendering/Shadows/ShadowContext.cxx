@@ -121,7 +121,6 @@ void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
   {
     sink.Set("u_boundNodes", this->Bound->Nodes->GetTextureUnit());
     sink.Set("u_boundTriangles", this->Bound->Triangles->GetTextureUnit());
-    sink.Set("u_boundLeafCount", static_cast<int>(this->Bound->LeafRoots.size()));
     sink.Set("u_boundLeafRoot", this->Bound->LeafRoots);
     sink.Set("u_boundTruth", this->Bound->TruthTable);
   }

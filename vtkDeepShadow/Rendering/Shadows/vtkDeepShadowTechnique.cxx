@@ -406,15 +406,15 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
   {
     features.insert("EmptySpace");
   }
-  if (context.Bound)
-  {
-    features.insert("Bound");
-  }
   for (const std::string& feature : this->GetBuildFeatures())
   {
     features.insert(feature);
   }
   std::map<std::string, deepshadow::ShaderFeature> runtime;
+  if (context.Bound)
+  {
+    runtime["Bound"] = deepshadow::BoundShaderFeature(static_cast<int>(context.Bound->LeafRoots.size()));
+  }
   if (!runtimeName.empty())
   {
     runtime[runtimeName] = deepshadow::ShaderFeature(runtimeName, runtimeSource);

@@ -6,13 +6,13 @@
 // in one jump to the next crossing, in whole steps, so that the samples taken are those of an
 // unbounded march (as EmptySpace does).
 //@Dec
-#define BOUND_MAX_LEAVES 8
+// BOUND_LEAVES, the number of leaves, is defined by the composer (BoundShaderFeature): loops
+// over the leaves have a constant count, so the walker's arrays can stay in registers.
 const int BoundTextureWidth = 4096;
 const float BoundNever = 3.0e38;
 uniform sampler2D u_boundNodes;     // 2 texels per node: (min, first), (max, count)
 uniform sampler2D u_boundTriangles; // 3 texels per triangle: its vertices
-uniform int u_boundLeafCount;
-uniform int u_boundLeafRoot[BOUND_MAX_LEAVES]; // -1: an empty leaf
+uniform int u_boundLeafRoot[BOUND_LEAVES]; // -1: an empty leaf
 uniform int u_boundTruth[8];        // bit s: the region holds the points whose leaf states are s
 
 vec4 boundFetch(sampler2D data, int i)
@@ -107,27 +107,34 @@ float boundNextHit(int leaf, vec3 origin, vec3 direction, float tAfter, out bool
   return best;
 }
 
-// deepshadow::BoundRegion::Walker.
+// deepshadow::BoundRegion::Walker. The region's state and where it may next change are kept,
+// so that a sample before that point costs one comparison (no loop over the leaves).
 struct BoundWalker
 {
-  float next[BOUND_MAX_LEAVES]; // each leaf's next crossing
+  float next[BOUND_LEAVES]; // each leaf's next crossing
   int states;                   // bit i: inside leaf i
+  bool inside;                  // the region's state ...
+  float until;                  // ... up to here
 };
 
 BoundWalker boundWalkerStart()
 {
   BoundWalker walker;
-  for (int i = 0; i < BOUND_MAX_LEAVES; ++i)
+  for (int i = 0; i < BOUND_LEAVES; ++i)
   {
     walker.next[i] = -BoundNever;
   }
   walker.states = 0;
+  walker.inside = false;
+  walker.until = -BoundNever;
   return walker;
 }
 
-bool boundInside(inout BoundWalker walker, vec3 origin, vec3 direction, float t)
+// Brings the walker to t: the leaves whose crossing was passed find their next one.
+void boundAdvance(inout BoundWalker walker, vec3 origin, vec3 direction, float t)
 {
-  for (int i = 0; i < u_boundLeafCount; ++i)
+  walker.until = BoundNever;
+  for (int i = 0; i < BOUND_LEAVES; ++i)
   {
     if (walker.next[i] <= t)
     {
@@ -136,28 +143,28 @@ bool boundInside(inout BoundWalker walker, vec3 origin, vec3 direction, float t)
       bool inside = walker.next[i] < BoundNever && !entering;
       walker.states = inside ? (walker.states | (1 << i)) : (walker.states & ~(1 << i));
     }
+    walker.until = min(walker.until, walker.next[i]);
   }
-  return ((u_boundTruth[walker.states >> 5] >> (walker.states & 31)) & 1) != 0;
+  walker.inside = ((u_boundTruth[walker.states >> 5] >> (walker.states & 31)) & 1) != 0;
 }
 
 // deepshadow::BoundRegion::Walker::SkipSteps: 0 if the sample at t is inside; else the steps
 // of dt to the first sample at or past the next crossing (1 << 30: none).
 int boundSkipSteps(inout BoundWalker walker, vec3 origin, vec3 direction, float t, float dt)
 {
-  if (boundInside(walker, origin, direction, t))
+  if (t >= walker.until)
+  {
+    boundAdvance(walker, origin, direction, t);
+  }
+  if (walker.inside)
   {
     return 0;
   }
-  float until = BoundNever;
-  for (int i = 0; i < u_boundLeafCount; ++i)
-  {
-    until = min(until, walker.next[i]);
-  }
-  if (until >= BoundNever)
+  if (walker.until >= BoundNever)
   {
     return 1 << 30;
   }
-  return max(1, int(min(ceil((until - t) / dt), 1073741824.0)));
+  return max(1, int(min(ceil((walker.until - t) / dt), 1073741824.0)));
 }
 //@Init
   BoundWalker boundView = boundWalkerStart();
