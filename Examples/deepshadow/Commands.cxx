@@ -4,6 +4,7 @@
 #include "SceneSetup.h"
 
 #include "Image.h"
+#include "vtkDeepShadowBoundedScene.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -14,6 +15,7 @@
 
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkRenderer.h"
 
 #include <chrono>
@@ -48,6 +50,32 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
   }
   vtkDeepShadowVolumeMapper* mapper = setup.Mapper;
   auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(setup.Technique);
+  const int boundBuilds = mapper->GetBoundBuilds();
+  const int shadowBuilds = mapper->GetShadowBuilds();
+  const std::vector<std::string> features = mapper->GetShaderFeatures();
+  const std::vector<std::string> passes = mapper->GetLastPasses();
+  const long long memory = mapper->GetGPUMemoryBytes();
+  // A bounded volume is also timed unbounded in the same run, for the ratio.
+  std::vector<double> unboundedMs;
+  if (mapper->GetNumberOfBounds() > 0)
+  {
+    std::vector<vtkSmartPointer<vtkPolyData>> bounds;
+    for (int b = 0; b < mapper->GetNumberOfBounds(); ++b)
+    {
+      bounds.emplace_back(mapper->GetBound(b));
+    }
+    mapper->RemoveAllBounds();
+    RenderFrame(setup.Window); // the shadows rebuild without the bound
+    for (int f = 0; f < options.Frames; ++f)
+    {
+      unboundedMs.push_back(RenderFrame(setup.Window));
+    }
+    for (const auto& bound : bounds)
+    {
+      mapper->AddBound(bound);
+    }
+    RenderFrame(setup.Window);
+  }
   run.Stats.Set("command", options.Command)
     .Set("scene", setup.Name)
     .Set("technique", options.Technique)
@@ -63,17 +91,25 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
     .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
     .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0)
-    .Set("shadow_builds", mapper->GetShadowBuilds())
+    .Set("shadow_builds", shadowBuilds)
     .Set("first_frame_passes", firstPasses)
-    .Set("passes", mapper->GetLastPasses()) // of the last timed frame
-    .Set("shader_features", mapper->GetShaderFeatures())
+    .Set("passes", passes) // of the last timed frame
+    .Set("shader_features", features)
     .Set("sample_distance", mapper->GetEffectiveSampleDistance())
     .Set("empty_block_fraction", mapper->GetEmptyBlockFraction())
     .Set("volume_uploads", mapper->GetVolumeUploads())
     .Set("transfer_table_builds", mapper->GetTransferTableBuilds())
     .Set("shader_compositions", mapper->GetShaderCompositions())
-    .Set("gpu_memory_bytes", mapper->GetGPUMemoryBytes())
+    .Set("gpu_memory_bytes", memory)
     .Set("generation_ms", 1000.0 * setup.GenerationSeconds)
+    .Set("bounds", static_cast<int>(setup.Bounds.size()))
+    .Set("bound_expression", setup.BoundExpression)
+    .Set("bound_mode", setup.Bounds.empty() ? "none" : options.CsgMesh ? "cgal-mesh" : "per-ray")
+    .Set("bound_builds", boundBuilds)
+    .Set("unbounded_render_ms", unboundedMs.empty() ? 0.0 : Median(unboundedMs))
+    .Set("bounded_to_unbounded", unboundedMs.empty() ? 0.0 : Median(run.FrameMs) / Median(unboundedMs))
+    .Set("bound_is_empty", setup.BoundIsEmpty)
+    .Set("csg_ms", setup.CsgMilliseconds)
     .Set("backend", setup.Window->GetBackendAsString())
     .Set("context", setup.Window->GetContextDescription())
     .Set("gl_renderer", RendererString(setup.Window));
@@ -201,6 +237,14 @@ int RunScenes(const Options&)
     scene->GetDimensions(dims);
     std::printf("%-8s %4dx%4dx%4d  %s\n", name.c_str(), dims[0], dims[1], dims[2],
       vtkDeepShadowStandardScene::GetSceneDescription(name).c_str());
+  }
+  std::printf("\nBounded (a standard volume inside closed meshes):\n");
+  for (const std::string& name : vtkDeepShadowBoundedScene::GetSceneNames())
+  {
+    std::printf("%-13s %s (%s of the %s scene)\n", name.c_str(),
+      vtkDeepShadowBoundedScene::GetSceneDescription(name).c_str(),
+      vtkDeepShadowBoundedScene::GetBoundExpression(name).c_str(),
+      vtkDeepShadowBoundedScene::GetVolumeSceneName(name).c_str());
   }
   return 0;
 }

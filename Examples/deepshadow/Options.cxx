@@ -336,6 +336,15 @@ SCENE (default: --scene box):
   --scale S               voxels per axis of the scene times S (0.01-2, default 1)
   --volume FILE           a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr
   --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing
+  --bound FILE            the volume exists only inside this closed mesh (.vtp, .vtk, .stl,
+                          .ply, .obj; in the volume's data coordinates); repeatable: the
+                          bounds are named A, B, C... in the order given
+  --csg EXPR              how the bounds combine, e.g. union(A,diff(B,C)) with union,
+                          intersection/inter, difference/diff (default: the union of all).
+                          The bounds are checked with CGAL first (closed, not
+                          self-intersecting, bounding a volume): a bad one exits with code 2
+  --csg-mesh              bound the volume by the CGAL result mesh of the expression
+                          instead of evaluating the expression per ray (same picture)
 
 VIEW:
   --size WxH              image size (default 512x512)
@@ -470,6 +479,18 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--volume")
     {
       o.VolumeFile = next();
+    }
+    else if (key == "--bound")
+    {
+      o.BoundFiles.push_back(next());
+    }
+    else if (key == "--csg")
+    {
+      o.Csg = next();
+    }
+    else if (key == "--csg-mesh")
+    {
+      o.CsgMesh = true;
     }
     else if (key == "--scale")
     {

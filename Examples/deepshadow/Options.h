@@ -46,6 +46,9 @@ struct Options
   std::string Scene;      // standard scene name
   std::string VolumeFile; // or a file
   double SceneScale = 1.0;
+  std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
+  std::string Csg;                     // --csg: how they combine ("" = their union)
+  bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
   int Width = 512;
   int Height = 512;
   double SampleDistance = 0.0; // 0: the mapper's default

@@ -1,5 +1,7 @@
 #include "SceneSetup.h"
 
+#include "vtkDeepShadowBoundedScene.h"
+#include "vtkDeepShadowCSGFilter.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
@@ -16,6 +18,12 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
+#include "vtkXMLPolyDataReader.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
@@ -23,8 +31,11 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace deepshadow
@@ -193,16 +204,21 @@ SceneSetup SceneSetup::Build(const Options& options)
   }
   else
   {
-    if (!vtkDeepShadowStandardScene::IsSceneName(options.Scene))
+    const bool bounded = vtkDeepShadowBoundedScene::IsSceneName(options.Scene);
+    if (!bounded && !vtkDeepShadowStandardScene::IsSceneName(options.Scene))
     {
       std::string names;
       for (const auto& name : vtkDeepShadowStandardScene::GetSceneNames())
       {
         names += (names.empty() ? "" : ", ") + name;
       }
+      for (const auto& name : vtkDeepShadowBoundedScene::GetSceneNames())
+      {
+        names += ", " + name;
+      }
       throw UsageError("unknown scene '" + options.Scene + "' (scenes: " + names + ")");
     }
-    scene->SetScene(options.Scene);
+    scene->SetScene(bounded ? vtkDeepShadowBoundedScene::GetVolumeSceneName(options.Scene) : options.Scene);
     scene->SetResolutionScale(options.SceneScale);
     setup.Data = scene->GetVolume();
     setup.GenerationSeconds = scene->GetLastGenerationTime();
@@ -217,6 +233,60 @@ SceneSetup SceneSetup::Build(const Options& options)
   }
   property->SetShade(options.Shade ? 1 : 0);
 
+  // The bound: files given replace a bounded scene's meshes; --csg replaces its expression.
+  if (vtkDeepShadowBoundedScene::IsSceneName(options.Scene) && options.VolumeFile.empty())
+  {
+    setup.Bounds = vtkDeepShadowBoundedScene::MakeBounds(options.Scene, setup.Data->GetBounds());
+    setup.BoundExpression = vtkDeepShadowBoundedScene::GetBoundExpression(options.Scene);
+  }
+  if (!options.BoundFiles.empty())
+  {
+    setup.Bounds.clear();
+    setup.BoundExpression.clear();
+    for (const std::string& file : options.BoundFiles)
+    {
+      setup.Bounds.push_back(ReadMesh(file));
+    }
+  }
+  if (!options.Csg.empty())
+  {
+    if (setup.Bounds.empty())
+    {
+      throw UsageError("--csg needs bounds (--bound FILE, repeatable)");
+    }
+    setup.BoundExpression = options.Csg;
+  }
+  else if (options.CsgMesh && setup.Bounds.empty())
+  {
+    throw UsageError("--csg-mesh needs bounds (--bound FILE, repeatable)");
+  }
+  vtkSmartPointer<vtkPolyData> csgMesh;
+  if (!setup.Bounds.empty())
+  {
+    // CGAL checks every bound (closed, not self-intersecting, bounding a volume) and
+    // evaluates the expression: a bad bound is a usage error, an empty result is said.
+    vtkNew<vtkDeepShadowCSGFilter> csg;
+    for (const auto& bound : setup.Bounds)
+    {
+      csg->AddInputData(bound);
+    }
+    csg->SetExpression(setup.BoundExpression);
+    csg->SetGlobalWarningDisplay(0);
+    csg->Update();
+    if (!csg->GetLastError().empty())
+    {
+      throw UsageError(csg->GetLastError());
+    }
+    setup.CsgMilliseconds = csg->GetLastMilliseconds();
+    setup.BoundIsEmpty = csg->GetResultIsEmpty();
+    if (setup.BoundIsEmpty)
+    {
+      std::fprintf(stderr, "deepshadow: the bound encloses nothing (its CSG result is empty): the volume is not drawn\n");
+    }
+    csgMesh = csg->GetOutput();
+  }
+
+
   setup.Mapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
   setup.Mapper->SetInputData(setup.Data);
   setup.Mapper->SetSampleDistance(options.SampleDistance);
@@ -226,6 +296,18 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Mapper->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
   setup.Technique = MakeTechnique(options);
   setup.Mapper->SetShadowTechnique(setup.Technique);
+  if (options.CsgMesh && csgMesh)
+  {
+    setup.Mapper->AddBound(csgMesh);
+  }
+  else
+  {
+    for (const auto& bound : setup.Bounds)
+    {
+      setup.Mapper->AddBound(bound);
+    }
+    setup.Mapper->SetBoundExpression(setup.BoundExpression);
+  }
   setup.Volume = vtkSmartPointer<vtkVolume>::New();
   setup.Volume->SetMapper(setup.Mapper);
   setup.Volume->SetProperty(property);
@@ -291,6 +373,64 @@ void RequireDrawn(const SceneSetup& setup)
   {
     throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
   }
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  if (!std::ifstream(path))
+  {
+    throw UsageError("cannot read mesh " + path);
+  }
+  std::string extension = path.substr(std::min(path.size(), path.find_last_of('.')));
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == ".vtp")
+  {
+    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
+  else if (extension == ".vtk")
+  {
+    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else if (extension == ".stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    stl->MergingOn();
+    reader = stl;
+  }
+  else if (extension == ".ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (extension == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else
+  {
+    throw UsageError("unsupported mesh format '" + extension + "' of " + path +
+      " (.vtp, .vtk, .stl, .ply, .obj)");
+  }
+  reader->SetGlobalWarningDisplay(0);
+  reader->Update();
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!mesh || mesh->GetNumberOfCells() == 0)
+  {
+    throw UsageError("no mesh could be read from " + path);
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(mesh);
+  return copy;
 }
 
 std::string RendererString(vtkDeepShadowRenderWindow* window)

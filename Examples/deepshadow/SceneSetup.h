@@ -7,11 +7,13 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkDeepShadowRenderWindow;
 class vtkDeepShadowTechnique;
 class vtkDeepShadowVolumeMapper;
 class vtkImageData;
+class vtkPolyData;
 class vtkRenderer;
 class vtkVolume;
 
@@ -30,6 +32,11 @@ struct SceneSetup
   vtkSmartPointer<vtkImageData> Data;
   std::string Name; // scene name or file name
   double GenerationSeconds = 0.0;
+  // The polyhedral bound (--bound / --csg, or a bounded scene's), as given to the mapper.
+  std::vector<vtkSmartPointer<vtkPolyData>> Bounds;
+  std::string BoundExpression;
+  double CsgMilliseconds = 0.0; // CGAL: checking the bounds and evaluating the expression
+  bool BoundIsEmpty = false;    // the expression's result encloses nothing
 
   /** Loads or generates the volume and sets up the view; throws UsageError on bad input. */
   static SceneSetup Build(const Options& options);
@@ -43,6 +50,9 @@ double RenderFrame(vtkDeepShadowRenderWindow* window);
 
 /** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
 void RequireDrawn(const SceneSetup& setup);
+
+/** Reads a closed mesh (.vtp, .vtk, .stl, .ply, .obj); throws UsageError on failure. */
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
 /** The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"). */
 std::string RendererString(vtkDeepShadowRenderWindow* window);

@@ -123,7 +123,39 @@ awk -F, 'NR > 1 { s[NR] = $1; t[NR] = $13; e[NR] = $18; p[NR] = $22 }
 expect 2 "report without --out" -- "$tool" report --quick
 expect 2 "report of an unknown scene" -- "$tool" report --scenes teapot --out report2
 expect 0 "scenes" -- "$tool" scenes
-[ "$(wc -l < out.txt)" -eq 6 ] || { echo "FAILED: expected 6 scenes"; failures=$((failures + 1)); }
+[ "$(grep -c '^[a-z]' out.txt)" -eq 9 ] || { echo "FAILED: expected 6 scenes and 3 bounded ones"; failures=$((failures + 1)); }
+
+# Polyhedral bounds: bounded scenes, meshes from files combined by --csg, and bad bounds.
+cube_obj() { # cube_obj FILE LO HI [FACES]: an OBJ cube, outward; FACES < 6 leaves it open
+  local lo=$2 hi=$3 faces=${4:-6}
+  { for z in $lo $hi; do for y in $lo $hi; do for x in $lo $hi; do echo "v $x $y $z"; done; done; done
+    printf 'f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n' | head -n "$faces"; } > "$1"
+}
+cube_obj big.obj -20 20
+cube_obj small.obj -8 8
+cube_obj open.obj -20 20 5
+cube_obj far.obj 100 110
+{ cat big.obj; sed 's/-20/-10/g; s/ 20/ 30/g' big.obj | grep '^v'; \
+  printf 'f 9 13 15 11\nf 10 12 16 14\nf 9 10 14 13\nf 11 15 16 12\nf 9 11 12 10\nf 13 14 16 15\n'; } > crossed.obj
+expect 0 "a bounded scene" -- "$tool" render --scene box-torus --scale 0.5 --size 64x64 --technique dsm --out torus.png --json torus.json
+grep -q '"bound_mode": "per-ray"' torus.json || { echo "FAILED: torus.json lacks the bound mode"; failures=$((failures + 1)); }
+grep -q '"Bound"' torus.json || { echo "FAILED: torus.json lacks the Bound feature"; failures=$((failures + 1)); }
+expect 0 "--bound with --csg" -- "$tool" render --scene box --scale 0.5 --size 64x64 --bound big.obj --bound small.obj --csg "diff(A,B)" --out diff.png --json diff.json
+grep -q '"bound_expression": "diff(A,B)"' diff.json || { echo "FAILED: diff.json lacks the expression"; failures=$((failures + 1)); }
+expect 0 "--csg-mesh" -- "$tool" render --scene box --scale 0.5 --size 64x64 --bound big.obj --bound small.obj --csg "diff(A,B)" --csg-mesh --out diff-mesh.png --json diff-mesh.json
+grep -q '"bound_mode": "cgal-mesh"' diff-mesh.json || { echo "FAILED: diff-mesh.json lacks the mode"; failures=$((failures + 1)); }
+cmp -s diff.png diff-mesh.png || echo "note: per-ray and CGAL-mesh pictures differ in some bytes (TestBoundTwoWays holds the tolerance)"
+expect 0 "an empty CSG result" -- "$tool" render --scene box --scale 0.5 --size 64x64 --bound big.obj --bound far.obj --csg "inter(A,B)" --out empty.png
+grep -q "encloses nothing" err.txt || { echo "FAILED: an empty result is not said"; failures=$((failures + 1)); }
+expect 2 "an open bound" -- "$tool" render --scene box --size 64x64 --bound open.obj --out x.png
+grep -q "not closed" err.txt || { echo "FAILED: the open bound's error does not say so"; failures=$((failures + 1)); }
+expect 2 "a self-intersecting bound" -- "$tool" render --scene box --size 64x64 --bound crossed.obj --out x.png
+grep -q "intersects itself" err.txt || { echo "FAILED: the self-intersection is not said"; failures=$((failures + 1)); }
+expect 2 "a bad --csg" -- "$tool" render --scene box --size 64x64 --bound big.obj --csg "diff(A,B)" --out x.png
+expect 2 "--csg without bounds" -- "$tool" render --scene box --size 64x64 --csg "A" --out x.png
+echo "solid" > mesh.xyz
+expect 2 "an unsupported mesh format" -- "$tool" render --scene box --size 64x64 --bound mesh.xyz --out x.png
+expect 2 "a missing mesh" -- "$tool" render --scene box --size 64x64 --bound none.stl --out x.png
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
