@@ -1,5 +1,6 @@
 #include "Shadows.h"
 
+#include "BoundRegion.h"
 #include "Camera.h"
 #include "LightSpace.h"
 #include "OpticalModel.h"

@@ -17,7 +17,6 @@
 #ifndef deepshadow_Shadows_h
 #define deepshadow_Shadows_h
 
-#include "BoundRegion.h"
 #include "EmptySpace.h"
 #include "Light.h"
 #include "TransferFunction.h"
@@ -35,6 +34,7 @@
 
 namespace deepshadow
 {
+class BoundRegion;
 
 enum class ShadowKind
 {

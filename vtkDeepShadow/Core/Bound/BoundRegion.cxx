@@ -121,6 +121,11 @@ BoundRegion::Walker::Walker(const BoundRegion& region, const glm::dvec3& origin,
 
 bool BoundRegion::Walker::Inside(double t)
 {
+  if (t < this->UntilT)
+  {
+    return this->InsideState; // nothing crossed since the last query
+  }
+  this->UntilT = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < this->Next.size(); ++i)
   {
     if (this->Next[i] <= t)
@@ -130,14 +135,15 @@ bool BoundRegion::Walker::Inside(double t)
       const uint32_t bit = 1u << i;
       this->States = hit.Found && !hit.Entering ? (this->States | bit) : (this->States & ~bit);
     }
+    this->UntilT = std::min(this->UntilT, this->Next[i]);
   }
-  return ((this->Region.Truth[this->States / 32] >> (this->States % 32)) & 1u) != 0;
+  this->InsideState = ((this->Region.Truth[this->States / 32] >> (this->States % 32)) & 1u) != 0;
+  return this->InsideState;
 }
 
 double BoundRegion::Walker::Until() const
 {
-  return this->Next.empty() ? std::numeric_limits<double>::infinity()
-                            : *std::min_element(this->Next.begin(), this->Next.end());
+  return this->UntilT;
 }
 
 long BoundRegion::Walker::SkipSteps(double t, double dt)

@@ -20,6 +20,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,10 @@ public:
     glm::dvec3 Origin, Direction;
     std::vector<double> Next; // each leaf's next crossing after the last query
     uint32_t States = 0;      // bit i: inside leaf i
+    // The region's state and where it may next change: a query before there costs one
+    // comparison (as boundSkipSteps() does on the GPU).
+    bool InsideState = false;
+    double UntilT = -std::numeric_limits<double>::infinity();
   };
 
   /** Whether p is inside (one walk along +x). */

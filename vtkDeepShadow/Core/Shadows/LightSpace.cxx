@@ -1,5 +1,6 @@
 #include "LightSpace.h"
 
+#include "BoundRegion.h"
 #include "Camera.h"
 #include "DeepShadowMap.h"
 #include "OpacityLevels.h"
