@@ -384,37 +384,33 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   std::string extension = path.substr(std::min(path.size(), path.find_last_of('.')));
   std::transform(extension.begin(), extension.end(), extension.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  // Every reader of these formats has SetFileName; STL points are merged as they are read.
+  auto make = [&path](auto reader) -> vtkSmartPointer<vtkAlgorithm> {
+    reader->SetFileName(path.c_str());
+    return reader;
+  };
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == ".vtp")
   {
-    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    xml->SetFileName(path.c_str());
-    reader = xml;
+    reader = make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
   }
   else if (extension == ".vtk")
   {
-    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
-    legacy->SetFileName(path.c_str());
-    reader = legacy;
+    reader = make(vtkSmartPointer<vtkPolyDataReader>::New());
   }
   else if (extension == ".stl")
   {
     auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->SetFileName(path.c_str());
     stl->MergingOn();
-    reader = stl;
+    reader = make(stl);
   }
   else if (extension == ".ply")
   {
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(path.c_str());
-    reader = ply;
+    reader = make(vtkSmartPointer<vtkPLYReader>::New());
   }
   else if (extension == ".obj")
   {
-    auto obj = vtkSmartPointer<vtkOBJReader>::New();
-    obj->SetFileName(path.c_str());
-    reader = obj;
+    reader = make(vtkSmartPointer<vtkOBJReader>::New());
   }
   else
   {

@@ -388,7 +388,7 @@ bool vtkDeepShadowVolumeMapper::UpdateBound(vtkOpenGLRenderWindow* window, vtkIm
     meshes.push_back(bound);
   }
   const bool changed = times != impl.BoundTimes || this->BoundExpression != impl.BoundBuiltExpression ||
-    dataToIndex != impl.BoundDataToIndex || (!impl.Region && impl.BoundError.empty());
+    dataToIndex != impl.BoundDataToIndex;
   if (changed)
   {
     impl.BoundTimes = times;
