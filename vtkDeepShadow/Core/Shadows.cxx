@@ -1,6 +1,7 @@
 #include "Shadows.h"
 
 #include "BoundRegion.h"
+#include "SurfaceSet.h"
 #include "Camera.h"
 #include "LightSpace.h"
 #include "OpticalModel.h"
@@ -132,14 +133,35 @@ double DistanceToLight(const Light& light, const glm::dvec3& p)
 glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   const glm::dvec3& toLight, double maxDistance, double step, const ShadowParameters& parameters)
 {
+  glm::dvec3 transmittance(1.0);
+  if (caster.Surfaces && !caster.Surfaces->Empty())
+  {
+    if (parameters.Opaque)
+    {
+      if (caster.Surfaces->Occludes(from, toLight, 0.0, maxDistance, parameters.Threshold))
+      {
+        return glm::dvec3(0.0);
+      }
+    }
+    else
+    {
+      transmittance = caster.Surfaces->Transmittance(from, toLight, 0.0, maxDistance, parameters.Colored);
+      if (transmittance == glm::dvec3(0.0))
+      {
+        return transmittance;
+      }
+    }
+  }
   const VolumeGrid& grid = *caster.Grid;
   double tEnter = 0.0, tExit = 0.0;
   if (!IntersectBox(Ray{ from, toLight }, grid.GetWorldToIndex(), glm::dvec3(0.0),
         glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
   {
-    return glm::dvec3(1.0);
+    return transmittance;
   }
   const double tEnd = std::min(tExit, maxDistance);
+  // Samples before the box's entry (a point outside the volume) are left out.
+  const long firstSample = tEnter > 0.0 ? static_cast<long>(std::ceil(tEnter / step - 0.5)) : 0;
   const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(from, 1.0));
   const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(toLight, 0.0));
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar.
@@ -151,8 +173,7 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   {
     bound.emplace(*caster.Bound, indexOrigin, indexDirection);
   }
-  glm::dvec3 transmittance(1.0);
-  for (long j = 0;; ++j)
+  for (long j = firstSample;; ++j)
   {
     const double t = (static_cast<double>(j) + 0.5) * step;
     if (!(t < tEnd))

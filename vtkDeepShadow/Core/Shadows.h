@@ -8,6 +8,7 @@
 //     (1 - alpha (1 - c)) per channel with c the sample's colour (its transmission). With exact
 //     transfer functions, a fine step and no early termination this is the ground truth.
 //   - Rays, opaque ("B"): 0 as soon as a feeler sample exceeds the threshold, else 1.
+//   - Casting surfaces (ShadowCaster::Surfaces) are steps on every technique's light rays.
 //   - Light-space maps (Shadows/LightSpace.h), one file each in Shadows/: shadow map ("B"),
 //     deep shadow map (a visibility function per texel compressed within epsilon), opacity
 //     levels (depths at 10/50/90 % opacity) and coloured stochastic shadow maps (CSSM).
@@ -35,6 +36,7 @@
 namespace deepshadow
 {
 class BoundRegion;
+class SurfaceSet;
 
 enum class ShadowKind
 {
@@ -131,6 +133,12 @@ struct ShadowCaster
   const EmptySpaceMap* Empty = nullptr;
   /** Optional: where the volume exists (BoundRegion.h); outside, it casts nothing. */
   const BoundRegion* Bound = nullptr;
+  /**
+   * Optional: surfaces (world coordinates) that cast shadows too (SurfaceSet.h). Every
+   * technique meets them on its light rays: a step of their transmission; binary techniques
+   * (opaque rays, shadow maps) stop at a surface whose opacity exceeds the threshold.
+   */
+  const SurfaceSet* Surfaces = nullptr;
 
   /** Colour (transmission) and opacity corrected for `step` at `scalar`. */
   glm::dvec4 Sample(double scalar, double step) const;
@@ -161,7 +169,9 @@ VTKDEEPSHADOWCORE_EXPORT std::unique_ptr<LightShadow> MakeLightShadow(
 /**
  * The feeler itself: transmittance (per channel if Colored) from world point `from` towards
  * the light (unit direction `toLight`) up to `maxDistance` or the volume's box, samples every
- * `step`.
+ * `step` at (j + 0.5) * step, those outside the box left out (a point outside the volume
+ * starts at its entry); times the transmission of every casting surface crossed before
+ * `maxDistance`, inside the box or not.
  */
 VTKDEEPSHADOWCORE_EXPORT glm::dvec3 FeelerVisibility(const ShadowCaster& caster,
   const glm::dvec3& from, const glm::dvec3& toLight, double maxDistance, double step,

@@ -191,34 +191,10 @@ std::vector<glm::dvec2> BoundRegion::Intervals(
 BoundRegion::GPUData BoundRegion::PackForGPU() const
 {
   GPUData data;
-  auto down = [](double v) {
-    const float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
-  };
-  auto up = [](double v) {
-    const float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
-  };
   for (const TriangleBVH& leaf : this->Leaves)
   {
-    const int nodeBase = static_cast<int>(data.Nodes.size() / 2);
-    const int triangleBase = static_cast<int>(data.Triangles.size() / 3);
-    data.LeafRoots.push_back(leaf.Empty() ? -1 : nodeBase);
+    data.LeafRoots.push_back(leaf.AppendForGPU(data.Nodes, data.Triangles));
     data.MaxDepth = std::max(data.MaxDepth, leaf.GetDepth());
-    for (const TriangleBVH::Node& node : leaf.GetNodes())
-    {
-      const bool isLeaf = node.Count > 0;
-      const int first = node.First + (isLeaf ? triangleBase : nodeBase);
-      data.Nodes.emplace_back(down(node.Min.x), down(node.Min.y), down(node.Min.z), static_cast<float>(first));
-      data.Nodes.emplace_back(up(node.Max.x), up(node.Max.y), up(node.Max.z), static_cast<float>(node.Count));
-    }
-    for (const Triangle& t : leaf.GetTriangles())
-    {
-      for (const glm::dvec3& v : { t.V0, t.V1, t.V2 })
-      {
-        data.Triangles.emplace_back(glm::vec3(v), 0.0f);
-      }
-    }
   }
   for (uint32_t word : this->Truth)
   {

@@ -89,7 +89,7 @@ public:
   {
     /** Two texels per node: (min, first), (max, count); boxes rounded outward. */
     std::vector<glm::vec4> Nodes;
-    /** Three texels per triangle: its vertices (w unused). */
+    /** Three texels per triangle: its vertices (w: the tag, unused here). */
     std::vector<glm::vec4> Triangles;
     std::vector<int> LeafRoots;    // each leaf's root node
     std::vector<int> TruthTable;   // CSGExpression::TruthTable() as GLSL ints

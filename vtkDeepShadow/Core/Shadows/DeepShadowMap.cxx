@@ -1,5 +1,7 @@
 #include "DeepShadowMap.h"
 
+#include "SurfaceSet.h"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -15,12 +17,26 @@ VisibilitySamples SampleVisibility(const ShadowCaster& caster, const glm::dvec3&
 {
   VisibilitySamples samples;
   glm::dvec3 transmittance(1.0);
-  MarchTexelRay(caster, origin, direction, step, caster.Empty,
+  // A sample's interval starts with a point unless the previous sample's end is there.
+  bool needStart = true;
+  auto point = [&](double depth) {
+    samples.Depths.push_back(depth);
+    samples.Values.push_back(transmittance);
+    if (std::max({ transmittance.r, transmittance.g, transmittance.b }) <= stopAt)
+    {
+      samples.Truncated = true;
+      return false;
+    }
+    return true;
+  };
+  MarchTexelRay(
+    caster, origin, direction, step, caster.Empty,
     [&](long, double t, double scalar, bool skipped) {
-      if (samples.Depths.empty())
+      if (needStart)
       {
         samples.Depths.push_back(t - 0.5 * step);
         samples.Values.push_back(transmittance);
+        needStart = false;
       }
       if (!skipped)
       {
@@ -28,14 +44,15 @@ VisibilitySamples SampleVisibility(const ShadowCaster& caster, const glm::dvec3&
         transmittance *= colored ? 1.0 - sample.a * (1.0 - glm::dvec3(sample))
                                  : glm::dvec3(1.0 - sample.a);
       }
-      samples.Depths.push_back(t + 0.5 * step);
+      return point(t + 0.5 * step);
+    },
+    [&](double t, int surface) {
+      // A step: the value before and after at one depth.
+      samples.Depths.push_back(t);
       samples.Values.push_back(transmittance);
-      if (std::max({ transmittance.r, transmittance.g, transmittance.b }) <= stopAt)
-      {
-        samples.Truncated = true;
-        return false;
-      }
-      return true;
+      transmittance *= SurfaceTransmission(caster.Surfaces->GetSurface(surface).Material, colored);
+      needStart = true;
+      return point(t);
     });
   return samples;
 }

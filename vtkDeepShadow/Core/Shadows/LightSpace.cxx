@@ -7,6 +7,7 @@
 #include "Parallel.h"
 #include "ShadowMap.h"
 #include "StochasticShadowMap.h"
+#include "SurfaceSet.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -64,6 +65,34 @@ void VolumeBoundingSphere(
     const glm::dvec3 corner((c & 1) * maxIndex.x, ((c >> 1) & 1) * maxIndex.y, ((c >> 2) & 1) * maxIndex.z);
     radius = std::max(radius, glm::length(glm::dvec3(indexToWorld * glm::dvec4(corner, 1.0)) - centre));
   }
+}
+
+void CasterBoundingSphere(const glm::dmat4& indexToWorld, const glm::ivec3& dims,
+  const SurfaceSet* surfaces, glm::dvec3& centre, double& radius)
+{
+  VolumeBoundingSphere(indexToWorld, dims, centre, radius);
+  if (!surfaces || surfaces->Empty())
+  {
+    return;
+  }
+  glm::dvec3 other;
+  double otherRadius = 0.0;
+  surfaces->BoundingSphere(other, otherRadius);
+  const double distance = glm::length(other - centre);
+  if (distance + otherRadius <= radius)
+  {
+    return;
+  }
+  if (distance + radius <= otherRadius)
+  {
+    centre = other;
+    radius = otherRadius;
+    return;
+  }
+  // The smallest sphere around both.
+  const double merged = 0.5 * (distance + radius + otherRadius);
+  centre += (merged - radius) / distance * (other - centre);
+  radius = merged;
 }
 
 namespace
@@ -134,13 +163,35 @@ int ShadowMapFaceFor(const std::vector<ShadowMapFace>& faces, const glm::dvec3& 
 
 void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
   double step, const EmptySpaceMap* empty,
-  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit)
+  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit,
+  const std::function<bool(double t, int surface)>& visitSurface)
 {
+  // Surface crossings come in depth order between the samples: those at or before a sample's
+  // depth first, those beyond the box after it.
+  const SurfaceSet* surfaces = visitSurface && caster.Surfaces && !caster.Surfaces->Empty()
+    ? caster.Surfaces
+    : nullptr;
+  SurfaceHit surface;
+  if (surfaces)
+  {
+    surface = surfaces->NextHit(origin, direction, 0.0);
+  }
+  auto surfacesUpTo = [&](double t) {
+    for (; surface.Found && surface.T <= t; surface = surfaces->NextHit(origin, direction, surface.T))
+    {
+      if (!visitSurface(surface.T, surface.Surface))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
   const VolumeGrid& grid = *caster.Grid;
   double tEnter = 0.0, tExit = 0.0;
   if (!IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), glm::dvec3(0.0),
         glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
   {
+    surfacesUpTo(std::numeric_limits<double>::infinity());
     return;
   }
   const double t0 = std::max(tEnter, 0.0);
@@ -175,18 +226,19 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
     if (skip)
     {
       const long last = std::min(j + skip - 1, lastInBox);
-      if (!visit(last, depthOf(last), 0.0, true))
+      if (!surfacesUpTo(depthOf(last)) || !visit(last, depthOf(last), 0.0, true))
       {
         return;
       }
       j = last;
       continue;
     }
-    if (!visit(j, depthOf(j), grid.Sample(index, caster.Sampling), false))
+    if (!surfacesUpTo(depthOf(j)) || !visit(j, depthOf(j), grid.Sample(index, caster.Sampling), false))
     {
       return;
     }
   }
+  surfacesUpTo(std::numeric_limits<double>::infinity());
 }
 
 LightSpaceShadow::LightSpaceShadow(
@@ -198,7 +250,7 @@ LightSpaceShadow::LightSpaceShadow(
 {
   glm::dvec3 centre;
   double radius = 0.0;
-  VolumeBoundingSphere(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), centre, radius);
+  CasterBoundingSphere(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces, centre, radius);
   this->Faces = ShadowMapFaces(light, centre, radius);
 }
 

@@ -1,5 +1,7 @@
 #include "ShadowMap.h"
 
+#include "SurfaceSet.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -80,14 +82,24 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
   const EmptySpaceMap* empty = parameters.Mode == ThresholdMode::Scalar ? nullptr : caster.Empty;
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
     float& depth = this->Depths[this->Texel(f, x, y)];
-    MarchTexelRay(caster, origin, direction, step, empty, [&](long, double t, double scalar, bool skipped) {
-      if (!skipped && caster.AboveThreshold(scalar, step, parameters))
-      {
-        depth = static_cast<float>(t);
-        return false;
-      }
-      return true;
-    });
+    MarchTexelRay(
+      caster, origin, direction, step, empty,
+      [&](long, double t, double scalar, bool skipped) {
+        if (!skipped && caster.AboveThreshold(scalar, step, parameters))
+        {
+          depth = static_cast<float>(t);
+          return false;
+        }
+        return true;
+      },
+      [&](double t, int surface) {
+        if (caster.Surfaces->GetSurface(surface).Material.Opacity > parameters.Threshold)
+        {
+          depth = static_cast<float>(t);
+          return false;
+        }
+        return true;
+      });
   });
 }
 

@@ -1,5 +1,7 @@
 #include "StochasticShadowMap.h"
 
+#include "SurfaceSet.h"
+
 #include "Jitter.h"
 
 #include <cmath>
@@ -45,24 +47,36 @@ std::array<float, 3> TraceStochasticPhoton(const ShadowCaster& caster, const glm
   const glm::dvec3& direction, double step, uint32_t x, uint32_t y, uint32_t layer, uint32_t seed)
 {
   std::array<float, 3> stop{ { NoHit, NoHit, NoHit } };
-  MarchTexelRay(caster, origin, direction, step, caster.Empty,
-    [&](long segment, double t, double scalar, bool skipped) {
+  // A photon stops in channel c where rho_c exceeds the segment's random threshold.
+  auto segment = [&](double t, const glm::dvec3& rho, uint32_t id) {
+    const double r = StochasticThreshold(x, y, layer, id, seed);
+    bool all = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (stop[c] == NoHit && rho[c] > r)
+      {
+        stop[c] = static_cast<float>(t);
+      }
+      all = all && stop[c] != NoHit;
+    }
+    return !all;
+  };
+  uint32_t crossings = 0;
+  MarchTexelRay(
+    caster, origin, direction, step, caster.Empty,
+    [&](long j, double t, double scalar, bool skipped) {
       if (skipped)
       {
         return true; // no photon stops in empty space
       }
       const glm::dvec4 sample = caster.Sample(scalar, step);
-      const double r = StochasticThreshold(x, y, layer, static_cast<uint32_t>(segment), seed);
-      bool all = true;
-      for (int c = 0; c < 3; ++c)
-      {
-        if (stop[c] == NoHit && sample.a * (1.0 - sample[c]) > r)
-        {
-          stop[c] = static_cast<float>(t);
-        }
-        all = all && stop[c] != NoHit;
-      }
-      return !all;
+      return segment(t, sample.a * (1.0 - glm::dvec3(sample)), static_cast<uint32_t>(j));
+    },
+    [&](double t, int surface) {
+      // A surface is a segment of its own: rho = what it stops of each channel.
+      const glm::dvec3 rho =
+        1.0 - SurfaceTransmission(caster.Surfaces->GetSurface(surface).Material, true);
+      return segment(t, rho, SurfaceSegmentBase + crossings++);
     });
   return stop;
 }

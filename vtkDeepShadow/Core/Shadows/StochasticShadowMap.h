@@ -36,6 +36,12 @@ namespace deepshadow
  */
 VTKDEEPSHADOWCORE_EXPORT const std::vector<glm::ivec2>& StochasticOffsets(int count);
 
+/**
+ * Segment numbers of surface crossings: the k-th crossing of a photon's ray is segment
+ * SurfaceSegmentBase + k (volume samples are segments 0, 1, ...).
+ */
+constexpr uint32_t SurfaceSegmentBase = 0x80000000u;
+
 /** The random threshold of a segment, in [0, 1): PCG hashes, the same on GPU and CPU. */
 VTKDEEPSHADOWCORE_EXPORT double StochasticThreshold(
   uint32_t x, uint32_t y, uint32_t layer, uint32_t segment, uint32_t seed);

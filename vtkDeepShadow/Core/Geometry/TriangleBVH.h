@@ -1,13 +1,16 @@
-// A bounding-volume hierarchy over the triangles of one closed mesh, and the query the
-// bounded volumes need: the nearest crossing of a ray after a given parameter, and whether
-// the ray enters or leaves the solid there. The GPU walks the same flattened nodes (packed by
-// BoundRegion::PackForGPU) with the same Möller-Trumbore test in float (Features/Bound.glsl).
+// A bounding-volume hierarchy over triangles, and the one query both of its users need: the
+// nearest crossing of a ray after a given parameter, which triangle it is, and whether the ray
+// meets its front side. Bounded volumes (Bound/BoundRegion.h) walk closed meshes with it;
+// shadow-casting surfaces (SurfaceSet.h) are found along light rays with it. The GPU walks the
+// same flattened nodes (AppendForGPU) with the same Möller-Trumbore test in float
+// (Shaders/Features/TriangleHierarchy.glsl).
 #ifndef deepshadow_TriangleBVH_h
 #define deepshadow_TriangleBVH_h
 
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -18,6 +21,8 @@ namespace deepshadow
 struct Triangle
 {
   glm::dvec3 V0, V1, V2; // counter-clockwise seen from outside the solid
+  /** The user's label (SurfaceSet: the surface it belongs to); kept through the build. */
+  int Tag = 0;
 };
 
 /** A ray's crossing of a mesh. */
@@ -27,6 +32,8 @@ struct MeshHit
   /** Entering the solid: the ray meets the triangle's front (outer) side. */
   bool Entering = false;
   bool Found = false;
+  /** Index of the triangle crossed, in TriangleBVH::GetTriangles(). */
+  int Triangle = -1;
 };
 
 class VTKDEEPSHADOWCORE_EXPORT TriangleBVH
@@ -59,6 +66,13 @@ public:
   bool Empty() const { return this->Triangles.empty(); }
   /** Longest root-to-leaf path (the GPU's traversal stack must hold it). */
   int GetDepth() const { return this->Depth; }
+
+  /**
+   * Appends the hierarchy in the GPU's layout and returns its root node (-1 when empty):
+   * two texels per node, (min, first) and (max, count), boxes rounded outward to float; three
+   * texels per triangle, its vertices, the first with w = Tag.
+   */
+  int AppendForGPU(std::vector<glm::vec4>& nodes, std::vector<glm::vec4>& triangles) const;
 
 private:
   int Build(int node, int first, int count, int depth);

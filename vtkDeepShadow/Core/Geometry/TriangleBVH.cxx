@@ -154,6 +154,7 @@ MeshHit TriangleBVH::NextHit(const glm::dvec3& origin, const glm::dvec3& directi
           best.T = t;
           best.Entering = entering;
           best.Found = true;
+          best.Triangle = i;
         }
       }
       continue;
@@ -162,6 +163,39 @@ MeshHit TriangleBVH::NextHit(const glm::dvec3& origin, const glm::dvec3& directi
     stack[top++] = node.First;
   }
   return best;
+}
+
+int TriangleBVH::AppendForGPU(std::vector<glm::vec4>& nodes, std::vector<glm::vec4>& triangles) const
+{
+  if (this->Empty())
+  {
+    return -1;
+  }
+  // Boxes rounded outward, so that float never culls a crossing double finds.
+  auto down = [](double v) {
+    const float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -INFINITY) : f;
+  };
+  auto up = [](double v) {
+    const float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
+  };
+  const int nodeBase = static_cast<int>(nodes.size() / 2);
+  const int triangleBase = static_cast<int>(triangles.size() / 3);
+  for (const Node& node : this->Nodes)
+  {
+    const bool isLeaf = node.Count > 0;
+    const int first = node.First + (isLeaf ? triangleBase : nodeBase);
+    nodes.emplace_back(down(node.Min.x), down(node.Min.y), down(node.Min.z), static_cast<float>(first));
+    nodes.emplace_back(up(node.Max.x), up(node.Max.y), up(node.Max.z), static_cast<float>(node.Count));
+  }
+  for (const Triangle& t : this->Triangles)
+  {
+    triangles.emplace_back(glm::vec3(t.V0), static_cast<float>(t.Tag));
+    triangles.emplace_back(glm::vec3(t.V1), 0.0f);
+    triangles.emplace_back(glm::vec3(t.V2), 0.0f);
+  }
+  return nodeBase;
 }
 
 }
