@@ -9,6 +9,8 @@
 #include "vtkDeepShadowFeatureIsotropic.h"
 #include "vtkDeepShadowFeatureJitter.h"
 #include "vtkDeepShadowFeatureLighting.h"
+#include "vtkDeepShadowFeatureSurfaces.h"
+#include "vtkDeepShadowFeatureTriangleHierarchy.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
 #include "vtkDeepShadowFeatureShadowTerm.h"
 #include "vtkDeepShadowFeatureVolumeSampling.h"
@@ -61,6 +63,8 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("Lighting", vtkDeepShadowFeatureLighting);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
     add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
+    add("Surfaces", vtkDeepShadowFeatureSurfaces);
+    add("TriangleHierarchy", vtkDeepShadowFeatureTriangleHierarchy);
     add("VolumeSampling", vtkDeepShadowFeatureVolumeSampling);
     return all;
   }();

@@ -4,6 +4,8 @@
 #include "Shadows/ShadowContext.h"
 #include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
+#include "GL/FloatTexels.h"
+#include "SurfaceSet.h"
 #include "ShaderComposer.h"
 #include "TransferFunction.h"
 #include "vtkDeepShadowVolumeFS.h"
@@ -215,6 +217,16 @@ public:
   std::string BoundError;
   long long BoundBytes = 0;
 
+  // Surfaces that cast shadows onto the volume, in world space, and the same in index space
+  // on the GPU (rebuilt when the set or the volume's placement changes).
+  std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
+  const deepshadow::SurfaceSet* SurfacesBuiltFrom = nullptr;
+  glm::dmat4 SurfacesWorldToIndex{ 0.0 };
+  deepshadow::SurfaceTextures SurfacesGPU;
+  vtkSmartPointer<vtkTextureObject> SurfaceNodes;
+  vtkSmartPointer<vtkTextureObject> SurfaceTriangles;
+  long long SurfaceBytes = 0;
+
   std::string LastSource;
 
   // Copies the depth of the opaque geometry in the viewport into Depth.
@@ -288,19 +300,22 @@ public:
     {
       this->Triangles->ReleaseGraphicsResources();
     }
-    for (vtkTextureObject* texture : { this->BoundNodes.Get(), this->BoundTriangles.Get() })
+    for (vtkTextureObject* texture : { this->BoundNodes.Get(), this->BoundTriangles.Get(),
+           this->SurfaceNodes.Get(), this->SurfaceTriangles.Get() })
     {
       if (texture)
       {
         texture->ReleaseGraphicsResources(window);
       }
     }
-    // What was composed, and the bounds the user set, are independent of GL resources.
+    // What was composed, and the bounds and surfaces set, are independent of GL resources.
     const std::string lastSource = this->LastSource;
     auto bounds = std::move(this->Bounds);
+    auto surfaces = std::move(this->Surfaces);
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
+    this->Surfaces = std::move(surfaces);
   }
 };
 
@@ -398,41 +413,18 @@ bool vtkDeepShadowVolumeMapper::UpdateBound(vtkOpenGLRenderWindow* window, vtkIm
     if (impl.Region)
     {
       const deepshadow::BoundRegion::GPUData data = impl.Region->PackForGPU();
-      GLint maxSize = 0;
-      glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-      constexpr int width = 4096; // BoundTextureWidth in Features/Bound.glsl
-      const size_t rowsNeeded = (std::max(data.Triangles.size(), data.Nodes.size()) + width - 1) / width;
-      if (data.MaxDepth >= 32)
+      const std::string limit =
+        deepshadow::FloatTexelsLimit(std::max(data.Triangles.size(), data.Nodes.size()),
+          data.Triangles.size() / 3, data.MaxDepth);
+      if (!limit.empty())
       {
-        impl.BoundError = "the bound's hierarchy is deeper than the GPU's walk allows (32)";
-      }
-      else if (rowsNeeded > static_cast<size_t>(maxSize) || data.Triangles.size() / 3 >= (1u << 24))
-      {
-        impl.BoundError = "the bound has too many triangles for this GL (" +
-          std::to_string(data.Triangles.size() / 3) + ")";
-      }
-      if (!impl.BoundError.empty())
-      {
+        impl.BoundError = "the bound cannot be used: " + limit;
         impl.Region.reset();
       }
       else
       {
-        auto upload = [&](vtkSmartPointer<vtkTextureObject>& texture, std::vector<glm::vec4> texels) {
-          const int columns = static_cast<int>(std::min<size_t>(width, std::max<size_t>(texels.size(), 1)));
-          const int rows = static_cast<int>((std::max<size_t>(texels.size(), 1) + columns - 1) / columns);
-          texels.resize(static_cast<size_t>(columns) * rows, glm::vec4(0.0f));
-          if (texture)
-          {
-            texture->ReleaseGraphicsResources(window);
-          }
-          texture = NewTexture(window);
-          texture->SetMinificationFilter(vtkTextureObject::Nearest);
-          texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-          texture->Create2DFromRaw(static_cast<unsigned int>(columns), static_cast<unsigned int>(rows), 4,
-            VTK_FLOAT, glm::value_ptr(texels.front()));
-          return static_cast<long long>(texels.size()) * 16;
-        };
-        impl.BoundBytes = upload(impl.BoundNodes, data.Nodes) + upload(impl.BoundTriangles, data.Triangles);
+        impl.BoundBytes = deepshadow::UploadFloatTexels(window, impl.BoundNodes, data.Nodes) +
+          deepshadow::UploadFloatTexels(window, impl.BoundTriangles, data.Triangles);
         impl.BoundGPU.Nodes = impl.BoundNodes;
         impl.BoundGPU.Triangles = impl.BoundTriangles;
         impl.BoundGPU.LeafRoots = data.LeafRoots;
@@ -642,6 +634,11 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance
                                                  : deepshadow::DefaultSampleDistance(indexToWorld);
   impl.EffectiveStep = step;
+  if (!this->UpdateSurfaces(window, worldToIndex))
+  {
+    return;
+  }
+  const bool surfaces = impl.Surfaces && !impl.Surfaces->Empty();
   // What the table and the block map depend on: the functions themselves, not the property.
   vtkObject* colorFunction = property->GetColorChannels(0) == 1
     ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
@@ -743,6 +740,9 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   context.DataVersion = this->VolumeUploads;
   context.Bound = bounded ? &impl.BoundGPU : nullptr;
   context.BoundVersion = this->BoundBuilds;
+  context.Surfaces = surfaces ? &impl.SurfacesGPU : nullptr;
+  context.CastingSurfaces = surfaces ? impl.Surfaces.get() : nullptr;
+  context.SurfacesVersion = this->SurfaceUploads;
   context.Lights = lit ? adapter::MakeLights(renderer, &truncated) : std::vector<deepshadow::Light>();
   if (truncated)
   {
@@ -764,8 +764,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   const bool needDepth = HasOpaqueGeometry(renderer);
 
   // 5. Shader for the features in use.
-  std::set<std::string> features{ "VolumeSampling" };
+  std::set<std::string> features;
   std::map<std::string, deepshadow::ShaderFeature> runtime;
+  // Surfaces are met by the feelers of lookups only; light-space builds have their own.
+  context.AddVolumeFeatures(features, runtime, technique && technique->NeedsFeeler());
   if (lit)
   {
     features.insert("Lighting");
@@ -792,14 +794,6 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("Jitter");
     features.insert("Hash");
-  }
-  if (skipEmpty)
-  {
-    features.insert("EmptySpace");
-  }
-  if (bounded)
-  {
-    runtime["Bound"] = deepshadow::BoundShaderFeature(impl.Region->GetLeafCount());
   }
   if (needDepth)
   {
@@ -938,12 +932,55 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       (impl.ScalarMap.x == 255.0 ? 1 : impl.ScalarMap.x == 1.0 ? 4 : 2) +
     static_cast<long long>(impl.Table.Size) * 16 +
     (this->EmptySpaceSkipping ? static_cast<long long>(impl.Blocks.Min.size()) : 0) +
-    (bounded ? impl.BoundBytes : 0);
+    (bounded ? impl.BoundBytes : 0) + (surfaces ? impl.SurfaceBytes : 0);
   if (!this->ErrorThisFrame)
   {
     this->LastError.clear();
   }
   ++this->RenderCount;
+}
+
+void vtkDeepShadowVolumeMapper::SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces)
+{
+  if (surfaces != this->Impl->Surfaces)
+  {
+    this->Impl->Surfaces = std::move(surfaces);
+    this->Modified();
+  }
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Surfaces || impl.Surfaces->Empty())
+  {
+    impl.SurfacesBuiltFrom = nullptr;
+    return true;
+  }
+  if (impl.SurfacesBuiltFrom == impl.Surfaces.get() && impl.SurfacesWorldToIndex == worldToIndex)
+  {
+    return true;
+  }
+  const deepshadow::SurfaceSet::GPUData data = impl.Surfaces->PackForGPU(worldToIndex);
+  const std::string limit = deepshadow::FloatTexelsLimit(
+    std::max(data.Triangles.size(), data.Nodes.size()), data.Triangles.size() / 3, data.MaxDepth);
+  if (!limit.empty())
+  {
+    this->ReportError("the surfaces that cast shadows cannot be used: " + limit);
+    return false;
+  }
+  impl.SurfaceBytes = deepshadow::UploadFloatTexels(window, impl.SurfaceNodes, data.Nodes) +
+    deepshadow::UploadFloatTexels(window, impl.SurfaceTriangles, data.Triangles);
+  impl.SurfacesGPU.Nodes = impl.SurfaceNodes;
+  impl.SurfacesGPU.Triangles = impl.SurfaceTriangles;
+  impl.SurfacesGPU.Root = data.Root;
+  impl.SurfacesGPU.Transmission = data.Transmission;
+  impl.SurfacesGPU.Transmission.resize(deepshadow::SurfaceSet::MaxSurfaces, glm::vec4(1.0f));
+  impl.SurfacesBuiltFrom = impl.Surfaces.get();
+  impl.SurfacesWorldToIndex = worldToIndex;
+  ++this->SurfaceUploads;
+  this->LastPasses.emplace_back("surface-upload");
+  return true;
 }
 
 void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
@@ -964,4 +1001,5 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OccupancyBuilds: " << this->OccupancyBuilds << "\n";
   os << indent << "ShaderCompositions: " << this->ShaderCompositions << "\n";
   os << indent << "BoundBuilds: " << this->BoundBuilds << "\n";
+  os << indent << "SurfaceUploads: " << this->SurfaceUploads << "\n";
 }

@@ -33,11 +33,16 @@
 #include "vtkNew.h"                       // For vtkNew
 #include "vtkVolumeMapper.h"
 
-#include <memory> // For std::unique_ptr
+#include <glm/mat4x4.hpp> // For glm::dmat4
+#include <memory> // For std::unique_ptr, std::shared_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkDeepShadowTechnique;
+namespace deepshadow
+{
+class SurfaceSet;
+}
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 
@@ -154,6 +159,17 @@ public:
   const std::string& GetBoundExpression() const { return this->BoundExpression; }
   ///@}
 
+  /**
+   * Surfaces that cast shadows onto the volume (and onto whatever receives the volume's
+   * shadows), in world coordinates: vtkDeepShadowPass sets them from the scene's casting
+   * meshes; null (the default) for none. Every technique meets them on its light rays and
+   * feelers: an opaque surface stops the light, a translucent one lets through its
+   * transmission (deepshadow::SurfaceTransmission). The set is uploaded again only when it is
+   * replaced or the volume moves (counter SurfaceUploads, pass "surface-upload"), and shadow
+   * structures are rebuilt then only.
+   */
+  void SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces);
+
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
 
@@ -172,12 +188,13 @@ public:
   vtkGetMacro(OccupancyBuilds, int);      // empty-space block maps: data or opacity changed
   vtkGetMacro(ShaderCompositions, int);   // times the composed shader source changed
   vtkGetMacro(BoundBuilds, int);          // bound hierarchies built: a bound or placement changed
+  vtkGetMacro(SurfaceUploads, int);       // casting surfaces uploaded: the set or placement changed
   /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
   const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
   const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }
   /**
    * The GPU passes the last frame ran, in order: "volume-upload", "transfer-table",
-   * "occupancy", "bound-upload" (each only when what it depends on changed), the technique's passes
+   * "occupancy", "bound-upload", "surface-upload" (each only when what it depends on changed), the technique's passes
    * (vtkDeepShadowTechnique::GetLastPasses()) and "ray-cast".
    */
   const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
@@ -216,6 +233,7 @@ protected:
   int OccupancyBuilds = 0;
   int ShaderCompositions = 0;
   int BoundBuilds = 0;
+  int SurfaceUploads = 0;
   std::vector<std::string> ShaderFeatures;
   std::vector<std::string> LastPasses;
   std::string FragmentShaderSource;
@@ -231,6 +249,8 @@ private:
   void ReportError(const std::string& message);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
+  /** Uploads the casting surfaces in index space if they or the placement changed. */
+  bool UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

@@ -3,14 +3,17 @@
 // light. It casts the texel's ray (ShadowMapFace::TexelRay), marches its samples as
 // MarchTexelRay in Core/Shadows/LightSpace.cxx does, and hands them to the technique's
 // runtime feature Build, which defines visitSample(), visitSkipped() (a run of empty blocks,
-// at its last sample) and buildTexel() (which calls marchTexel(), once or more). A technique
+// at its last sample), visitSurface() (a casting surface's crossing, part Surface; feature
+// Surfaces) and buildTexel() (which calls marchTexel(), once or more). A technique
 // may defer a texel (deferTexel()) to a second dispatch over the deferred texels only
 // (u_deferredPass = 1), for work that few texels need: in lockstep hardware, a texel that
 // works longer inside the first dispatch keeps its neighbours waiting.
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::EmptySpace::Dec
+//DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
+//DeepShadow::Surfaces::Dec
 //DeepShadow::Feeler::Dec
 //DeepShadow::Hash::Dec
 uniform int u_size;
@@ -40,24 +43,27 @@ void deferTexel()
   u_deferred.texels[atomicAdd(u_deferred.count, 1u)] = uint(g_texel.x) | (uint(g_texel.y) << 16);
 }
 //DeepShadow::Build::Dec
+//DeepShadow::Surfaces::Visit
 
 void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
-  if (!(tEnter < tExit))
+  //DeepShadow::Surfaces::TexelInit
+  // The last sample inside the box (-1: the ray misses it): a skipped run is visited there
+  // at the latest.
+  int lastInBox = -1;
+  if (tEnter < tExit)
   {
-    return;
+    lastInBox = int(floor((tExit - tEnter) / u_feelerStep - 0.5));
+    while (lastInBox >= 0 && !(tEnter + (float(lastInBox) + 0.5) * u_feelerStep < tExit))
+    {
+      --lastInBox;
+    }
+    while (tEnter + (float(lastInBox + 1) + 0.5) * u_feelerStep < tExit)
+    {
+      ++lastInBox;
+    }
   }
   vec3 indexStep = indexDirection * u_feelerStep;
-  // The last sample inside the box: a skipped run is visited there at the latest.
-  int lastInBox = int(floor((tExit - tEnter) / u_feelerStep - 0.5));
-  while (lastInBox >= 0 && !(tEnter + (float(lastInBox) + 0.5) * u_feelerStep < tExit))
-  {
-    --lastInBox;
-  }
-  while (tEnter + (float(lastInBox + 1) + 0.5) * u_feelerStep < tExit)
-  {
-    ++lastInBox;
-  }
   //DeepShadow::Bound::TexelInit
   for (int j = 0; j <= lastInBox; ++j)
   {
@@ -70,18 +76,24 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     if (skip > 0)
     {
       int last = min(j + skip - 1, lastInBox);
-      if (!visitSkipped(last, tEnter + (float(last) + 0.5) * u_feelerStep))
+      float upTo = tEnter + (float(last) + 0.5) * u_feelerStep;
+      //DeepShadow::Surfaces::TexelUpTo
+      if (!visitSkipped(last, upTo))
       {
-        break;
+        return;
       }
       j = last;
       continue;
     }
+    float upTo = t;
+    //DeepShadow::Surfaces::TexelUpTo
     if (!visitSample(j, t, sampleScalar(sampleIndex)))
     {
-      break;
+      return;
     }
   }
+  float upTo = NoHit;
+  //DeepShadow::Surfaces::TexelUpTo
 }
 //DeepShadow::Build::Texel
 

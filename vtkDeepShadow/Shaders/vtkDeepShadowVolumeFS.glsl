@@ -34,7 +34,9 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Jitter::Dec
 //DeepShadow::OpaqueDepth::Dec
 //DeepShadow::EmptySpace::Dec
+//DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
+//DeepShadow::Surfaces::Dec
 //DeepShadow::Feeler::Dec
 //DeepShadow::Lighting::Dec
 

@@ -160,6 +160,26 @@ glm::dvec3 SurfaceSet::Color(const SurfaceHit& hit) const
     hit.U * mesh.Colors[static_cast<size_t>(tri.y)] + hit.V * mesh.Colors[static_cast<size_t>(tri.z)];
 }
 
+SurfaceSet::GPUData SurfaceSet::PackForGPU(const glm::dmat4& worldToSpace) const
+{
+  GPUData data;
+  std::vector<Triangle> triangles = this->Hierarchy.GetTriangles();
+  auto carry = [&](const glm::dvec3& p) { return glm::dvec3(worldToSpace * glm::dvec4(p, 1.0)); };
+  for (Triangle& t : triangles)
+  {
+    t = Triangle{ carry(t.V0), carry(t.V1), carry(t.V2), this->TriangleOf[static_cast<size_t>(t.Tag)].x };
+  }
+  const TriangleBVH hierarchy(std::move(triangles));
+  data.Root = hierarchy.AppendForGPU(data.Nodes, data.Triangles);
+  data.MaxDepth = hierarchy.GetDepth();
+  for (const SurfaceMesh& mesh : this->Meshes)
+  {
+    data.Transmission.emplace_back(glm::vec3(SurfaceTransmission(mesh.Material, true)),
+      static_cast<float>(SurfaceTransmission(mesh.Material, false).r));
+  }
+  return data;
+}
+
 void SurfaceSet::BoundingSphere(glm::dvec3& centre, double& radius) const
 {
   centre = glm::dvec3(0.0);

@@ -14,6 +14,7 @@
 #include "TriangleBVH.h"
 #include "vtkDeepShadowCoreModule.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -91,6 +92,22 @@ public:
   glm::dvec3 Normal(const SurfaceHit& hit) const;
   /** Colour at a hit (per-point colours interpolated, else the material's). */
   glm::dvec3 Color(const SurfaceHit& hit) const;
+
+  /** What the GPU walks (Features/Surfaces.glsl). */
+  struct GPUData
+  {
+    std::vector<glm::vec4> Nodes;     // TriangleBVH::AppendForGPU, triangles tagged with
+    std::vector<glm::vec4> Triangles; // their surface
+    int Root = -1;
+    int MaxDepth = 0;
+    /** Per surface: rgb its coloured transmission, a its grey one (SurfaceTransmission). */
+    std::vector<glm::vec4> Transmission;
+  };
+  /**
+   * The set's triangles carried into another space by `worldToSpace` (affine: a ray's
+   * parameter is the same in both spaces when its direction is carried along).
+   */
+  GPUData PackForGPU(const glm::dmat4& worldToSpace) const;
 
   /** A sphere around every point (radius 0 and centre 0 when empty). */
   void BoundingSphere(glm::dvec3& centre, double& radius) const;

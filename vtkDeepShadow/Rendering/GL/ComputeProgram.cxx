@@ -136,6 +136,14 @@ void ComputeProgram::Set(const char* name, const std::vector<glm::vec3>& values)
   }
 }
 
+void ComputeProgram::Set(const char* name, const std::vector<glm::vec4>& values)
+{
+  if (!values.empty())
+  {
+    glUniform4fv(this->Location(name), static_cast<GLsizei>(values.size()), glm::value_ptr(values.front()));
+  }
+}
+
 void ComputeProgram::Dispatch(const glm::ivec3& size, const glm::ivec3& local)
 {
   const glm::ivec3 groups = (size + local - 1) / local;

@@ -43,6 +43,7 @@ public:
   void Set(const char* name, const std::vector<int>& values);
   void Set(const char* name, const std::vector<float>& values);
   void Set(const char* name, const std::vector<glm::vec3>& values);
+  void Set(const char* name, const std::vector<glm::vec4>& values);
 
   /** Dispatches enough groups of `local` invocations to cover `size`, then a barrier. */
   void Dispatch(const glm::ivec3& size, const glm::ivec3& local);

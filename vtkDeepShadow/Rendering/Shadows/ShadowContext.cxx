@@ -85,6 +85,17 @@ void UniformSink::Set(const char* name, const std::vector<glm::vec3>& values)
                : this->Compute->Set(name, values);
 }
 
+void UniformSink::Set(const char* name, const std::vector<glm::vec4>& values)
+{
+  if (values.empty())
+  {
+    return;
+  }
+  this->Raster ? void(this->Raster->SetUniform4fv(name, static_cast<int>(values.size()),
+                   reinterpret_cast<const float(*)[4]>(glm::value_ptr(values.front()))))
+               : this->Compute->Set(name, values);
+}
+
 std::vector<double> ShadowContext::TransferKey(bool colors) const
 {
   std::vector<double> key{ this->Transfer.OpacityUnitDistance };
@@ -103,6 +114,26 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
     add(this->Transfer.Blue);
   }
   return key;
+}
+
+void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
+  std::map<std::string, ShaderFeature>& runtime, bool surfaces) const
+{
+  enabled.insert("VolumeSampling");
+  if (this->Occupancy)
+  {
+    enabled.insert("EmptySpace");
+  }
+  if (this->Bound)
+  {
+    enabled.insert("TriangleHierarchy");
+    runtime["Bound"] = BoundShaderFeature(static_cast<int>(this->Bound->LeafRoots.size()));
+  }
+  if (surfaces && this->Surfaces)
+  {
+    enabled.insert("TriangleHierarchy");
+    enabled.insert("Surfaces");
+  }
 }
 
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
@@ -124,6 +155,13 @@ void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
     sink.Set("u_boundLeafRoot", this->Bound->LeafRoots);
     sink.Set("u_boundTruth", this->Bound->TruthTable);
   }
+  if (this->Surfaces)
+  {
+    sink.Set("u_surfaceNodes", this->Surfaces->Nodes->GetTextureUnit());
+    sink.Set("u_surfaceTriangles", this->Surfaces->Triangles->GetTextureUnit());
+    sink.Set("u_surfaceRoot", this->Surfaces->Root);
+    sink.Set("u_surfaceTransmission", this->Surfaces->Transmission);
+  }
 }
 
 void ShadowContext::ActivateVolumeTextures() const
@@ -138,6 +176,11 @@ void ShadowContext::ActivateVolumeTextures() const
     this->Bound->Nodes->Activate();
     this->Bound->Triangles->Activate();
   }
+  if (this->Surfaces)
+  {
+    this->Surfaces->Nodes->Activate();
+    this->Surfaces->Triangles->Activate();
+  }
 }
 
 void ShadowContext::DeactivateVolumeTextures() const
@@ -151,6 +194,11 @@ void ShadowContext::DeactivateVolumeTextures() const
   {
     this->Bound->Nodes->Deactivate();
     this->Bound->Triangles->Deactivate();
+  }
+  if (this->Surfaces)
+  {
+    this->Surfaces->Nodes->Deactivate();
+    this->Surfaces->Triangles->Deactivate();
   }
 }
 

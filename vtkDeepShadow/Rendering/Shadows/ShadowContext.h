@@ -4,6 +4,7 @@
 #define vtkDeepShadowShadowContext_h
 
 #include "Light.h"
+#include "ShaderComposer.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
 
@@ -13,6 +14,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <map>
+#include <set>
+#include <string>
 #include <vector>
 
 class vtkOpenGLRenderWindow;
@@ -22,6 +26,7 @@ class vtkTextureObject;
 namespace deepshadow
 {
 class ComputeProgram;
+class SurfaceSet;
 
 /** Sets uniforms by name on either kind of program. */
 class UniformSink
@@ -46,10 +51,23 @@ public:
   void Set(const char* name, const std::vector<int>& values);
   void Set(const char* name, const std::vector<float>& values);
   void Set(const char* name, const std::vector<glm::vec3>& values);
+  void Set(const char* name, const std::vector<glm::vec4>& values);
 
 private:
   vtkShaderProgram* Raster = nullptr;
   ComputeProgram* Compute = nullptr;
+};
+
+/**
+ * Surfaces that cast shadows as the GPU finds them (Features/Surfaces.glsl): one hierarchy
+ * in the volume's index space, and each surface's transmission (rgb coloured, a grey).
+ */
+struct SurfaceTextures
+{
+  vtkTextureObject* Nodes = nullptr;
+  vtkTextureObject* Triangles = nullptr;
+  int Root = -1;
+  std::vector<glm::vec4> Transmission;
 };
 
 /** A volume's polyhedral bound as the GPU walks it (Features/Bound.glsl). */
@@ -79,10 +97,13 @@ struct ShadowContext
   glm::dmat4 WorldToIndex{ 1.0 };
   double ViewStep = 1.0;
   const BoundTextures* Bound = nullptr; // null: the volume fills its box
+  const SurfaceTextures* Surfaces = nullptr; // null: only the volume casts shadows
+  const SurfaceSet* CastingSurfaces = nullptr; // the same surfaces in world space (CPU side)
 
   // What shadow structures depend on, besides lights and technique parameters.
   int DataVersion = 0;            // increments with every volume upload
   int BoundVersion = 0;           // increments with every change of the bound
+  int SurfacesVersion = 0;        // increments with every change of the casting surfaces
   TransferFunction Transfer;      // the volume's; a technique may cast with its own
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
@@ -90,7 +111,14 @@ struct ShadowContext
   /** The content of Transfer (opacity, and colours if asked), to compare builds by. */
   std::vector<double> TransferKey(bool colors) const;
 
-  /** Uniforms of the VolumeSampling, EmptySpace and Bound features. */
+  /**
+   * The features that read the volume as this context holds it: VolumeSampling, EmptySpace
+   * (if blocks are empty), Bound (runtime) and TriangleHierarchy (if bounded), and Surfaces
+   * when `surfaces` and surfaces cast shadows.
+   */
+  void AddVolumeFeatures(std::set<std::string>& enabled,
+    std::map<std::string, ShaderFeature>& runtime, bool surfaces) const;
+  /** Uniforms of the VolumeSampling, EmptySpace, Bound and Surfaces features. */
   void SetVolumeUniforms(UniformSink& sink) const;
   /** Binds (releases) the textures those features read. */
   void ActivateVolumeTextures() const;

@@ -93,7 +93,7 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
   }
   glm::dvec3 centre;
   double radius = 0.0;
-  deepshadow::VolumeBoundingSphere(context.IndexToWorld, context.Dims, centre, radius);
+  deepshadow::CasterBoundingSphere(context.IndexToWorld, context.Dims, context.CastingSurfaces, centre, radius);
   maps.Faces.resize(static_cast<size_t>(slots.Count()));
   int facesPerLight = 1;
   for (int slot = 0; slot < slots.Count(); ++slot)

@@ -390,6 +390,10 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
   sink.Set("u_scalarRange", glm::vec2(context.Range));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);
+  if (context.Surfaces)
+  {
+    sink.Set("u_surfaceThreshold", static_cast<float>(this->Threshold));
+  }
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
   // shadows are cast by another transfer function than the one the blocks were found for.
   const bool opaqueOnScalar =
@@ -401,19 +405,12 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
   const std::string& shaderTemplate, const deepshadow::ShadowContext& context,
   const std::string& runtimeName, const std::string& runtimeSource)
 {
-  std::set<std::string> features{ "VolumeSampling", "Feeler" };
-  if (context.Occupancy)
-  {
-    features.insert("EmptySpace");
-  }
+  std::set<std::string> features{ "Feeler" };
+  std::map<std::string, deepshadow::ShaderFeature> runtime;
+  context.AddVolumeFeatures(features, runtime, true);
   for (const std::string& feature : this->GetBuildFeatures())
   {
     features.insert(feature);
-  }
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  if (context.Bound)
-  {
-    runtime["Bound"] = deepshadow::BoundShaderFeature(static_cast<int>(context.Bound->LeafRoots.size()));
   }
   if (!runtimeName.empty())
   {

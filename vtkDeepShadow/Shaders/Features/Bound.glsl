@@ -8,103 +8,19 @@
 //@Dec
 // BOUND_LEAVES, the number of leaves, is defined by the composer (BoundShaderFeature): loops
 // over the leaves have a constant count, so the walker's arrays can stay in registers.
-const int BoundTextureWidth = 4096;
-const float BoundNever = 3.0e38;
-uniform sampler2D u_boundNodes;     // 2 texels per node: (min, first), (max, count)
-uniform sampler2D u_boundTriangles; // 3 texels per triangle: its vertices
+const float BoundNever = HierarchyNever;
+uniform sampler2D u_boundNodes;     // TriangleBVH::AppendForGPU's nodes of every leaf
+uniform sampler2D u_boundTriangles; // ... and their triangles
 uniform int u_boundLeafRoot[BOUND_LEAVES]; // -1: an empty leaf
 uniform int u_boundTruth[8];        // bit s: the region holds the points whose leaf states are s
 
-vec4 boundFetch(sampler2D data, int i)
-{
-  return texelFetch(data, ivec2(i % BoundTextureWidth, i / BoundTextureWidth), 0);
-}
-
-// deepshadow::IntersectTriangle (Möller-Trumbore).
-bool boundTriangle(vec3 origin, vec3 direction, int triangle, out float t, out bool entering)
-{
-  vec3 v0 = boundFetch(u_boundTriangles, 3 * triangle).xyz;
-  vec3 e1 = boundFetch(u_boundTriangles, 3 * triangle + 1).xyz - v0;
-  vec3 e2 = boundFetch(u_boundTriangles, 3 * triangle + 2).xyz - v0;
-  vec3 p = cross(direction, e2);
-  float det = dot(e1, p);
-  t = 0.0;
-  entering = det > 0.0;
-  if (det == 0.0)
-  {
-    return false;
-  }
-  float inverse = 1.0 / det;
-  vec3 s = origin - v0;
-  float u = dot(s, p) * inverse;
-  if (u < 0.0 || u > 1.0)
-  {
-    return false;
-  }
-  vec3 q = cross(s, e1);
-  float v = dot(direction, q) * inverse;
-  if (v < 0.0 || u + v > 1.0)
-  {
-    return false;
-  }
-  t = dot(e2, q) * inverse;
-  return true;
-}
-
-// deepshadow::TriangleBVH::NextHit: the nearest crossing of leaf `leaf` after tAfter
-// (BoundNever when none), and whether the ray enters the solid there.
+// The nearest crossing of leaf `leaf` after tAfter (BoundNever when none), and whether the ray
+// enters the solid there.
 float boundNextHit(int leaf, vec3 origin, vec3 direction, float tAfter, out bool entering)
 {
-  float best = BoundNever;
-  entering = false;
-  int root = u_boundLeafRoot[leaf];
-  if (root < 0)
-  {
-    return best;
-  }
-  vec3 inverse = 1.0 / direction;
-  bvec3 parallel = equal(direction, vec3(0.0));
-  int stack[32];
-  int top = 0;
-  stack[top++] = root;
-  while (top > 0)
-  {
-    int node = stack[--top];
-    vec4 lo = boundFetch(u_boundNodes, 2 * node);
-    vec4 hi = boundFetch(u_boundNodes, 2 * node + 1);
-    vec3 tA = (lo.xyz - origin) * inverse;
-    vec3 tB = (hi.xyz - origin) * inverse;
-    // An axis the ray runs parallel to: no limit inside the slab, no box outside it (mix()
-    // selects, so the NaN of 0 * inf does not leak).
-    bvec3 inSlab = bvec3(vec3(greaterThanEqual(origin, lo.xyz)) * vec3(lessThanEqual(origin, hi.xyz)));
-    vec3 tLow = mix(min(tA, tB), mix(vec3(BoundNever), vec3(-BoundNever), inSlab), parallel);
-    vec3 tHigh = mix(max(tA, tB), mix(vec3(-BoundNever), vec3(BoundNever), inSlab), parallel);
-    float tNear = max(max(tLow.x, tLow.y), tLow.z);
-    float tFar = min(min(tHigh.x, tHigh.y), tHigh.z);
-    if (!(tNear <= tFar) || tFar <= tAfter || tNear >= best)
-    {
-      continue;
-    }
-    int first = int(lo.w);
-    int count = int(hi.w);
-    if (count > 0)
-    {
-      for (int i = first; i < first + count; ++i)
-      {
-        float t;
-        bool enters;
-        if (boundTriangle(origin, direction, i, t, enters) && t > tAfter && t < best)
-        {
-          best = t;
-          entering = enters;
-        }
-      }
-      continue;
-    }
-    stack[top++] = first + 1;
-    stack[top++] = first;
-  }
-  return best;
+  int triangle;
+  return hierarchyNextHit(u_boundNodes, u_boundTriangles, u_boundLeafRoot[leaf], origin, direction,
+    tAfter, entering, triangle);
 }
 
 // deepshadow::BoundRegion::Walker. The region's state and where it may next change are kept,

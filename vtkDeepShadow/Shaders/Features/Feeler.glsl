@@ -58,14 +58,15 @@ bool feelerAbove(float scalar)
   return feelerAlpha(scalar) > u_feelerThreshold;
 }
 
-// From voxel index `start` along index-space direction `indexDirection` (per world unit) up
-// to world distance tEnd. `opaque`: binary visibility; else the transmittance.
-vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
+// From voxel index `start` along index-space direction `indexDirection` (per world unit), the
+// samples at (j + 0.5) * u_feelerStep in [tStart, tEnd) (world distances). `opaque`: binary
+// visibility; else the transmittance.
+vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd, bool opaque)
 {
   FeelerTransmittance transmittance = FeelerTransmittance(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
   //DeepShadow::Bound::FeelerInit
-  for (int j = 0;; ++j)
+  for (int j = tStart > 0.0 ? int(ceil(tStart / u_feelerStep - 0.5)) : 0;; ++j)
   {
     float t = (float(j) + 0.5) * u_feelerStep;
     if (!(t < tEnd))
@@ -93,12 +94,16 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tEnd, bool opaque)
   return vec3(transmittance);
 }
 
-// Visibility of a light from world point `position`: the feeler from there towards it, up to
-// the volume's box or the light itself.
+// Visibility of a light from world point `position`: the feeler from there towards it through
+// the volume's box (from its entry when the point is outside), up to the light itself, times
+// what the casting surfaces in between let through (feature Surfaces).
 vec3 feelerTowardsLight(vec3 position, vec3 toLight, float lightDistance, bool opaque)
 {
   vec3 start = (u_worldToIndex * vec4(position, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(toLight, 0.0)).xyz;
-  float tEnd = min(boxExit(start, indexDirection), lightDistance);
-  return feelerVisibility(start, indexDirection, tEnd, opaque);
+  FeelerTransmittance surfaces = FeelerTransmittance(1.0);
+  //DeepShadow::Surfaces::Feeler
+  vec2 box = boxInterval(start, indexDirection);
+  float tEnd = min(box.y, lightDistance);
+  return vec3(surfaces) * feelerVisibility(start, indexDirection, box.x, tEnd, opaque);
 }

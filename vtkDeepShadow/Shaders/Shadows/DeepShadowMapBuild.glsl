@@ -152,6 +152,27 @@ bool visitSkipped(int j, float t)
   startPoint(t);
   return addPoint(t + 0.5 * u_feelerStep);
 }
+//@Surface
+// A step: the value before and after at one depth; the next sample starts its interval anew.
+bool visitSurface(float t, int surface)
+{
+  if (!g_started)
+  {
+    g_started = true;
+    addBounded(t, g_transmittance - g_bound, g_transmittance + g_bound, g_transmittance);
+  }
+  else
+  {
+    addPoint(t);
+  }
+#ifdef FEELER_COLORED
+  g_transmittance *= u_surfaceTransmission[surface].rgb;
+#else
+  g_transmittance *= u_surfaceTransmission[surface].a;
+#endif
+  g_started = false;
+  return addPoint(t);
+}
 //@Texel
 void compressTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit, float bound)
 {
@@ -161,10 +182,7 @@ void compressTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tE
   g_started = false;
   g_transmittance = Value(1.0);
   g_lastStored = Value(1.0);
-  if (tEnter < tExit)
-  {
-    marchTexel(indexOrigin, indexDirection, tEnter, tExit);
-  }
+  marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   // A level last segment needs no end node.
   if (g_hasSegment && !(ordered(g_slopeLow, Value(0.0)) && ordered(Value(0.0), g_slopeHigh)))
   {

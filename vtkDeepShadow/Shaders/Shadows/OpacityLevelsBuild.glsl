@@ -32,6 +32,9 @@ void levelsPoint(float depth)
   g_previousOpacity = opacity;
 }
 
+// A sample's interval starts with a point (the first of the ray, or the first after a
+// surface's step), as deepshadow::SampleVisibility does.
+bool g_afterSurface;
 void levelsStart(float t)
 {
   if (!g_started)
@@ -40,6 +43,11 @@ void levelsStart(float t)
     g_previousDepth = t - 0.5 * u_feelerStep;
     g_maxDepth = g_previousDepth;
   }
+  else if (g_afterSurface)
+  {
+    levelsPoint(t - 0.5 * u_feelerStep);
+  }
+  g_afterSurface = false;
 }
 
 bool visitSample(int j, float t, float scalar)
@@ -56,18 +64,35 @@ bool visitSkipped(int j, float t)
   levelsPoint(t + 0.5 * u_feelerStep);
   return true;
 }
+//@Surface
+// A step: points before and after at one depth.
+bool visitSurface(float t, int surface)
+{
+  if (!g_started)
+  {
+    g_started = true;
+    g_previousDepth = t;
+    g_maxDepth = t;
+  }
+  else
+  {
+    levelsPoint(t);
+  }
+  g_transmittance *= u_surfaceTransmission[surface].a;
+  levelsPoint(t);
+  g_afterSurface = true;
+  return g_transmittance > 1.0 / 512.0;
+}
 //@Texel
 void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
   g_started = false;
+  g_afterSurface = false;
   g_transmittance = 1.0;
   g_levelDepth = vec3(NoHit);
   g_maxOpacity = 0.0;
   g_previousOpacity = 0.0;
-  if (tEnter < tExit)
-  {
-    marchTexel(indexOrigin, indexDirection, tEnter, tExit);
-  }
+  marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   if (g_maxOpacity > 0.0)
   {
     g_levelDepth = mix(g_levelDepth, vec3(g_maxDepth), equal(g_levelDepth, vec3(NoHit)));

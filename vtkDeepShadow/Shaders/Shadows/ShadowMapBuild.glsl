@@ -18,13 +18,20 @@ bool visitSkipped(int j, float t)
 {
   return true;
 }
+//@Surface
+bool visitSurface(float t, int surface)
+{
+  if (surfaceOccludes(surface))
+  {
+    g_depth = t;
+    return false;
+  }
+  return true;
+}
 //@Texel
 void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
   g_depth = NoHit;
-  if (tEnter < tExit)
-  {
-    marchTexel(indexOrigin, indexDirection, tEnter, tExit);
-  }
+  marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   imageStore(u_output, ivec3(g_texel, u_layer), vec4(g_depth));
 }
