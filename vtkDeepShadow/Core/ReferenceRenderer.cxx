@@ -52,6 +52,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Sampling = volume.Sampling;
   caster.Empty = prepared.Empty.get();
   caster.Bound = volume.Bound.get();
+  caster.Surfaces = scene.CastingSurfaces.get();
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
@@ -69,6 +70,14 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
     {
       prepared.Shadows[l] =
         MakeLightShadow(volume.Shadows, caster, scene.Lights[l], settings.SampleDistance, threads);
+      if (volume.Shadows.Cached && scene.Surfaces && !scene.Surfaces->Empty())
+      {
+        ShadowParameters direct = volume.Shadows;
+        direct.Cached = false;
+        prepared.DirectShadows.resize(scene.Lights.size());
+        prepared.DirectShadows[l] =
+          MakeLightShadow(direct, caster, scene.Lights[l], settings.SampleDistance, threads);
+      }
     }
   }
   return prepared;
@@ -76,7 +85,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
 
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-  const MarchSettings& settings, glm::dvec4* shadowTerm)
+  const MarchSettings& settings, glm::dvec4* shadowTerm, double tFrom)
 {
   const TransferTable* table = prepared.Table.get();
   const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
@@ -111,6 +120,10 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (!(t < t1) || accumulated.a > settings.TerminationOpacity)
     {
       break;
+    }
+    if (t < tFrom)
+    {
+      continue;
     }
     if (bound)
     {
@@ -199,6 +212,31 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   return accumulated;
 }
 
+glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
+  const SurfaceHit& hit, const Ray& ray, const std::vector<std::unique_ptr<LightShadow>>* shadows,
+  double receiverBias)
+{
+  const SurfaceMaterial& material = surfaces.GetSurface(hit.Surface).Material;
+  const glm::dvec3 color = surfaces.Color(hit);
+  const glm::dvec3 normal = surfaces.Normal(hit);
+  const glm::dvec3 position = ray.Origin + hit.T * ray.Direction;
+  glm::dvec3 lit = material.Shading.Ambient * color * scene.AmbientLight;
+  for (size_t l = 0; l < scene.Lights.size(); ++l)
+  {
+    const LightSample sample = scene.Lights[l].At(position);
+    glm::dvec3 contribution =
+      PhongLight(color, normal, -ray.Direction, sample, material.Shading, scene.TwoSidedLighting);
+    if (shadows && (*shadows)[l] && contribution != glm::dvec3(0.0))
+    {
+      const double offset = ReceiverOffset(receiverBias, normal, sample.ToLight);
+      const glm::dvec3 visibility = (*shadows)[l]->Visibility(position + offset * sample.ToLight);
+      contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+    }
+    lit += contribution;
+  }
+  return glm::clamp(lit, 0.0, 1.0);
+}
+
 Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
   Image* shadowTerm)
 {
@@ -211,9 +249,23 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
   }
 
   std::vector<PreparedVolume> prepared;
+  const PreparedVolume* shadowSource = nullptr; // what mesh receivers look up
+  double receiverBias = scene.ReceiverBias;
   for (const VolumeInstance& volume : scene.Volumes)
   {
     prepared.push_back(Prepare(scene, volume, settings, threads));
+  }
+  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  {
+    if (scene.Volumes[v].Shadows.Kind != ShadowKind::None)
+    {
+      shadowSource = &prepared[v];
+      if (!(receiverBias > 0.0))
+      {
+        receiverBias = DefaultReceiverBias(scene.Volumes[v].Shadows.StepFactor * settings.SampleDistance);
+      }
+      break;
+    }
   }
 
   ParallelFor(
@@ -227,13 +279,59 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           : UnjitteredOffset;
         glm::dvec3 pixel = scene.Background;
         glm::dvec3 termPixel = scene.Background;
-        for (size_t v = 0; v < scene.Volumes.size(); ++v)
+        if (scene.Surfaces && !scene.Surfaces->Empty())
         {
-          glm::dvec4 term(0.0);
-          const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray,
-            std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
-          pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
-          termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
+          // Mesh crossings in depth order, up to the first opaque one; the volumes' samples
+          // between them.
+          std::vector<SurfaceHit> hits;
+          double tEnd = std::numeric_limits<double>::infinity();
+          for (SurfaceHit hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0); hit.Found;
+               hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
+          {
+            hits.push_back(hit);
+            if (scene.Surfaces->GetSurface(hit.Surface).Material.Opacity >= 1.0)
+            {
+              tEnd = hit.T;
+              break;
+            }
+          }
+          glm::dvec4 front(0.0); // premultiplied, front to back
+          double from = -1.0;
+          for (size_t h = 0; h <= hits.size(); ++h)
+          {
+            const double to = h < hits.size() ? hits[h].T : tEnd;
+            for (size_t v = 0; v < scene.Volumes.size(); ++v)
+            {
+              const glm::dvec4 rgba =
+                MarchRay(scene, scene.Volumes[v], prepared[v], ray, to, offset, settings, nullptr, from);
+              CompositeFrontToBack(front, rgba.a > 0.0 ? glm::dvec3(rgba) / rgba.a : glm::dvec3(0.0), rgba.a);
+            }
+            if (h < hits.size())
+            {
+              const SurfaceMaterial& material = scene.Surfaces->GetSurface(hits[h].Surface).Material;
+              const bool receives = scene.Surfaces->GetSurface(hits[h].Surface).ReceivesShadows;
+              const glm::dvec3 color = ShadeSurface(scene, *scene.Surfaces, hits[h], ray,
+                receives && shadowSource ? (shadowSource->DirectShadows.empty() ? &shadowSource->Shadows
+                                                                                : &shadowSource->DirectShadows)
+                                         : nullptr,
+                receiverBias);
+              CompositeFrontToBack(front, color, std::clamp(material.Opacity, 0.0, 1.0));
+            }
+            from = to;
+          }
+          pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
+          termPixel = pixel;
+        }
+        else
+        {
+          for (size_t v = 0; v < scene.Volumes.size(); ++v)
+          {
+            glm::dvec4 term(0.0);
+            const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray,
+              std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
+            pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+            termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
+          }
         }
         image.Set(x, y, pixel);
         if (shadowTerm)

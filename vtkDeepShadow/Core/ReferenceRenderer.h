@@ -13,6 +13,11 @@
 // part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)), per colour
 // channel (coloured techniques give each channel its own V); ambient never is.
 //
+// Hybrid scenes: along a view ray, the meshes' crossings and the volumes' samples are composited
+// in depth order (an opaque mesh ends the ray); a mesh point is Phong-lit with its interpolated
+// normal and colour, each light scaled by its visibility from the first shadowing volume's
+// technique, looked up deepshadow::ReceiverOffset towards the light.
+//
 // With the default MarchSettings it is the exact model (transfer functions evaluated exactly,
 // no early termination). `GpuTwin()` settings reproduce what the GPU computes instead (table
 // lookups, early termination), so GPU and CPU can be compared formula by formula.
@@ -25,6 +30,7 @@
 #include "Light.h"
 #include "OpticalModel.h"
 #include "Shadows.h"
+#include "SurfaceSet.h"
 #include "EmptySpace.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
@@ -66,6 +72,14 @@ struct Scene
   glm::dvec3 AmbientLight{ 1.0 }; // vtkRenderer::GetAmbient()
   bool TwoSidedLighting = true;
   std::vector<VolumeInstance> Volumes;
+  /**
+   * Hybrid scenes: the meshes drawn (lit; shadowed by the first shadowing volume's technique
+   * when they receive), and the meshes that cast shadows into every volume's technique.
+   */
+  std::shared_ptr<const SurfaceSet> Surfaces;
+  std::shared_ptr<const SurfaceSet> CastingSurfaces;
+  /** World distance of a mesh receiver's shadow lookup towards the light (0: the default). */
+  double ReceiverBias = 0.0;
 };
 
 /**
@@ -118,6 +132,9 @@ public:
     std::unique_ptr<EmptySpaceMap> Empty;       // blocks rays may skip (exact)
     std::unique_ptr<EmptySpaceMap> ShadowEmpty; // the same for a separate shadow transfer
     std::vector<std::unique_ptr<LightShadow>> Shadows; // per scene light; null: no shadow
+    /** What mesh receivers look up: Shadows, or uncached when they are cached (a cache's grid
+     * covers the volume's box only). Empty: the same as Shadows. */
+    std::vector<std::unique_ptr<LightShadow>> DirectShadows;
   };
   static PreparedVolume Prepare(const Scene& scene, const VolumeInstance& volume,
     const MarchSettings& settings, int threads = 0);
@@ -125,11 +142,20 @@ public:
   /**
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
    * first sample `offset` steps (in [0, 1)) past the entry; with `shadowTerm`, also the
-   * premultiplied shadow term along the same ray.
+   * premultiplied shadow term along the same ray. Samples before `tFrom` are left out (the
+   * parts of a ray between mesh crossings).
    */
   static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume,
     const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-    const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr);
+    const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr, double tFrom = -1.0);
+
+  /**
+   * Lit colour of a mesh point (`shadows`: the shadowing volume's, per light, or null), as
+   * vtkDeepShadowPolyDataMapper's shader computes it.
+   */
+  static glm::dvec3 ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
+    const SurfaceHit& hit, const Ray& ray, const std::vector<std::unique_ptr<LightShadow>>* shadows,
+    double receiverBias);
 };
 
 }

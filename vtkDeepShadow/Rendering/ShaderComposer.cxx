@@ -9,6 +9,8 @@
 #include "vtkDeepShadowFeatureIsotropic.h"
 #include "vtkDeepShadowFeatureJitter.h"
 #include "vtkDeepShadowFeatureLighting.h"
+#include "vtkDeepShadowFeatureMeshNormal.h"
+#include "vtkDeepShadowFeaturePhong.h"
 #include "vtkDeepShadowFeatureSurfaces.h"
 #include "vtkDeepShadowFeatureTriangleHierarchy.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
@@ -61,7 +63,9 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("Isotropic", vtkDeepShadowFeatureIsotropic);
     add("Jitter", vtkDeepShadowFeatureJitter);
     add("Lighting", vtkDeepShadowFeatureLighting);
+    add("MeshNormal", vtkDeepShadowFeatureMeshNormal);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
+    add("Phong", vtkDeepShadowFeaturePhong);
     add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
     add("Surfaces", vtkDeepShadowFeatureSurfaces);
     add("TriangleHierarchy", vtkDeepShadowFeatureTriangleHierarchy);

@@ -5,7 +5,10 @@
 #include "Shadows.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
 
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
@@ -17,6 +20,7 @@
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
+#include <stdexcept>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -136,6 +140,46 @@ bool vtkDeepShadowReferenceRenderer::Render(
         settings.Output = deepshadow::RenderOutput::ShadowTerm;
       }
     }
+  }
+  // Meshes of vtkDeepShadowPolyDataMapper: drawn, and cast when they do (as vtkDeepShadowPass).
+  std::vector<deepshadow::SurfaceMesh> drawn, casting;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    auto* mapper = vtkDeepShadowPolyDataMapper::SafeDownCast(actor->GetMapper());
+    deepshadow::SurfaceMesh mesh;
+    std::string error;
+    if (!actor->GetVisibility() || !mapper || !mapper->GetSurfaceMesh(actor, mesh, error))
+    {
+      continue;
+    }
+    if (mapper->GetShadowBias() > 0.0 && !(scene.ReceiverBias > 0.0))
+    {
+      scene.ReceiverBias = mapper->GetShadowBias();
+    }
+    if (mapper->GetCastShadows())
+    {
+      casting.push_back(mesh);
+    }
+    drawn.push_back(std::move(mesh));
+  }
+  try
+  {
+    if (!drawn.empty())
+    {
+      scene.Surfaces = std::make_shared<const deepshadow::SurfaceSet>(std::move(drawn));
+    }
+    if (!casting.empty())
+    {
+      scene.CastingSurfaces = std::make_shared<const deepshadow::SurfaceSet>(std::move(casting));
+    }
+  }
+  catch (const std::invalid_argument& e)
+  {
+    this->LastError = e.what();
+    vtkErrorMacro(<< this->LastError);
+    return false;
   }
   if (scene.Volumes.empty())
   {

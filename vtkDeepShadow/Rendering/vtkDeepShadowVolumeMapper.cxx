@@ -5,6 +5,7 @@
 #include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
 #include "GL/FloatTexels.h"
+#include "LightingUniforms.h"
 #include "SurfaceSet.h"
 #include "ShaderComposer.h"
 #include "TransferFunction.h"
@@ -43,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace adapter = deepshadow::adapter;
@@ -110,45 +112,6 @@ int ReadFramebufferDepthFormat()
   }
   return depthBits <= 16 ? vtkTextureObject::Fixed16
                          : depthBits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32;
-}
-
-// The Lighting (and Gradient) features' uniforms: lights in world space, material, ambient.
-void SetLightingUniforms(deepshadow::UniformSink& sink, const std::vector<deepshadow::Light>& lights,
-  vtkRenderer* renderer, vtkVolumeProperty* property, const glm::dmat4& worldToIndex)
-{
-  std::vector<int> positional;
-  std::vector<glm::vec3> positions, directions, diffuse, specular, attenuation;
-  std::vector<float> coneCos, exponent;
-  for (const deepshadow::Light& light : lights)
-  {
-    // Directional: towards the light. Positional: the spot axis, from the light.
-    directions.emplace_back(light.Positional ? glm::normalize(light.FocalPoint - light.Position)
-                                             : glm::normalize(light.Position - light.FocalPoint));
-    positions.emplace_back(light.Position);
-    diffuse.emplace_back(light.Diffuse);
-    specular.emplace_back(light.Specular);
-    attenuation.emplace_back(light.Attenuation);
-    positional.push_back(light.Positional ? 1 : 0);
-    coneCos.push_back(static_cast<float>(light.ConeCosine())); // < -1: no cone
-    exponent.push_back(static_cast<float>(light.Exponent));
-  }
-  sink.Set("u_lightCount", static_cast<int>(lights.size()));
-  sink.Set("u_lightPositional", positional);
-  sink.Set("u_lightPosition", positions);
-  sink.Set("u_lightDirection", directions);
-  sink.Set("u_lightDiffuse", diffuse);
-  sink.Set("u_lightSpecular", specular);
-  sink.Set("u_lightAttenuation", attenuation);
-  sink.Set("u_lightConeCos", coneCos);
-  sink.Set("u_lightExponent", exponent);
-  double ambient[3];
-  renderer->GetAmbient(ambient);
-  sink.Set("u_ambientLight", glm::vec3(ambient[0], ambient[1], ambient[2]));
-  const deepshadow::Material material = adapter::MakeMaterial(property);
-  sink.Set("u_material",
-    glm::vec4(material.Ambient, material.Diffuse, material.Specular, material.SpecularPower));
-  sink.Set("u_twoSidedLighting", renderer->GetTwoSidedLighting() ? 1 : 0);
-  sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(worldToIndex))));
 }
 
 vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
@@ -228,6 +191,11 @@ public:
   long long SurfaceBytes = 0;
 
   std::string LastSource;
+
+  // vtkDeepShadowPass's early call: prepare only, and what mesh receivers read then.
+  bool PrepareOnly = false;
+  bool KeepPasses = false;
+  std::optional<deepshadow::ShadowContext> Receivers;
 
   // Copies the depth of the opaque geometry in the viewport into Depth.
   void CaptureDepth(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height)
@@ -514,10 +482,27 @@ void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   }
 }
 
+const deepshadow::ShadowContext* vtkDeepShadowVolumeMapper::PrepareShadows(
+  vtkRenderer* renderer, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  impl.Receivers.reset();
+  impl.PrepareOnly = true;
+  this->Render(renderer, volume);
+  impl.PrepareOnly = false;
+  // The frame's Render() keeps what this found to do in LastPasses.
+  impl.KeepPasses = true;
+  return impl.Receivers ? &impl.Receivers.value() : nullptr;
+}
+
 void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   this->ErrorThisFrame = false;
-  this->LastPasses.clear();
+  if (!this->Impl->KeepPasses)
+  {
+    this->LastPasses.clear();
+  }
+  this->Impl->KeepPasses = false;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
   {
@@ -761,6 +746,15 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       technique = nullptr;
     }
   }
+  if (impl.PrepareOnly)
+  {
+    // vtkDeepShadowPass: receivers drawn before the volume read the structures built now.
+    if (technique)
+    {
+      impl.Receivers = context;
+    }
+    return;
+  }
   const bool needDepth = HasOpaqueGeometry(renderer);
 
   // 5. Shader for the features in use.
@@ -772,7 +766,14 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("Lighting");
     // The shadow term needs no normal.
-    features.insert(shade && !shadowTerm ? "Gradient" : "Isotropic");
+    if (shade && !shadowTerm)
+    {
+      features.insert({ "Gradient", "Phong" });
+    }
+    else
+    {
+      features.insert("Isotropic");
+    }
   }
   if (shadowTerm)
   {
@@ -854,7 +855,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (lit)
   {
-    SetLightingUniforms(sink, context.Lights, renderer, property, worldToIndex);
+    deepshadow::SetLightingUniforms(sink, context.Lights, renderer, adapter::MakeMaterial(property));
+    sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(worldToIndex))));
   }
   if (technique)
   {

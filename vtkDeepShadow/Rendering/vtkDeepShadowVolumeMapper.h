@@ -42,6 +42,7 @@ class vtkDeepShadowTechnique;
 namespace deepshadow
 {
 class SurfaceSet;
+struct ShadowContext;
 }
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
@@ -169,6 +170,14 @@ public:
    * structures are rebuilt then only.
    */
   void SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces);
+
+  /**
+   * Used by vtkDeepShadowPass before opaque geometry is drawn: brings the volume's data,
+   * tables and the technique's shadow structures up to date without drawing. Returns what
+   * mesh receivers read to look the structures up (null without a working technique); valid
+   * until the next frame. The frame's Render() then finds nothing left to build.
+   */
+  const deepshadow::ShadowContext* PrepareShadows(vtkRenderer* renderer, vtkVolume* volume);
 
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();

@@ -19,6 +19,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace deepshadow
@@ -47,7 +49,25 @@ struct SurfaceMesh
   std::vector<glm::dvec3> Normals; // per point, unit; empty: each triangle's own normal
   std::vector<glm::dvec3> Colors;  // per point; empty: Material.Color
   SurfaceMaterial Material;
+  /** Whether its points are shadowed when drawn (light rays ignore this). */
+  bool ReceivesShadows = true;
 };
+
+/** The default world distance a mesh receiver's lookup starts towards the light. */
+inline double DefaultReceiverBias(double feelerStep)
+{
+  return 2.0 * feelerStep;
+}
+
+/**
+ * How far towards the light a mesh receiver looks its shadow up: `bias` at normal incidence,
+ * up to 4 times that at grazing light, where a map's depths vary fastest across a texel
+ * (twin of MeshNormal.glsl's ShadowOffset).
+ */
+inline double ReceiverOffset(double bias, const glm::dvec3& normal, const glm::dvec3& toLight)
+{
+  return bias / std::max(std::abs(glm::dot(normal, toLight)), 0.25);
+}
 
 /** A crossing of a ray with a surface of the set. */
 struct SurfaceHit

@@ -331,9 +331,9 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
   return true;
 }
 
-std::vector<std::string> vtkDeepShadowTechnique::GetLookupFeatures() const
+std::vector<std::string> vtkDeepShadowTechnique::GetLookupFeatures(bool direct) const
 {
-  if (this->NeedsFeeler() && this->GetParameters().IsColored())
+  if (this->NeedsFeeler(direct) && this->GetParameters().IsColored())
   {
     return { "FeelerColored" };
   }
@@ -349,9 +349,9 @@ std::vector<std::string> vtkDeepShadowTechnique::GetBuildFeatures() const
   return {};
 }
 
-std::string vtkDeepShadowTechnique::GetShaderFeatureSource() const
+std::string vtkDeepShadowTechnique::GetShaderFeatureSource(bool direct) const
 {
-  if (!this->Cached)
+  if (!this->Cached || direct)
   {
     return vtkDeepShadowShadow + this->GetLookupSource();
   }
@@ -442,7 +442,8 @@ void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& conte
   ++this->Impl->Passes;
 }
 
-void vtkDeepShadowTechnique::Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
+void vtkDeepShadowTechnique::Bind(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context, bool direct)
 {
   Internals& impl = *this->Impl;
   std::vector<float> attenuation;
@@ -452,7 +453,7 @@ void vtkDeepShadowTechnique::Bind(deepshadow::UniformSink& sink, const deepshado
   }
   sink.Set("u_shadowSlot", impl.Slots.SlotOfEachLight(static_cast<int>(context.Lights.size())));
   sink.Set("u_shadowAttenuation", attenuation);
-  if (this->Cached)
+  if (this->Cached && !direct)
   {
     impl.Cache->Activate();
     sink.Set("u_shadowVolume", impl.Cache->GetTextureUnit());
@@ -468,9 +469,9 @@ void vtkDeepShadowTechnique::Bind(deepshadow::UniformSink& sink, const deepshado
   this->BindLookup(sink, context);
 }
 
-void vtkDeepShadowTechnique::Unbind()
+void vtkDeepShadowTechnique::Unbind(bool direct)
 {
-  if (this->Cached)
+  if (this->Cached && !direct)
   {
     if (this->Impl->Cache)
     {

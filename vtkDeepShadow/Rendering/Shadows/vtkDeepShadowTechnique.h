@@ -132,17 +132,24 @@ public:
 
   /** Brings the shadow structures up to date; false (and GetLastError()) on failure. */
   bool Prepare(deepshadow::ShadowContext& context);
-  /** Source of the "Shadow" shader feature for the ray caster. */
-  std::string GetShaderFeatureSource() const;
-  /** Whether the ray caster also needs the Feeler feature. */
-  bool NeedsFeeler() const { return !this->Cached && this->LookupNeedsFeeler(); }
-  /** Shader features its lookup needs in the ray caster (FeelerColored for coloured feelers). */
-  std::vector<std::string> GetLookupFeatures() const;
+  /**
+   * Source of the "Shadow" shader feature for the ray caster. `direct`: the technique's own
+   * lookup even when cached, for receivers outside the volume's box (meshes), which the
+   * cache's grid does not cover.
+   */
+  std::string GetShaderFeatureSource(bool direct = false) const;
+  /** Whether the lookup also needs the Feeler feature. */
+  bool NeedsFeeler(bool direct = false) const
+  {
+    return (!this->Cached || direct) && this->LookupNeedsFeeler();
+  }
+  /** Shader features its lookup needs (FeelerColored for coloured feelers). */
+  std::vector<std::string> GetLookupFeatures(bool direct = false) const;
   /** Shader features its build passes need besides VolumeSampling, Feeler, EmptySpace. */
   virtual std::vector<std::string> GetBuildFeatures() const;
   /** Sets the lookup's uniforms and binds its textures on the ray caster's program. */
-  void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context);
-  void Unbind();
+  void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context, bool direct = false);
+  void Unbind(bool direct = false);
   virtual void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:

@@ -1,5 +1,5 @@
-// Feature Gradient: Phong shading of the gradient normal (deepshadow::PhongLight and
-// deepshadow::VolumeGrid::WorldGradient are the CPU twins). A zero gradient gets ambient only.
+// Feature Gradient: the normal of a volume sample from its gradient (deepshadow::VolumeGrid::
+// WorldGradient is the CPU twin), shaded by Phong. A zero gradient gets ambient only.
 //@Dec
 uniform mat3 u_indexGradientToWorld; // transpose of the world-to-index Jacobian
 
@@ -19,19 +19,3 @@ vec3 worldGradient(vec3 index)
     return clamp(lit, 0.0, 1.0);
   }
   vec3 normal = -gradient / gradientLength;
-//@Surface
-    {
-      vec3 halfway = normalize(toLight + toViewer);
-      float nDotL = dot(normal, toLight);
-      float nDotH = dot(normal, halfway);
-      if (u_twoSidedLighting != 0)
-      {
-        nDotL = abs(nDotL);
-        nDotH = abs(nDotH);
-      }
-      nDotL = max(nDotL, 0.0);
-      nDotH = max(nDotH, 0.0);
-      float specular = nDotH > 0.0 ? pow(nDotH, u_material.w) : 0.0;
-      contribution = u_material.y * nDotL * u_lightDiffuse[i] * color +
-        u_material.z * specular * u_lightSpecular[i];
-    }

@@ -26,6 +26,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   vec3 lit = u_material.x * color * u_ambientLight;
   //DeepShadow::ShadowTerm::Start
   //DeepShadow::Gradient::Normal
+  //DeepShadow::MeshNormal::Normal
   for (int i = 0; i < u_lightCount; ++i)
   {
     vec3 toLight = u_lightDirection[i];
@@ -49,7 +50,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
       continue;
     }
     vec3 contribution = vec3(0.0);
-    //DeepShadow::Gradient::Surface
+    //DeepShadow::Phong::Surface
     //DeepShadow::Isotropic::Surface
     //DeepShadow::Shadow::Impl
     lit += attenuation * contribution;

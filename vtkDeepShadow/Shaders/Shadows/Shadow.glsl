@@ -8,7 +8,10 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
 //@Impl
     if (u_shadowSlot[i] >= 0)
     {
-      vec3 visibility = lightVisibility(u_shadowSlot[i], position, toLight, lightDistance);
+      vec3 shadowPosition = position;
+      float shadowDistance = lightDistance;
+      //DeepShadow::MeshNormal::ShadowOffset
+      vec3 visibility = lightVisibility(u_shadowSlot[i], shadowPosition, toLight, shadowDistance);
       vec3 shadowFactor = 1.0 - u_shadowAttenuation[i] * (1.0 - visibility);
       contribution *= shadowFactor;
       //DeepShadow::ShadowTerm::Accumulate

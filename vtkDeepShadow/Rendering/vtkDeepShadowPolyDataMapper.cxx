@@ -1,0 +1,415 @@
+#include "vtkDeepShadowPolyDataMapper.h"
+
+#include "CoreAdapter.h"
+#include "LightingUniforms.h"
+#include "ShaderComposer.h"
+#include "Shadows/ShadowContext.h"
+#include "SurfaceSet.h"
+#include "vtkDeepShadowSurfaceFS.h"
+#include "vtkDeepShadowSurfaceVS.h"
+#include "vtkDeepShadowTechnique.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace adapter = deepshadow::adapter;
+
+vtkStandardNewMacro(vtkDeepShadowPolyDataMapper);
+
+class vtkDeepShadowPolyDataMapper::Internals
+{
+public:
+  // The mesh as drawn: triangles, point normals and colours (model coordinates).
+  std::vector<glm::vec3> Points;
+  std::vector<glm::vec3> Normals;
+  std::vector<glm::vec4> Colors;
+  std::vector<unsigned int> Indices;
+  vtkMTimeType PreparedTime = 0;
+  std::string PrepareError;
+
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
+  vtkSmartPointer<vtkOpenGLBufferObject> Vertices;
+  vtkSmartPointer<vtkOpenGLBufferObject> Triangles;
+  vtkShaderProgram* VertexArrayProgram = nullptr;
+  bool Uploaded = false;
+  std::string LastSource;
+
+  const deepshadow::ShadowContext* Context = nullptr;
+  vtkDeepShadowTechnique* Technique = nullptr;
+
+  /**
+   * Triangles, normals and colours of the input, rebuilt only when something they depend on
+   * changed. False (and PrepareError) when there is nothing to draw.
+   */
+  bool Prepare(vtkDeepShadowPolyDataMapper* self, vtkActor* actor);
+};
+
+vtkDeepShadowPolyDataMapper::vtkDeepShadowPolyDataMapper()
+  : Impl(new Internals)
+{
+}
+
+vtkDeepShadowPolyDataMapper::~vtkDeepShadowPolyDataMapper() = default;
+
+void vtkDeepShadowPolyDataMapper::SetShadowSource(
+  const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique)
+{
+  this->Impl->Context = context;
+  this->Impl->Technique = context ? technique : nullptr;
+}
+
+namespace
+{
+// What the mesh's look depends on besides its points: the mapper, the colours, the property.
+vtkMTimeType MeshTime(vtkDeepShadowPolyDataMapper* mapper, vtkPolyData* input, vtkActor* actor)
+{
+  vtkMTimeType time = std::max(mapper->GetMTime(), input->GetMTime());
+  if (mapper->GetLookupTable())
+  {
+    time = std::max(time, mapper->GetLookupTable()->GetMTime());
+  }
+  return std::max(time, actor->GetProperty()->GetMTime());
+}
+}
+
+bool vtkDeepShadowPolyDataMapper::Internals::Prepare(vtkDeepShadowPolyDataMapper* self, vtkActor* actor)
+{
+  Internals& impl = *this;
+  vtkPolyData* input = self->GetInput();
+  if (!input)
+  {
+    impl.PrepareError = "vtkDeepShadowPolyDataMapper has no input";
+    return false;
+  }
+  const vtkMTimeType time = MeshTime(self, input, actor);
+  if (time == impl.PreparedTime)
+  {
+    return impl.PrepareError.empty();
+  }
+  impl.PreparedTime = time;
+  impl.PrepareError.clear();
+  impl.Uploaded = false;
+  impl.Points.clear();
+  impl.Normals.clear();
+  impl.Colors.clear();
+  impl.Indices.clear();
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      impl.PrepareError = "the mesh has points that are not finite (NaN or infinite): nothing is drawn";
+      return false;
+    }
+  }
+  // Polygons and strips as triangles; lines and vertices are not surfaces.
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(input);
+  triangulate->PassLinesOff();
+  triangulate->PassVertsOff();
+  triangulate->Update();
+  vtkSmartPointer<vtkPolyData> mesh = triangulate->GetOutput();
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    impl.PrepareError = "the mesh has no polygons: nothing is drawn";
+    return false;
+  }
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SplittingOff(); // smooth: one normal per point, as the points are shared
+    normals->ConsistencyOn();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  // Colours: the mapped scalars when shown, else the property's colour.
+  vtkUnsignedCharArray* mapped = nullptr;
+  if (self->GetScalarVisibility())
+  {
+    mapped = self->MapScalars(mesh, 1.0);
+  }
+  double color[3];
+  actor->GetProperty()->GetColor(color);
+  const vtkIdType count = mesh->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double p[3], n[3];
+    mesh->GetPoint(i, p);
+    normals->GetTuple(i, n);
+    impl.Points.emplace_back(p[0], p[1], p[2]);
+    impl.Normals.emplace_back(n[0], n[1], n[2]);
+    if (mapped && mapped->GetNumberOfTuples() == count)
+    {
+      const unsigned char* c = mapped->GetPointer(4 * i);
+      impl.Colors.emplace_back(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 1.0f);
+    }
+    else
+    {
+      impl.Colors.emplace_back(color[0], color[1], color[2], 1.0f);
+    }
+  }
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n == 3)
+    {
+      impl.Indices.insert(impl.Indices.end(), { static_cast<unsigned int>(ids[0]),
+        static_cast<unsigned int>(ids[1]), static_cast<unsigned int>(ids[2]) });
+    }
+  }
+  return true;
+}
+
+bool vtkDeepShadowPolyDataMapper::GetSurfaceMesh(vtkActor* actor, deepshadow::SurfaceMesh& mesh, std::string& error)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Prepare(this, actor))
+  {
+    error = this->LastError = impl.PrepareError;
+    return false;
+  }
+  const glm::dmat4 toWorld = adapter::ToGlm(actor->GetMatrix());
+  const glm::dmat3 normalToWorld = glm::transpose(glm::inverse(glm::dmat3(toWorld)));
+  mesh = deepshadow::SurfaceMesh();
+  for (size_t i = 0; i < impl.Points.size(); ++i)
+  {
+    mesh.Points.emplace_back(toWorld * glm::dvec4(glm::dvec3(impl.Points[i]), 1.0));
+    const glm::dvec3 n = normalToWorld * glm::dvec3(impl.Normals[i]);
+    mesh.Normals.push_back(glm::length(n) > 0.0 ? glm::normalize(n) : n);
+    mesh.Colors.emplace_back(impl.Colors[i]);
+  }
+  for (size_t t = 0; t + 2 < impl.Indices.size(); t += 3)
+  {
+    mesh.Triangles.emplace_back(impl.Indices[t], impl.Indices[t + 1], impl.Indices[t + 2]);
+  }
+  vtkProperty* property = actor->GetProperty();
+  double color[3];
+  property->GetColor(color);
+  mesh.Material.Opacity = std::clamp(property->GetOpacity(), 0.0, 1.0);
+  mesh.Material.Color = glm::dvec3(color[0], color[1], color[2]);
+  mesh.Material.Shading = deepshadow::Material{ property->GetAmbient(), property->GetDiffuse(),
+    property->GetSpecular(), property->GetSpecularPower() };
+  mesh.ReceivesShadows = this->ReceiveShadows;
+  return true;
+}
+
+void vtkDeepShadowPolyDataMapper::Render(vtkRenderer* renderer, vtkActor* actor)
+{
+  // One piece, and empty inputs reach RenderPiece, which says why nothing is drawn.
+  this->RenderPiece(renderer, actor);
+}
+
+void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
+{
+  Internals& impl = *this->Impl;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    this->LastError = "vtkDeepShadowPolyDataMapper needs an OpenGL render window";
+    vtkErrorMacro(<< this->LastError);
+    return;
+  }
+  if (!impl.Prepare(this, actor))
+  {
+    if (impl.PrepareError != this->LastError)
+    {
+      this->LastError = impl.PrepareError;
+      vtkWarningMacro(<< this->LastError);
+    }
+    return;
+  }
+  this->LastError.clear();
+
+  // Buffers: position, normal, colour per point; re-uploaded only when the mesh changed.
+  if (!impl.VertexArray)
+  {
+    impl.VertexArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    impl.Vertices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    impl.Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  }
+  if (!impl.Uploaded)
+  {
+    std::vector<float> vertices;
+    vertices.reserve(impl.Points.size() * 10);
+    for (size_t i = 0; i < impl.Points.size(); ++i)
+    {
+      vertices.insert(vertices.end(), { impl.Points[i].x, impl.Points[i].y, impl.Points[i].z,
+        impl.Normals[i].x, impl.Normals[i].y, impl.Normals[i].z, impl.Colors[i].r, impl.Colors[i].g,
+        impl.Colors[i].b, impl.Colors[i].a });
+    }
+    impl.Vertices->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
+    impl.Triangles->Upload(impl.Indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    impl.Uploaded = true;
+    impl.VertexArrayProgram = nullptr;
+    ++this->GeometryUploads;
+  }
+
+  // Shader: lit always; shadowed when the pass gave a source and the mesh receives.
+  const deepshadow::ShadowContext* context = this->ReceiveShadows ? impl.Context : nullptr;
+  vtkDeepShadowTechnique* technique = context ? impl.Technique : nullptr;
+  std::set<std::string> features{ "Lighting", "Phong", "MeshNormal" };
+  std::map<std::string, deepshadow::ShaderFeature> runtime;
+  if (technique)
+  {
+    // The technique's own lookup: a cache's grid covers the volume's box only.
+    context->AddVolumeFeatures(features, runtime, technique->NeedsFeeler(true));
+    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource(true));
+    if (technique->NeedsFeeler(true))
+    {
+      features.insert("Feeler");
+    }
+    for (const std::string& feature : technique->GetLookupFeatures(true))
+    {
+      features.insert(feature);
+    }
+  }
+  const std::string source = deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features, runtime);
+  this->ShaderFeatures.assign(features.begin(), features.end());
+  if (technique)
+  {
+    this->ShaderFeatures.push_back("Shadow:" + technique->GetName());
+  }
+  if (source != impl.LastSource)
+  {
+    impl.LastSource = source;
+    ++this->ShaderCompositions;
+  }
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkDeepShadowSurfaceVS, source.c_str(), "");
+  if (!program)
+  {
+    this->LastError = "the mesh shader failed to compile (see the messages above)";
+    vtkErrorMacro(<< this->LastError);
+    return;
+  }
+
+  deepshadow::UniformSink sink(program);
+  vtkProperty* property = actor->GetProperty();
+  const std::vector<deepshadow::Light> lights = context ? context->Lights : adapter::MakeLights(renderer);
+  deepshadow::SetLightingUniforms(sink, lights, renderer,
+    deepshadow::Material{ property->GetAmbient(), property->GetDiffuse(), property->GetSpecular(),
+      property->GetSpecularPower() });
+  const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
+  sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
+  sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));
+  sink.Set("u_worldToClip", glm::mat4(adapter::MakeCamera(renderer).GetViewProjection()));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double position[3], direction[3];
+  camera->GetPosition(position);
+  camera->GetDirectionOfProjection(direction);
+  sink.Set("u_cameraPosition", glm::vec3(position[0], position[1], position[2]));
+  sink.Set("u_viewDirection", glm::vec3(direction[0], direction[1], direction[2]));
+  sink.Set("u_parallel", camera->GetParallelProjection() ? 1 : 0);
+  if (technique)
+  {
+    context->ActivateVolumeTextures();
+    context->SetVolumeUniforms(sink);
+    technique->Bind(sink, *context, true);
+    const double bias = this->ShadowBias > 0.0
+      ? this->ShadowBias
+      : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
+    sink.Set("u_receiverOffset", static_cast<float>(bias));
+  }
+
+  const bool programChanged = impl.VertexArrayProgram != program;
+  if (programChanged)
+  {
+    impl.VertexArray->ShaderProgramChanged();
+  }
+  impl.VertexArray->Bind();
+  if (programChanged)
+  {
+    const int stride = 10 * sizeof(float);
+    impl.VertexArray->AddAttributeArray(program, impl.Vertices, "a_position", 0, stride, VTK_FLOAT, 3, false);
+    impl.VertexArray->AddAttributeArray(
+      program, impl.Vertices, "a_normal", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
+    impl.VertexArray->AddAttributeArray(
+      program, impl.Vertices, "a_color", 6 * sizeof(float), stride, VTK_FLOAT, 4, false);
+    impl.VertexArrayProgram = program;
+  }
+  impl.Triangles->Bind();
+  {
+    vtkOpenGLState* state = window->GetState();
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    const double opacity = std::clamp(property->GetOpacity(), 0.0, 1.0);
+    sink.Set("u_opacity", static_cast<float>(opacity));
+    if (opacity < 1.0)
+    {
+      // Premultiplied "over"; translucent meshes do not hide what is drawn after them.
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+      state->vtkglDepthMask(GL_FALSE);
+    }
+    else
+    {
+      state->vtkglDisable(GL_BLEND);
+      state->vtkglDepthMask(GL_TRUE);
+    }
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(impl.Indices.size()), GL_UNSIGNED_INT, nullptr);
+  }
+  impl.Triangles->Release();
+  impl.VertexArray->Release();
+  if (technique)
+  {
+    technique->Unbind(true);
+    context->DeactivateVolumeTextures();
+  }
+}
+
+void vtkDeepShadowPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  Internals& impl = *this->Impl;
+  if (impl.VertexArray)
+  {
+    impl.VertexArray->ReleaseGraphicsResources();
+    impl.Vertices->ReleaseGraphicsResources();
+    impl.Triangles->ReleaseGraphicsResources();
+  }
+  impl.Uploaded = false;
+  impl.VertexArrayProgram = nullptr;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkDeepShadowPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "CastShadows: " << this->CastShadows << "\n";
+  os << indent << "ReceiveShadows: " << this->ReceiveShadows << "\n";
+  os << indent << "ShadowBias: " << this->ShadowBias << " (0 = automatic)\n";
+  os << indent << "GeometryUploads: " << this->GeometryUploads << "\n";
+}

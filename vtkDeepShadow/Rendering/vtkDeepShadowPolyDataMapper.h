@@ -1,0 +1,105 @@
+/**
+ * @class   vtkDeepShadowPolyDataMapper
+ * @brief   Renders meshes that cast shadows into volumes and receive the scene's shadows.
+ *
+ * Draws the triangles of a vtkPolyData (polygons and strips are triangulated; points without
+ * normals get them from vtkPolyDataNormals) with the actor's vtkProperty (colour, opacity,
+ * ambient, diffuse, specular, specular power) or its mapped scalars, Phong-lit by the
+ * renderer's lights as the volume mapper lights its samples.
+ *
+ * In a renderer whose pass is vtkDeepShadowPass the mesh takes part in the scene's shadows:
+ * - it casts (CastShadows, on by default) into every technique's structure: an opaque mesh
+ *   stops the light, a translucent one lets its transmission through (the actor's colour is
+ *   what it lets through of the light it stops: deepshadow::SurfaceTransmission);
+ * - it receives (ReceiveShadows, on by default): each light's diffuse and specular light is
+ *   scaled by the visibility the shadowing volume's technique gives, exactly as for volume
+ *   samples. The lookup starts ShadowBias world units towards the light (more at grazing
+ *   light: deepshadow::ReceiverOffset), so a mesh that casts does not shadow itself (acne).
+ * Without the pass, the mesh is lit without shadows.
+ *
+ * Bad input: no input or no triangles draws nothing (with a warning); non-finite points are
+ * an error naming the count, and nothing is drawn.
+ */
+#ifndef vtkDeepShadowPolyDataMapper_h
+#define vtkDeepShadowPolyDataMapper_h
+
+#include "vtkDeepShadowRenderingModule.h" // For export macro
+#include "vtkPolyDataMapper.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+namespace deepshadow
+{
+struct ShadowContext;
+struct SurfaceMesh;
+}
+class vtkDeepShadowTechnique;
+
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPolyDataMapper : public vtkPolyDataMapper
+{
+public:
+  static vtkDeepShadowPolyDataMapper* New();
+  vtkTypeMacro(vtkDeepShadowPolyDataMapper, vtkPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Whether the mesh casts shadows (default on) and receives them (default on). */
+  vtkSetMacro(CastShadows, bool);
+  vtkGetMacro(CastShadows, bool);
+  vtkBooleanMacro(CastShadows, bool);
+  vtkSetMacro(ReceiveShadows, bool);
+  vtkGetMacro(ReceiveShadows, bool);
+  vtkBooleanMacro(ReceiveShadows, bool);
+  ///@}
+
+  ///@{
+  /**
+   * World distance towards the light where a shadow lookup starts, at normal incidence
+   * (default 0: twice the shadowing volume's feeler step).
+   */
+  vtkSetClampMacro(ShadowBias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ShadowBias, double);
+  ///@}
+
+  /** The triangles as the scene's shadows see them: world coordinates (the actor's matrix). */
+  bool GetSurfaceMesh(vtkActor* actor, deepshadow::SurfaceMesh& mesh, std::string& error);
+
+  void Render(vtkRenderer* renderer, vtkActor* actor) override;
+  void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /** Observability. */
+  vtkGetMacro(GeometryUploads, int); // vertex buffers (re)built: the data or colours changed
+  vtkGetMacro(ShaderCompositions, int);
+  const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
+  const std::string& GetLastError() const { return this->LastError; }
+  ///@}
+
+  // ---- Used by vtkDeepShadowPass, not by applications ----
+  /** Where this frame's shadows come from (null: lit without shadows). */
+  void SetShadowSource(const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique);
+
+protected:
+  vtkDeepShadowPolyDataMapper();
+  ~vtkDeepShadowPolyDataMapper() override;
+
+  bool CastShadows = true;
+  bool ReceiveShadows = true;
+  double ShadowBias = 0.0;
+  int GeometryUploads = 0;
+  int ShaderCompositions = 0;
+  std::vector<std::string> ShaderFeatures;
+  std::string LastError;
+
+private:
+  vtkDeepShadowPolyDataMapper(const vtkDeepShadowPolyDataMapper&) = delete;
+  void operator=(const vtkDeepShadowPolyDataMapper&) = delete;
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

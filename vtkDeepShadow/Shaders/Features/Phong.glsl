@@ -1,0 +1,19 @@
+// Feature Phong: the diffuse and specular light of one light at a surface-like point of
+// normal `normal` (deepshadow::PhongLight is the CPU twin); Gradient gives volume samples their
+// normal, MeshNormal the points of meshes.
+//@Surface
+    {
+      vec3 halfway = normalize(toLight + toViewer);
+      float nDotL = dot(normal, toLight);
+      float nDotH = dot(normal, halfway);
+      if (u_twoSidedLighting != 0)
+      {
+        nDotL = abs(nDotL);
+        nDotH = abs(nDotH);
+      }
+      nDotL = max(nDotL, 0.0);
+      nDotH = max(nDotH, 0.0);
+      float specular = nDotH > 0.0 ? pow(nDotH, u_material.w) : 0.0;
+      contribution = u_material.y * nDotL * u_lightDiffuse[i] * color +
+        u_material.z * specular * u_lightSpecular[i];
+    }
