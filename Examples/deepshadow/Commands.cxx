@@ -5,6 +5,8 @@
 
 #include "Image.h"
 #include "vtkDeepShadowBoundedScene.h"
+#include "vtkDeepShadowHybridScene.h"
+#include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -110,6 +112,9 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("bounded_to_unbounded", unboundedMs.empty() ? 0.0 : Median(run.FrameMs) / Median(unboundedMs))
     .Set("bound_is_empty", setup.BoundIsEmpty)
     .Set("csg_ms", setup.CsgMilliseconds)
+    .Set("meshes", static_cast<int>(setup.Meshes.size()))
+    .Set("casting_meshes", setup.Pass ? setup.Pass->GetCastingMeshes() : 0)
+    .Set("surface_uploads", mapper->GetSurfaceUploads())
     .Set("backend", setup.Window->GetBackendAsString())
     .Set("context", setup.Window->GetContextDescription())
     .Set("gl_renderer", RendererString(setup.Window));
@@ -245,6 +250,13 @@ int RunScenes(const Options&)
       vtkDeepShadowBoundedScene::GetSceneDescription(name).c_str(),
       vtkDeepShadowBoundedScene::GetBoundExpression(name).c_str(),
       vtkDeepShadowBoundedScene::GetVolumeSceneName(name).c_str());
+  }
+  std::printf("\nHybrid (a standard volume with meshes that cast and receive shadows):\n");
+  for (const std::string& name : vtkDeepShadowHybridScene::GetSceneNames())
+  {
+    std::printf("%-13s %s (the %s scene)\n", name.c_str(),
+      vtkDeepShadowHybridScene::GetSceneDescription(name).c_str(),
+      vtkDeepShadowHybridScene::GetVolumeSceneName(name).c_str());
   }
   return 0;
 }

@@ -345,6 +345,13 @@ SCENE (default: --scene box):
                           self-intersecting, bounding a volume): a bad one exits with code 2
   --csg-mesh              bound the volume by the CGAL result mesh of the expression
                           instead of evaluating the expression per ray (same picture)
+  --mesh FILE             a mesh (.vtp, .vtk, .stl, .ply, .obj; world coordinates) that casts
+                          shadows into the volume and receives the scene's; repeatable. The
+                          options below apply to the --mesh before them:
+  --mesh-opacity A        its opacity in [0, 1] (default 1; below 1 it is translucent)
+  --mesh-color R,G,B      its colour, also what it lets through (default 0.8,0.8,0.8)
+  --mesh-transform TX,TY,TZ[,S]  scale by S about the origin, then translate
+  --ground                a ground plane under the volume, on the far side from the light
 
 VIEW:
   --size WxH              image size (default 512x512)
@@ -483,6 +490,59 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--bound")
     {
       o.BoundFiles.push_back(next());
+    }
+    else if (key == "--mesh")
+    {
+      o.Meshes.push_back(MeshSpec{ next() });
+    }
+    else if (key == "--mesh-opacity" || key == "--mesh-color" || key == "--mesh-transform")
+    {
+      if (o.Meshes.empty())
+      {
+        throw UsageError(key + " applies to the --mesh before it, and none was given");
+      }
+      MeshSpec& mesh = o.Meshes.back();
+      const std::string value = next();
+      if (key == "--mesh-opacity")
+      {
+        mesh.Opacity = ParseNumber(key, value);
+        if (!(mesh.Opacity >= 0.0 && mesh.Opacity <= 1.0))
+        {
+          throw UsageError("--mesh-opacity must lie in [0, 1], got '" + value + "'");
+        }
+      }
+      else if (key == "--mesh-color")
+      {
+        mesh.Color = ParseVector(key, value);
+        for (double c : mesh.Color)
+        {
+          if (!(c >= 0.0 && c <= 1.0))
+          {
+            throw UsageError("--mesh-color components must lie in [0, 1], got '" + value + "'");
+          }
+        }
+      }
+      else
+      {
+        const auto parts = Split(value, ',');
+        if (parts.size() != 3 && parts.size() != 4)
+        {
+          throw UsageError("--mesh-transform expects TX,TY,TZ[,SCALE], got '" + value + "'");
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          mesh.Translate[c] = ParseNumber(key, parts[c]);
+        }
+        mesh.Scale = parts.size() == 4 ? ParseNumber(key, parts[3]) : 1.0;
+        if (!(mesh.Scale > 0.0))
+        {
+          throw UsageError("--mesh-transform's scale must be positive, got '" + value + "'");
+        }
+      }
+    }
+    else if (key == "--ground")
+    {
+      o.Ground = true;
     }
     else if (key == "--csg")
     {

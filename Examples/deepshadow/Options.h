@@ -34,6 +34,16 @@ struct LightSpec
   double Intensity = 1.0;
 };
 
+/** A mesh given on the command line (--mesh and the options that follow it). */
+struct MeshSpec
+{
+  std::string File;
+  double Opacity = 1.0;
+  std::array<double, 3> Color{ { 0.8, 0.8, 0.8 } };
+  std::array<double, 3> Translate{ { 0.0, 0.0, 0.0 } };
+  double Scale = 1.0;
+};
+
 /** Techniques the tool can choose (see --technique): each base name, and NAME-cached. */
 std::vector<std::string> TechniqueNames();
 
@@ -48,6 +58,8 @@ struct Options
   double SceneScale = 1.0;
   std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
   std::string Csg;                     // --csg: how they combine ("" = their union)
+  std::vector<MeshSpec> Meshes;        // --mesh, repeatable: meshes that cast and receive
+  bool Ground = false;                 // --ground: a ground plane under the volume
   bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
   int Width = 512;
   int Height = 512;

@@ -3,7 +3,10 @@
 #include "vtkDeepShadowBoundedScene.h"
 #include "vtkDeepShadowCSGFilter.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
+#include "vtkDeepShadowHybridScene.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowPass.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -13,6 +16,7 @@
 #include "vtkDeepShadowVolumeMapper.h"
 #include "vtkDeepShadowVolumeReader.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
@@ -26,6 +30,9 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkDataArray.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
@@ -173,6 +180,89 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
   return technique;
 }
 
+namespace
+{
+// The meshes of a hybrid scene, --ground and --mesh: vtkDeepShadowPolyDataMapper actors under
+// a vtkDeepShadowPass, which makes them cast into the volume's shadows and receive them.
+void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<LightSpec>& lights,
+  const double centre[3])
+{
+  // Towards the key light: hybrid meshes are placed from it (the headlight: from the camera).
+  double toLight[3] = { 0.0, 0.0, 1.0 };
+  if (!lights.empty())
+  {
+    const LightSpec& key = lights.front();
+    for (int c = 0; c < 3; ++c)
+    {
+      toLight[c] = key.Kind == LightSpec::Directional ? key.Vector[c] : key.Vector[c] - centre[c];
+    }
+  }
+  else
+  {
+    const double* position = setup.Renderer->GetActiveCamera()->GetPosition();
+    for (int c = 0; c < 3; ++c)
+    {
+      toLight[c] = position[c] - centre[c];
+    }
+  }
+  const double* bounds = setup.Volume->GetBounds();
+  std::vector<vtkDeepShadowHybridScene::Mesh> meshes;
+  if (options.VolumeFile.empty())
+  {
+    meshes = vtkDeepShadowHybridScene::MakeMeshes(options.Scene, bounds, toLight);
+  }
+  if (options.Ground && meshes.empty())
+  {
+    meshes.push_back(vtkDeepShadowHybridScene::MakeGround(bounds, toLight));
+  }
+  for (const MeshSpec& spec : options.Meshes)
+  {
+    vtkDeepShadowHybridScene::Mesh mesh;
+    mesh.PolyData = ReadMesh(spec.File);
+    for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
+    {
+      const double* p = mesh.PolyData->GetPoint(i);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        throw UsageError("mesh " + spec.File + " has points that are not finite (NaN or infinite)");
+      }
+    }
+    mesh.Opacity = spec.Opacity;
+    mesh.Color = spec.Color;
+    vtkNew<vtkTransform> transform;
+    transform->Translate(spec.Translate.data());
+    transform->Scale(spec.Scale, spec.Scale, spec.Scale);
+    vtkNew<vtkTransformPolyDataFilter> place;
+    place->SetTransform(transform);
+    place->SetInputData(mesh.PolyData);
+    place->Update();
+    mesh.PolyData = place->GetOutput();
+    meshes.push_back(mesh);
+  }
+  if (meshes.empty())
+  {
+    return;
+  }
+  vtkNew<vtkDeepShadowPass> pass;
+  setup.Renderer->SetPass(pass);
+  setup.Pass = pass;
+  for (const auto& mesh : meshes)
+  {
+    vtkNew<vtkDeepShadowPolyDataMapper> mapper;
+    mapper->SetInputData(mesh.PolyData);
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(mesh.Color[0], mesh.Color[1], mesh.Color[2]);
+    actor->GetProperty()->SetOpacity(mesh.Opacity);
+    actor->GetProperty()->SetAmbient(0.2);
+    actor->GetProperty()->SetDiffuse(0.8);
+    setup.Renderer->AddActor(actor);
+    setup.Meshes.push_back(mapper);
+  }
+}
+}
+
 SceneSetup SceneSetup::Build(const Options& options)
 {
   SceneSetup setup;
@@ -205,7 +295,8 @@ SceneSetup SceneSetup::Build(const Options& options)
   else
   {
     const bool bounded = vtkDeepShadowBoundedScene::IsSceneName(options.Scene);
-    if (!bounded && !vtkDeepShadowStandardScene::IsSceneName(options.Scene))
+    const bool hybrid = vtkDeepShadowHybridScene::IsSceneName(options.Scene);
+    if (!bounded && !hybrid && !vtkDeepShadowStandardScene::IsSceneName(options.Scene))
     {
       std::string names;
       for (const auto& name : vtkDeepShadowStandardScene::GetSceneNames())
@@ -216,9 +307,15 @@ SceneSetup SceneSetup::Build(const Options& options)
       {
         names += ", " + name;
       }
+      for (const auto& name : vtkDeepShadowHybridScene::GetSceneNames())
+      {
+        names += ", " + name;
+      }
       throw UsageError("unknown scene '" + options.Scene + "' (scenes: " + names + ")");
     }
-    scene->SetScene(bounded ? vtkDeepShadowBoundedScene::GetVolumeSceneName(options.Scene) : options.Scene);
+    scene->SetScene(bounded ? vtkDeepShadowBoundedScene::GetVolumeSceneName(options.Scene)
+        : hybrid        ? vtkDeepShadowHybridScene::GetVolumeSceneName(options.Scene)
+                        : options.Scene);
     scene->SetResolutionScale(options.SceneScale);
     setup.Data = scene->GetVolume();
     setup.GenerationSeconds = scene->GetLastGenerationTime();
@@ -331,6 +428,7 @@ SceneSetup SceneSetup::Build(const Options& options)
   // The lights asked for (the renderer's ambient keeps unlit parts readable); none: VTK's
   // automatic headlight.
   const double* centre = setup.Volume->GetCenter();
+  AddMeshes(setup, options, lights, centre);
   for (const LightSpec& spec : lights)
   {
     vtkNew<vtkLight> light;

@@ -4,6 +4,9 @@
 
 #include "Options.h"
 
+#include "vtkDeepShadowPass.h"           // For the smart pointers
+#include "vtkDeepShadowPolyDataMapper.h" // For the smart pointers
+
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -37,6 +40,9 @@ struct SceneSetup
   std::string BoundExpression;
   double CsgMilliseconds = 0.0; // CGAL: checking the bounds and evaluating the expression
   bool BoundIsEmpty = false;    // the expression's result encloses nothing
+  // Hybrid scenes (a hybrid scene's meshes, --ground, --mesh): the meshes and their pass.
+  std::vector<vtkSmartPointer<vtkDeepShadowPolyDataMapper>> Meshes;
+  vtkSmartPointer<vtkDeepShadowPass> Pass;
 
   /** Loads or generates the volume and sets up the view; throws UsageError on bad input. */
   static SceneSetup Build(const Options& options);
@@ -51,7 +57,7 @@ double RenderFrame(vtkDeepShadowRenderWindow* window);
 /** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
 void RequireDrawn(const SceneSetup& setup);
 
-/** Reads a closed mesh (.vtp, .vtk, .stl, .ply, .obj); throws UsageError on failure. */
+/** Reads a mesh (.vtp, .vtk, .stl, .ply, .obj); throws UsageError on failure. */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
 /** The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"). */

@@ -123,7 +123,7 @@ awk -F, 'NR > 1 { s[NR] = $1; t[NR] = $13; e[NR] = $18; p[NR] = $22 }
 expect 2 "report without --out" -- "$tool" report --quick
 expect 2 "report of an unknown scene" -- "$tool" report --scenes teapot --out report2
 expect 0 "scenes" -- "$tool" scenes
-[ "$(grep -c '^[a-z]' out.txt)" -eq 9 ] || { echo "FAILED: expected 6 scenes and 3 bounded ones"; failures=$((failures + 1)); }
+[ "$(grep -c '^[a-z]' out.txt)" -eq 12 ] || { echo "FAILED: expected 6 scenes, 3 bounded and 3 hybrid ones"; failures=$((failures + 1)); }
 
 # Polyhedral bounds: bounded scenes, meshes from files combined by --csg, and bad bounds.
 cube_obj() { # cube_obj FILE LO HI [FACES]: an OBJ cube, outward; FACES < 6 leaves it open
@@ -156,6 +156,23 @@ expect 2 "--csg without bounds" -- "$tool" render --scene box --size 64x64 --csg
 echo "solid" > mesh.xyz
 expect 2 "an unsupported mesh format" -- "$tool" render --scene box --size 64x64 --bound mesh.xyz --out x.png
 expect 2 "a missing mesh" -- "$tool" render --scene box --size 64x64 --bound none.stl --out x.png
+
+# Hybrid scenes: meshes that cast and receive (--mesh and its options, --ground, the scenes).
+expect 0 "a hybrid scene" -- "$tool" render --scene hybrid-glass --scale 0.5 --size 64x64 --technique dsm-color --frames 1 --out glass.png --json glass.json
+grep -q '"casting_meshes": 2' glass.json || { echo "FAILED: glass.json lacks its 2 casting meshes"; failures=$((failures + 1)); }
+expect 0 "--mesh with opacity, colour, transform and --ground" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique rays --frames 1 --mesh small.obj --mesh-opacity 0.4 --mesh-color 1,0.2,0.2 --mesh-transform 0,0,30,0.5 --ground --out meshes.png --json meshes.json
+grep -q '"meshes": 2' meshes.json || { echo "FAILED: meshes.json lacks the mesh and the ground"; failures=$((failures + 1)); }
+expect 0 "an open mesh (meshes need not be closed)" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique shadowmap --frames 1 --mesh open.obj --out open.png
+expect 2 "--mesh-opacity before any --mesh" -- "$tool" render --scene box --mesh-opacity 0.5 --mesh small.obj --out x.png
+expect 2 "--mesh-opacity out of range" -- "$tool" render --scene box --mesh small.obj --mesh-opacity 1.5 --out x.png
+expect 2 "a bad --mesh-color" -- "$tool" render --scene box --mesh small.obj --mesh-color 1,2 --out x.png
+expect 2 "a bad --mesh-transform" -- "$tool" render --scene box --mesh small.obj --mesh-transform 1,2,3,0 --out x.png
+expect 2 "an unsupported --mesh format" -- "$tool" render --scene box --mesh mesh.xyz --out x.png
+# A binary STL of one triangle whose second point has x = NaN (float 0x7fc00000).
+{ head -c 80 /dev/zero; printf '\001\000\000\000'; head -c 12 /dev/zero; head -c 12 /dev/zero
+  printf '\000\000\300\177'; head -c 8 /dev/zero; printf '\000\000\200\077'; head -c 8 /dev/zero
+  head -c 2 /dev/zero; } > nan.stl
+expect 2 "a --mesh with NaN points" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique rays --mesh nan.stl --out x.png
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
