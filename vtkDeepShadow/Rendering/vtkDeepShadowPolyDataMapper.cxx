@@ -73,6 +73,9 @@ public:
 vtkDeepShadowPolyDataMapper::vtkDeepShadowPolyDataMapper()
   : Impl(new Internals)
 {
+  // vtkMapper creates it on first use (GetIsOpaque, in the first frame) and marks itself
+  // modified: the casting meshes would be gathered, and the shadows built, twice.
+  this->CreateDefaultLookupTable();
 }
 
 vtkDeepShadowPolyDataMapper::~vtkDeepShadowPolyDataMapper() = default;
