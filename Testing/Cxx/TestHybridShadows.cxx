@@ -132,7 +132,12 @@ int TestHybridShadows(int argc, char* argv[])
   {
     vtkNew<vtkDeepShadowDeepShadowMapTechnique> first;
     scene.Mapper->SetShadowTechnique(first);
+    scene.Data->Modified(); // uploaded again inside PrepareShadows, which must still not draw
     window->Render();
+    const auto& passes = scene.Mapper->GetLastPasses();
+    ok = Check("a data upload before the meshes: the volume is drawn once",
+           std::count(passes.begin(), passes.end(), "ray-cast") == 1 &&
+             std::count(passes.begin(), passes.end(), "volume-upload") == 1) && ok;
     const int builds = first->GetBuildCount(), sets = pass->GetSurfaceSetBuilds();
     window->Render();
     ok = Check("the second frame rebuilds nothing", first->GetBuildCount() == builds &&

@@ -280,10 +280,12 @@ public:
     const std::string lastSource = this->LastSource;
     auto bounds = std::move(this->Bounds);
     auto surfaces = std::move(this->Surfaces);
+    const bool prepareOnly = this->PrepareOnly; // a data change inside PrepareShadows
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
     this->Surfaces = std::move(surfaces);
+    this->PrepareOnly = prepareOnly;
   }
 };
 
