@@ -183,7 +183,8 @@ public:
   // Surfaces that cast shadows onto the volume, in world space, and the same in index space
   // on the GPU (rebuilt when the set or the volume's placement changes).
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
-  const deepshadow::SurfaceSet* SurfacesBuiltFrom = nullptr;
+  // Held, not a raw pointer: a new set allocated where a freed one was is still new.
+  std::shared_ptr<const deepshadow::SurfaceSet> SurfacesBuiltFrom;
   glm::dmat4 SurfacesWorldToIndex{ 0.0 };
   deepshadow::SurfaceTextures SurfacesGPU;
   vtkSmartPointer<vtkTextureObject> SurfaceNodes;
@@ -958,10 +959,10 @@ bool vtkDeepShadowVolumeMapper::UpdateSurfaces(vtkOpenGLRenderWindow* window, co
   Internals& impl = *this->Impl;
   if (!impl.Surfaces || impl.Surfaces->Empty())
   {
-    impl.SurfacesBuiltFrom = nullptr;
+    impl.SurfacesBuiltFrom.reset();
     return true;
   }
-  if (impl.SurfacesBuiltFrom == impl.Surfaces.get() && impl.SurfacesWorldToIndex == worldToIndex)
+  if (impl.SurfacesBuiltFrom == impl.Surfaces && impl.SurfacesWorldToIndex == worldToIndex)
   {
     return true;
   }
@@ -980,7 +981,7 @@ bool vtkDeepShadowVolumeMapper::UpdateSurfaces(vtkOpenGLRenderWindow* window, co
   impl.SurfacesGPU.Root = data.Root;
   impl.SurfacesGPU.Transmission = data.Transmission;
   impl.SurfacesGPU.Transmission.resize(deepshadow::SurfaceSet::MaxSurfaces, glm::vec4(1.0f));
-  impl.SurfacesBuiltFrom = impl.Surfaces.get();
+  impl.SurfacesBuiltFrom = impl.Surfaces;
   impl.SurfacesWorldToIndex = worldToIndex;
   ++this->SurfaceUploads;
   this->LastPasses.emplace_back("surface-upload");
