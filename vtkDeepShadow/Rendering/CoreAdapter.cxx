@@ -12,6 +12,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkCellData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -306,6 +307,20 @@ TransferFunction MakeTransferFunction(vtkVolumeProperty* property)
   }
   tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0);
   return tf;
+}
+
+SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
+{
+  SurfaceMaterial material;
+  double color[3];
+  property->GetColor(color);
+  material.Color = glm::dvec3(color[0], color[1], color[2]);
+  material.Opacity = std::clamp(property->GetOpacity(), 0.0, 1.0);
+  material.Shading.Ambient = property->GetAmbient();
+  material.Shading.Diffuse = property->GetDiffuse();
+  material.Shading.Specular = property->GetSpecular();
+  material.Shading.SpecularPower = property->GetSpecularPower();
+  return material;
 }
 
 Material MakeMaterial(vtkVolumeProperty* property)

@@ -7,6 +7,7 @@
 #include "Camera.h"
 #include "Light.h"
 #include "OpticalModel.h"
+#include "SurfaceSet.h"
 #include "TransferFunction.h"
 #include "VolumeGrid.h"
 
@@ -20,6 +21,7 @@ class vtkDataArray;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkPolyData;
+class vtkProperty;
 class vtkRenderer;
 class vtkVolumeProperty;
 
@@ -57,6 +59,8 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
  */
 TransferFunction MakeTransferFunction(vtkVolumeProperty* property);
 Material MakeMaterial(vtkVolumeProperty* property);
+/** A mesh's material from its actor's vtkProperty: colour, opacity (clamped to [0, 1]), Phong. */
+SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);
 
 /**
  * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and

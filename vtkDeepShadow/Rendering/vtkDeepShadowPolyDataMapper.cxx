@@ -216,13 +216,7 @@ bool vtkDeepShadowPolyDataMapper::GetSurfaceMesh(vtkActor* actor, deepshadow::Su
   {
     mesh.Triangles.emplace_back(impl.Indices[t], impl.Indices[t + 1], impl.Indices[t + 2]);
   }
-  vtkProperty* property = actor->GetProperty();
-  double color[3];
-  property->GetColor(color);
-  mesh.Material.Opacity = std::clamp(property->GetOpacity(), 0.0, 1.0);
-  mesh.Material.Color = glm::dvec3(color[0], color[1], color[2]);
-  mesh.Material.Shading = deepshadow::Material{ property->GetAmbient(), property->GetDiffuse(),
-    property->GetSpecular(), property->GetSpecularPower() };
+  mesh.Material = adapter::MakeSurfaceMaterial(actor->GetProperty());
   mesh.ReceivesShadows = this->ReceiveShadows;
   return true;
 }
@@ -318,11 +312,9 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   }
 
   deepshadow::UniformSink sink(program);
-  vtkProperty* property = actor->GetProperty();
+  const deepshadow::SurfaceMaterial material = adapter::MakeSurfaceMaterial(actor->GetProperty());
   const std::vector<deepshadow::Light> lights = context ? context->Lights : adapter::MakeLights(renderer);
-  deepshadow::SetLightingUniforms(sink, lights, renderer,
-    deepshadow::Material{ property->GetAmbient(), property->GetDiffuse(), property->GetSpecular(),
-      property->GetSpecularPower() });
+  deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading);
   const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
   sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
   sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));
@@ -369,9 +361,8 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
     vtkOpenGLState::ScopedglDepthMask depthMask(state);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
     state->vtkglEnable(GL_DEPTH_TEST);
-    const double opacity = std::clamp(property->GetOpacity(), 0.0, 1.0);
-    sink.Set("u_opacity", static_cast<float>(opacity));
-    if (opacity < 1.0)
+    sink.Set("u_opacity", static_cast<float>(material.Opacity));
+    if (material.Opacity < 1.0)
     {
       // Premultiplied "over"; translucent meshes do not hide what is drawn after them.
       state->vtkglEnable(GL_BLEND);
