@@ -2,6 +2,7 @@
 // Features/Surfaces.glsl, and the ground truth of hybrid scenes.
 #include "LightSpace.h"
 #include "Shadows.h"
+#include "SlabScene.h"
 #include "SurfaceSet.h"
 
 #include <gtest/gtest.h>
@@ -26,27 +27,15 @@ SurfaceMesh Square(double height, double opacity, const glm::dvec3& color = glm:
   return mesh;
 }
 
-// 21^3 points spanning [0, 20]^3, value 1 for z in [8, 12] (opacity `slab` per unit), else 0.
-struct HybridScene
+// The slab scene (value 1 for z in [8, 12], opacity `slab` per unit) with casting surfaces.
+struct HybridScene : deepshadow::testing::SlabScene
 {
-  std::shared_ptr<VolumeGrid> Grid;
-  TransferFunction Transfer;
   SurfaceSet Surfaces;
-  ShadowCaster Caster;
 
   HybridScene(double slab, std::vector<SurfaceMesh> meshes)
-    : Surfaces(std::move(meshes))
+    : SlabScene(slab)
+    , Surfaces(std::move(meshes))
   {
-    std::vector<float> values(21 * 21 * 21, 0.0f);
-    for (int k = 8; k <= 12; ++k)
-      for (int j = 0; j < 21; ++j)
-        for (int i = 0; i < 21; ++i)
-          values[i + 21 * (j + 21 * k)] = 1.0f;
-    this->Grid = std::make_shared<VolumeGrid>(glm::ivec3(21), values, glm::dmat4(1.0));
-    this->Transfer = TransferFunction::Grey({ { 0.0, 0.0 }, { 0.999, 0.0 }, { 1.0, slab } });
-    this->Caster.Grid = this->Grid.get();
-    this->Caster.Transfer = &this->Transfer;
-    this->Caster.Sampling = Interpolation::Nearest;
     this->Caster.Surfaces = &this->Surfaces;
   }
 };
