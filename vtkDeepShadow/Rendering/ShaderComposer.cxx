@@ -12,8 +12,10 @@
 #include "vtkDeepShadowFeatureMeshNormal.h"
 #include "vtkDeepShadowFeaturePhong.h"
 #include "vtkDeepShadowFeatureSurfaces.h"
+#include "vtkDeepShadowFeatureTranslucentLayers.h"
 #include "vtkDeepShadowFeatureTriangleHierarchy.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
+#include "vtkDeepShadowFeaturePeel.h"
 #include "vtkDeepShadowFeatureShadowTerm.h"
 #include "vtkDeepShadowFeatureVolumeSampling.h"
 
@@ -65,6 +67,7 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("Lighting", vtkDeepShadowFeatureLighting);
     add("MeshNormal", vtkDeepShadowFeatureMeshNormal);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
+    add("Peel", vtkDeepShadowFeaturePeel);
     add("Phong", vtkDeepShadowFeaturePhong);
     add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
     add("Surfaces", vtkDeepShadowFeatureSurfaces);
@@ -95,6 +98,19 @@ ShaderFeature BoundShaderFeature(int leaves)
   const std::string dec = "//@Dec\n";
   source.insert(source.find(dec) + dec.size(), "#define BOUND_LEAVES " + std::to_string(leaves) + "\n");
   return ShaderFeature("Bound", source);
+}
+
+ShaderFeature TranslucentLayersShaderFeature(int layers)
+{
+  std::string source = vtkDeepShadowFeatureTranslucentLayers;
+  std::string defines = "#define TRANSLUCENT_LAYERS " + std::to_string(layers) + "\n#define LOAD_TRANSLUCENT_LAYERS";
+  for (int k = 0; k < layers; ++k)
+  {
+    defines += " LOAD_LAYER(" + std::to_string(k) + ")";
+  }
+  const std::string dec = "//@Dec\n";
+  source.insert(source.find(dec) + dec.size(), defines + "\n");
+  return ShaderFeature("TranslucentLayers", source);
 }
 
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,

@@ -36,6 +36,9 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 /** The Bound feature for a region of `leaves` leaves (BOUND_LEAVES defined in its Dec part). */
 ShaderFeature BoundShaderFeature(int leaves);
 
+/** The TranslucentLayers feature for `layers` peeled layers (Rendering/Translucency). */
+ShaderFeature TranslucentLayersShaderFeature(int layers);
+
 /**
  * Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing.
  * `runtime` features (built at run time, e.g. a shadow technique's "Shadow") take precedence

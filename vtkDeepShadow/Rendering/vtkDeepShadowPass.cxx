@@ -1,12 +1,14 @@
 #include "vtkDeepShadowPass.h"
 
 #include "SurfaceSet.h"
+#include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkProperty.h"
@@ -14,6 +16,7 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -25,6 +28,7 @@ public:
   std::vector<double> SurfaceKey;
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
   std::vector<vtkDeepShadowPolyDataMapper*> Receivers;
+  deepshadow::TranslucentLayers Layers;
 };
 
 vtkDeepShadowPass::vtkDeepShadowPass()
@@ -149,7 +153,29 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     impl.Receivers.push_back(entry.second);
   }
 
-  this->Superclass::Render(state);
+  // Translucent meshes go into layers when a volume will merge them.
+  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
+  if (this->TranslucentLayers > 0 && !volumes.empty())
+  {
+    for (const auto& entry : meshes)
+    {
+      if (entry.first->HasTranslucentPolygonalGeometry())
+      {
+        peeled.push_back(entry);
+      }
+    }
+  }
+  this->PeeledLayers = 0;
+  this->TranslucentLayersOverflowed = false;
+  if (peeled.empty())
+  {
+    this->Superclass::Render(state);
+  }
+  else
+  {
+    this->RenderWithLayers(state, volumes.front().second, peeled);
+  }
+  this->TranslucentLayerBytes = impl.Layers.GetBytes();
 
   // The source is valid for this frame only.
   for (vtkDeepShadowPolyDataMapper* mapper : impl.Receivers)
@@ -158,9 +184,60 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   }
 }
 
+void vtkDeepShadowPass::RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+  const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled)
+{
+  Internals& impl = *this->Impl;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  this->NumberOfRenderedProps = 0;
+  this->RenderOpaqueGeometry(state);
+
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  impl.Layers.Peel(window, x0, y0, width, height, this->TranslucentLayers,
+    [&](const deepshadow::PeelStep& step) {
+      for (const auto& [actor, mapper] : peeled)
+      {
+        mapper->SetPeelStep(&step);
+        actor->RenderTranslucentPolygonalGeometry(renderer);
+        mapper->SetPeelStep(nullptr);
+      }
+    });
+  this->PeeledLayers = impl.Layers.GetLayerCount();
+  this->TranslucentLayersOverflowed = impl.Layers.GetOverflowed();
+  impl.Layers.Composite(window, x0, y0, width, height);
+  this->NumberOfRenderedProps += static_cast<int>(peeled.size());
+
+  // Other translucent props (not ours) as vtkDefaultPass draws them.
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    const bool isPeeled = std::any_of(
+      peeled.begin(), peeled.end(), [prop](const auto& entry) { return entry.first == prop; });
+    if (!isPeeled)
+    {
+      this->NumberOfRenderedProps += prop->RenderTranslucentPolygonalGeometry(renderer);
+    }
+  }
+
+  merging->SetTranslucentLayers(&impl.Layers);
+  this->RenderVolumetricGeometry(state);
+  merging->SetTranslucentLayers(nullptr);
+  this->RenderOverlay(state);
+}
+
+void vtkDeepShadowPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Impl->Layers.Release(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
 void vtkDeepShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SurfaceSetBuilds: " << this->SurfaceSetBuilds << "\n";
   os << indent << "CastingMeshes: " << this->CastingMeshes << "\n";
+  os << indent << "TranslucentLayers: " << this->TranslucentLayers << "\n";
+  os << indent << "PeeledLayers: " << this->PeeledLayers << "\n";
 }

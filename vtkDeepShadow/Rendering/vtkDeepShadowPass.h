@@ -13,9 +13,16 @@
  * ReceiveShadows on looks them up. Then the props are drawn as vtkDefaultPass draws them
  * (opaque, translucent, volumes, overlay).
  *
+ *
+ * Translucent meshes and the volume are composited in depth order along each view ray: the
+ * translucent meshes are peeled into TranslucentLayers layers (depth peeling), and the first
+ * visible volume merges them into its ray march at their depths, as the CPU reference does.
+ * Pixels that volume does not cover get the layers by a full-screen pass. Fragments behind
+ * the last layer are left out (GetTranslucentLayersOverflowed says when). With
+ * TranslucentLayers 0, or with no volume, translucent meshes are blended as VTK blends them.
+ *
  * Limits of this version: meshes receive from one volume's structures (the first shadowing
- * one); a translucent mesh is blended in VTK's translucent pass, before volumes, so a volume
- * in front of it is composited correctly but one behind it is drawn over it too.
+ * one); only the first volume merges the layers (a second volume is blended over them).
  */
 #ifndef vtkDeepShadowPass_h
 #define vtkDeepShadowPass_h
@@ -23,8 +30,14 @@
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkDefaultPass.h"
 
-#include <memory> // For std::unique_ptr
-#include <string> // For std::string
+#include <memory>  // For std::unique_ptr
+#include <string>  // For std::string
+#include <utility> // For std::pair
+#include <vector>  // For std::vector
+
+class vtkActor;
+class vtkDeepShadowPolyDataMapper;
+class vtkDeepShadowVolumeMapper;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPass : public vtkDefaultPass
 {
@@ -34,11 +47,28 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /** Times the casting meshes were gathered into a new set (observability). */
   vtkGetMacro(SurfaceSetBuilds, int);
   /** Casting meshes in the last set. */
   vtkGetMacro(CastingMeshes, int);
+  ///@{
+  /**
+   * Layers the translucent meshes are peeled into when a volume is in the scene (default 4;
+   * 0 turns the merging off). Each layer costs 8 bytes a pixel and one more drawing of the
+   * translucent meshes.
+   */
+  vtkSetClampMacro(TranslucentLayers, int, 0, 8);
+  vtkGetMacro(TranslucentLayers, int);
+  ///@}
+  /** Layers peeled in the last frame (0: nothing was peeled). */
+  vtkGetMacro(PeeledLayers, int);
+  /** Whether translucent fragments were left behind the last layer in the last frame. */
+  vtkGetMacro(TranslucentLayersOverflowed, bool);
+  /** GPU memory of the layers (and the opaque image copy they need), in bytes. */
+  vtkGetMacro(TranslucentLayerBytes, long long);
+
   /** Why the last frame's meshes cast no shadows (e.g. a mesh with NaN points); "" if none. */
   const std::string& GetLastError() const { return this->LastError; }
 
@@ -48,7 +78,15 @@ protected:
 
   int SurfaceSetBuilds = 0;
   int CastingMeshes = 0;
+  int TranslucentLayers = 4;
+  int PeeledLayers = 0;
+  bool TranslucentLayersOverflowed = false;
+  long long TranslucentLayerBytes = 0;
   std::string LastError;
+
+  /** Opaque, translucent (peeled and merged into the first volume), volumes, overlay. */
+  void RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+    const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled);
 
 private:
   vtkDeepShadowPass(const vtkDeepShadowPass&) = delete;

@@ -5,6 +5,7 @@
 #include "ShaderComposer.h"
 #include "Shadows/ShadowContext.h"
 #include "SurfaceSet.h"
+#include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowSurfaceFS.h"
 #include "vtkDeepShadowSurfaceVS.h"
 #include "vtkDeepShadowTechnique.h"
@@ -62,6 +63,7 @@ public:
 
   const deepshadow::ShadowContext* Context = nullptr;
   vtkDeepShadowTechnique* Technique = nullptr;
+  const deepshadow::PeelStep* Peel = nullptr;
 
   /**
    * Triangles, normals and colours of the input, rebuilt only when something they depend on
@@ -79,6 +81,11 @@ vtkDeepShadowPolyDataMapper::vtkDeepShadowPolyDataMapper()
 }
 
 vtkDeepShadowPolyDataMapper::~vtkDeepShadowPolyDataMapper() = default;
+
+void vtkDeepShadowPolyDataMapper::SetPeelStep(const deepshadow::PeelStep* step)
+{
+  this->Impl->Peel = step;
+}
 
 void vtkDeepShadowPolyDataMapper::SetShadowSource(
   const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique)
@@ -291,6 +298,11 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
       features.insert(feature);
     }
   }
+  const deepshadow::PeelStep* peel = impl.Peel;
+  if (peel)
+  {
+    features.insert("Peel");
+  }
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features, runtime);
   this->ShaderFeatures.assign(features.begin(), features.end());
   if (technique)
@@ -336,6 +348,12 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
       : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
     sink.Set("u_receiverOffset", static_cast<float>(bias));
   }
+  if (peel)
+  {
+    peel->Previous->Activate();
+    sink.Set("u_peelPrevious", peel->Previous->GetTextureUnit());
+    sink.Set("u_peelHasPrevious", peel->First ? 0 : 1);
+  }
 
   const bool programChanged = impl.VertexArrayProgram != program;
   if (programChanged)
@@ -362,7 +380,13 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
     state->vtkglEnable(GL_DEPTH_TEST);
     sink.Set("u_opacity", static_cast<float>(material.Opacity));
-    if (material.Opacity < 1.0)
+    if (peel)
+    {
+      // One layer: the nearest fragment behind the previous layer wins the depth test.
+      state->vtkglDisable(GL_BLEND);
+      state->vtkglDepthMask(GL_TRUE);
+    }
+    else if (material.Opacity < 1.0)
     {
       // Premultiplied "over"; translucent meshes do not hide what is drawn after them.
       state->vtkglEnable(GL_BLEND);
@@ -378,6 +402,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   }
   impl.Triangles->Release();
   impl.VertexArray->Release();
+  if (peel)
+  {
+    peel->Previous->Deactivate();
+  }
   if (technique)
   {
     technique->Unbind(true);

@@ -32,6 +32,7 @@
 
 namespace deepshadow
 {
+struct PeelStep;
 struct ShadowContext;
 struct SurfaceMesh;
 }
@@ -81,6 +82,8 @@ public:
   // ---- Used by vtkDeepShadowPass, not by applications ----
   /** Where this frame's shadows come from (null: lit without shadows). */
   void SetShadowSource(const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique);
+  /** While set, Render draws one layer of depth peeling (see Translucency/TranslucentLayers.h). */
+  void SetPeelStep(const deepshadow::PeelStep* step);
 
 protected:
   vtkDeepShadowPolyDataMapper();

@@ -5,9 +5,11 @@
 #include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
 #include "GL/FloatTexels.h"
+#include "GL/FramebufferCopy.h"
 #include "LightingUniforms.h"
 #include "SurfaceSet.h"
 #include "ShaderComposer.h"
+#include "Translucency/TranslucentLayers.h"
 #include "TransferFunction.h"
 #include "vtkDeepShadowVolumeFS.h"
 #include "vtkDeepShadowVolumeVS.h"
@@ -89,31 +91,6 @@ bool HasOpaqueGeometry(vtkRenderer* renderer)
   return false;
 }
 
-// vtkTextureObject depth format of the read framebuffer's depth attachment, or
-// DepthStencilFormat when it also has stencil bits.
-constexpr int DepthStencilFormat = -2;
-int ReadFramebufferDepthFormat()
-{
-  GLint depthBits = 0, stencilBits = 0, componentType = 0;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-    GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
-  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
-    GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
-  glGetError(); // a framebuffer without stencil attachment may flag the last query
-  if (stencilBits > 0)
-  {
-    return DepthStencilFormat;
-  }
-  if (componentType == GL_FLOAT)
-  {
-    return vtkTextureObject::Float32;
-  }
-  return depthBits <= 16 ? vtkTextureObject::Fixed16
-                         : depthBits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32;
-}
-
 vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
@@ -156,10 +133,7 @@ public:
   double EmptyBlockFraction = 0.0;
 
   // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
-  vtkSmartPointer<vtkTextureObject> Depth;
-  vtkSmartPointer<vtkTextureObject> DepthColor;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
-  int DepthFormat = -1;
+  deepshadow::FramebufferCopy Opaque;
 
   // Proxy geometry.
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
@@ -198,65 +172,20 @@ public:
   bool KeepPasses = false;
   std::optional<deepshadow::ShadowContext> Receivers;
 
-  // Copies the depth of the opaque geometry in the viewport into Depth.
-  void CaptureDepth(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height)
-  {
-    vtkOpenGLState* state = window->GetState();
-    if (!this->Depth)
-    {
-      this->Depth = NewTexture(window);
-      this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
-      this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-      this->DepthColor = NewTexture(window);
-      this->DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      this->DepthFramebuffer->SetContext(window);
-    }
-    // A depth blit needs identical formats: match whatever the current framebuffer has.
-    const int depthFormat = ReadFramebufferDepthFormat();
-    if (!this->Depth->GetHandle() || depthFormat != this->DepthFormat)
-    {
-      this->Depth->ReleaseGraphicsResources(window);
-      this->DepthColor->ReleaseGraphicsResources(window);
-      this->DepthFramebuffer->ReleaseGraphicsResources(window);
-      this->DepthFormat = depthFormat;
-      if (depthFormat == DepthStencilFormat)
-      {
-        this->Depth->AllocateDepthStencil(width, height);
-      }
-      else
-      {
-        this->Depth->AllocateDepth(width, height, depthFormat);
-      }
-      this->DepthColor->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-      state->PushDrawFramebufferBinding();
-      this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-      this->DepthFramebuffer->AddDepthAttachment(this->Depth);
-      this->DepthFramebuffer->AddColorAttachment(0, this->DepthColor);
-      state->PopDrawFramebufferBinding();
-    }
-    this->Depth->Resize(width, height);
-    this->DepthColor->Resize(width, height);
-    state->PushDrawFramebufferBinding();
-    this->DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    state->vtkglBlitFramebuffer(x0, y0, x0 + width, y0 + height, 0, 0, width, height,
-      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    state->PopDrawFramebufferBinding();
-  }
+  // vtkDeepShadowPass's translucent layers for this frame.
+  const deepshadow::TranslucentLayers* Layers = nullptr;
 
   void Release(vtkWindow* window)
   {
     for (vtkTextureObject* texture : { this->Volume.Get(), this->Transfer.Get(),
-           this->Occupancy.Get(), this->Depth.Get(), this->DepthColor.Get() })
+           this->Occupancy.Get() })
     {
       if (texture)
       {
         texture->ReleaseGraphicsResources(window);
       }
     }
-    if (this->DepthFramebuffer)
-    {
-      this->DepthFramebuffer->ReleaseGraphicsResources(window);
-    }
+    this->Opaque.Release(window);
     if (this->VertexArray)
     {
       this->VertexArray->ReleaseGraphicsResources();
@@ -281,12 +210,15 @@ public:
     const std::string lastSource = this->LastSource;
     auto bounds = std::move(this->Bounds);
     auto surfaces = std::move(this->Surfaces);
-    const bool prepareOnly = this->PrepareOnly; // a data change inside PrepareShadows
+    // What the pass set for this frame survives a data change inside it.
+    const bool prepareOnly = this->PrepareOnly;
+    const deepshadow::TranslucentLayers* layers = this->Layers;
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
     this->Surfaces = std::move(surfaces);
     this->PrepareOnly = prepareOnly;
+    this->Layers = layers;
   }
 };
 
@@ -803,6 +735,12 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("OpaqueDepth");
   }
+  const deepshadow::TranslucentLayers* layers = impl.Layers;
+  if (layers)
+  {
+    features.insert("TranslucentLayers");
+    runtime["TranslucentLayers"] = layers->GetShaderFeature();
+  }
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features, runtime);
   if (source != impl.LastSource)
   {
@@ -830,7 +768,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   vtkOpenGLState* state = window->GetState();
   if (needDepth)
   {
-    impl.CaptureDepth(window, x0, y0, width, height);
+    impl.Opaque.Capture(window, x0, y0, width, height, false);
   }
 
   // 6. Uniforms.
@@ -853,8 +791,8 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
   if (needDepth)
   {
-    impl.Depth->Activate();
-    sink.Set("u_opaqueDepth", impl.Depth->GetTextureUnit());
+    impl.Opaque.GetDepth()->Activate();
+    sink.Set("u_opaqueDepth", impl.Opaque.GetDepth()->GetTextureUnit());
   }
   if (lit)
   {
@@ -864,6 +802,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (technique)
   {
     technique->Bind(sink, context);
+  }
+  if (layers)
+  {
+    layers->Activate(sink);
   }
 
   // 7. Draw the back faces of the box.
@@ -904,8 +846,15 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglDepthMask depthMask(state);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (layers)
+    {
+      state->vtkglDisable(GL_BLEND); // the shader composited the opaque image itself
+    }
+    else
+    {
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglEnable(GL_CULL_FACE);
@@ -927,11 +876,15 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     technique->Unbind();
   }
+  if (layers)
+  {
+    layers->Deactivate();
+  }
   context.DeactivateVolumeTextures();
   impl.Transfer->Deactivate();
   if (needDepth)
   {
-    impl.Depth->Deactivate();
+    impl.Opaque.GetDepth()->Deactivate();
   }
   this->GPUMemoryBytes = static_cast<long long>(impl.Dims.x) * impl.Dims.y * impl.Dims.z *
       (impl.ScalarMap.x == 255.0 ? 1 : impl.ScalarMap.x == 1.0 ? 4 : 2) +
@@ -943,6 +896,11 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastError.clear();
   }
   ++this->RenderCount;
+}
+
+void vtkDeepShadowVolumeMapper::SetTranslucentLayers(const deepshadow::TranslucentLayers* layers)
+{
+  this->Impl->Layers = layers;
 }
 
 void vtkDeepShadowVolumeMapper::SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces)

@@ -42,6 +42,7 @@ class vtkDeepShadowTechnique;
 namespace deepshadow
 {
 class SurfaceSet;
+class TranslucentLayers;
 struct ShadowContext;
 }
 class vtkOpenGLRenderWindow;
@@ -178,6 +179,13 @@ public:
    * until the next frame. The frame's Render() then finds nothing left to build.
    */
   const deepshadow::ShadowContext* PrepareShadows(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * Used by vtkDeepShadowPass for one frame: the peeled layers of the translucent meshes,
+   * which the ray caster composites at their depths along each view ray, with the opaque
+   * image behind them (the volume's pixels are replaced, not blended). Null: none.
+   */
+  void SetTranslucentLayers(const deepshadow::TranslucentLayers* layers);
 
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();

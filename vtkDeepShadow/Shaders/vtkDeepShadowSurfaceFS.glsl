@@ -19,11 +19,14 @@ uniform float u_opacity;      // the actor's
 //DeepShadow::Feeler::Dec
 //DeepShadow::MeshNormal::Dec
 //DeepShadow::Lighting::Dec
+//DeepShadow::Peel::Dec
 
 void main()
 {
+  //DeepShadow::Peel::Init
   vec3 toViewer = u_parallel != 0 ? -u_viewDirection : normalize(u_cameraPosition - v_position);
   vec3 color = lightSample(v_color.rgb, vec3(0.0), v_position, toViewer);
   float alpha = v_color.a * u_opacity;
   fragColor = vec4(color * alpha, alpha);
+  //DeepShadow::Peel::Exit
 }

@@ -39,6 +39,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Surfaces::Dec
 //DeepShadow::Feeler::Dec
 //DeepShadow::Lighting::Dec
+//DeepShadow::TranslucentLayers::Dec
 
 void main()
 {
@@ -55,9 +56,11 @@ void main()
   float t1 = inside.y;
 
   //DeepShadow::OpaqueDepth::Impl
+  //DeepShadow::TranslucentLayers::Init
 
   if (!(t0 < t1))
   {
+    //DeepShadow::TranslucentLayers::Miss
     discard;
   }
 
@@ -74,6 +77,7 @@ void main()
     {
       break;
     }
+    //DeepShadow::TranslucentLayers::Impl
     //DeepShadow::Bound::Impl
     vec3 index = indexOrigin + t * indexDirection;
     //DeepShadow::EmptySpace::Impl
@@ -88,5 +92,8 @@ void main()
     //DeepShadow::Lighting::Impl
     compositeFrontToBack(accumulated, color, transfer.a);
   }
-  fragColor = accumulated; // premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA)
+  //DeepShadow::TranslucentLayers::Exit
+  // Premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA), or replacing the pixel when the
+  // translucent layers (and the opaque image behind them) are composited here.
+  fragColor = accumulated;
 }
