@@ -352,6 +352,9 @@ SCENE (default: --scene box):
   --mesh-color R,G,B      its colour, also what it lets through (default 0.8,0.8,0.8)
   --mesh-transform TX,TY,TZ[,S]  scale by S about the origin, then translate
   --ground                a ground plane under the volume, on the far side from the light
+  --translucent-layers N  layers the translucent meshes are peeled into, to be composited at
+                          their depths inside the volume (0 to 8, default 4; 0: VTK's order,
+                          translucent meshes first and the volume over them)
 
 VIEW:
   --size WxH              image size (default 512x512)
@@ -543,6 +546,10 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--ground")
     {
       o.Ground = true;
+    }
+    else if (key == "--translucent-layers")
+    {
+      o.TranslucentLayers = ParseInteger(key, next(), 0, 8);
     }
     else if (key == "--csg")
     {

@@ -60,6 +60,7 @@ struct Options
   std::string Csg;                     // --csg: how they combine ("" = their union)
   std::vector<MeshSpec> Meshes;        // --mesh, repeatable: meshes that cast and receive
   bool Ground = false;                 // --ground: a ground plane under the volume
+  int TranslucentLayers = 4;           // --translucent-layers: peeled layers merged into the volume
   bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
   int Width = 512;
   int Height = 512;

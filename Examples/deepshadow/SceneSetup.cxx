@@ -244,6 +244,7 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
     return;
   }
   vtkNew<vtkDeepShadowPass> pass;
+  pass->SetTranslucentLayers(options.TranslucentLayers);
   setup.Renderer->SetPass(pass);
   setup.Pass = pass;
   for (const auto& mesh : meshes)
@@ -261,6 +262,29 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
     setup.Meshes.push_back(mapper);
   }
 }
+}
+
+void RequireSceneName(const std::string& name)
+{
+  if (vtkDeepShadowBoundedScene::IsSceneName(name) || vtkDeepShadowHybridScene::IsSceneName(name) ||
+    vtkDeepShadowStandardScene::IsSceneName(name))
+  {
+    return;
+  }
+  std::string names;
+  for (const auto& known : vtkDeepShadowStandardScene::GetSceneNames())
+  {
+    names += (names.empty() ? "" : ", ") + known;
+  }
+  for (const auto& known : vtkDeepShadowBoundedScene::GetSceneNames())
+  {
+    names += ", " + known;
+  }
+  for (const auto& known : vtkDeepShadowHybridScene::GetSceneNames())
+  {
+    names += ", " + known;
+  }
+  throw UsageError("unknown scene '" + name + "' (scenes: " + names + ")");
 }
 
 SceneSetup SceneSetup::Build(const Options& options)
@@ -296,23 +320,7 @@ SceneSetup SceneSetup::Build(const Options& options)
   {
     const bool bounded = vtkDeepShadowBoundedScene::IsSceneName(options.Scene);
     const bool hybrid = vtkDeepShadowHybridScene::IsSceneName(options.Scene);
-    if (!bounded && !hybrid && !vtkDeepShadowStandardScene::IsSceneName(options.Scene))
-    {
-      std::string names;
-      for (const auto& name : vtkDeepShadowStandardScene::GetSceneNames())
-      {
-        names += (names.empty() ? "" : ", ") + name;
-      }
-      for (const auto& name : vtkDeepShadowBoundedScene::GetSceneNames())
-      {
-        names += ", " + name;
-      }
-      for (const auto& name : vtkDeepShadowHybridScene::GetSceneNames())
-      {
-        names += ", " + name;
-      }
-      throw UsageError("unknown scene '" + options.Scene + "' (scenes: " + names + ")");
-    }
+    RequireSceneName(options.Scene);
     scene->SetScene(bounded ? vtkDeepShadowBoundedScene::GetVolumeSceneName(options.Scene)
         : hybrid        ? vtkDeepShadowHybridScene::GetVolumeSceneName(options.Scene)
                         : options.Scene);

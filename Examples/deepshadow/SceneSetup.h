@@ -48,6 +48,9 @@ struct SceneSetup
   static SceneSetup Build(const Options& options);
 };
 
+/** Throws UsageError, listing the scenes, unless `name` is a standard, bounded or hybrid scene. */
+void RequireSceneName(const std::string& name);
+
 /** The technique --technique names, with its parameters (null for none). */
 vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options);
 

@@ -173,6 +173,11 @@ expect 2 "an unsupported --mesh format" -- "$tool" render --scene box --mesh mes
   printf '\000\000\300\177'; head -c 8 /dev/zero; printf '\000\000\200\077'; head -c 8 /dev/zero
   head -c 2 /dev/zero; } > nan.stl
 expect 2 "a --mesh with NaN points" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique rays --mesh nan.stl --out x.png
+# A translucent mesh inside the volume is peeled into layers the volume composites.
+grep -q '"peeled_layers": 4' meshes.json || { echo "FAILED: meshes.json lacks its 4 peeled layers"; failures=$((failures + 1)); }
+expect 0 "--translucent-layers 0 (VTK's order)" -- "$tool" render --scene box --scale 0.5 --size 64x64 --frames 1 --mesh small.obj --mesh-opacity 0.4 --translucent-layers 0 --out unsorted.png --json unsorted.json
+grep -q '"peeled_layers": 0' unsorted.json || { echo "FAILED: unsorted.json peeled layers"; failures=$((failures + 1)); }
+expect 2 "--translucent-layers out of range" -- "$tool" render --scene box --mesh small.obj --translucent-layers 9 --out x.png
 
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
