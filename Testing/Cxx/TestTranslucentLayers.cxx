@@ -6,8 +6,9 @@
 // volume sample along each ray, within the hybrid tolerances (RMSE <= 2/255, at most 1% of
 // pixels beyond 12/255), with shadows and without. Without the layers (VTK's order: glass
 // first, the volume over it) the same comparison fails: the test can tell them apart.
-// Also: too few layers is said (GetTranslucentLayersOverflowed); peeling rebuilds no shadow
-// structure; a scene without translucent meshes peels nothing.
+// Also: too few layers is said (GetTranslucentLayersOverflowed) and the CPU twin (which keeps
+// as many crossings as there are layers) still matches; peeling rebuilds no shadow structure;
+// a scene without translucent meshes peels nothing.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowPass.h"
@@ -85,11 +86,17 @@ int TestTranslucentLayers(int argc, char* argv[])
            2.0 / 255.0, 12.0 / 255.0, 0.01) &&
            pass->GetPeeledLayers() == 0 && !HasFeature(scene.Mapper, "TranslucentLayers")) && ok;
 
-  // 3. Too few layers: said, and the nearest layers are still right where nothing is cut.
+  // 3. Too few layers: said; the CPU twin leaves out the same crossings (only the nearest
+  //    one per ray), while the exact reference keeps them all.
   pass->SetTranslucentLayers(1);
   window->Render();
   ok = Check("one layer is too few for a pane seen through its two faces",
          pass->GetPeeledLayers() == 1 && pass->GetTranslucentLayersOverflowed()) && ok;
+  ok = WithinTolerance("one layer, against the twin that peels one layer", Grab(window),
+         deepshadow::testing::Reference(renderer, true), 2.0 / 255.0, 12.0 / 255.0, 0.01) && ok;
+  ok = Check("one layer differs from the exact picture",
+         !WithinTolerance("one layer, against the exact reference (expected to differ)", Grab(window),
+           deepshadow::testing::Reference(renderer, false), 2.0 / 255.0, 12.0 / 255.0, 0.01)) && ok;
   pass->SetTranslucentLayers(4);
 
   // 4. With shadows (the glass casts a red shadow into the volume): still the sorted picture,

@@ -285,14 +285,21 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           // between them.
           std::vector<SurfaceHit> hits;
           double tEnd = std::numeric_limits<double>::infinity();
+          int translucent = 0;
           for (SurfaceHit hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0); hit.Found;
                hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
           {
-            hits.push_back(hit);
             if (scene.Surfaces->GetSurface(hit.Surface).Material.Opacity >= 1.0)
             {
+              hits.push_back(hit);
               tEnd = hit.T;
               break;
+            }
+            // Behind the last peeled layer: left out, as on the GPU.
+            if (scene.TranslucentLayers == 0 || translucent < scene.TranslucentLayers)
+            {
+              hits.push_back(hit);
+              ++translucent;
             }
           }
           glm::dvec4 front(0.0); // premultiplied, front to back

@@ -80,6 +80,12 @@ struct Scene
   std::shared_ptr<const SurfaceSet> CastingSurfaces;
   /** World distance of a mesh receiver's shadow lookup towards the light (0: the default). */
   double ReceiverBias = 0.0;
+  /**
+   * 0: every translucent mesh crossing along a view ray is composited (exact). n > 0: the
+   * twin of the GPU's depth peeling into n layers: only the n nearest translucent crossings
+   * (opaque meshes still end the ray).
+   */
+  int TranslucentLayers = 0;
 };
 
 /**

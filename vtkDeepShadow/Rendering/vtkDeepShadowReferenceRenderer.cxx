@@ -4,6 +4,7 @@
 #include "ReferenceRenderer.h"
 #include "Shadows.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -163,6 +164,11 @@ bool vtkDeepShadowReferenceRenderer::Render(
       casting.push_back(mesh);
     }
     drawn.push_back(std::move(mesh));
+  }
+  // The GPU twin peels translucent meshes into as many layers as the scene pass does.
+  if (auto* pass = vtkDeepShadowPass::SafeDownCast(renderer->GetPass()))
+  {
+    scene.TranslucentLayers = this->GpuTwin ? pass->GetTranslucentLayers() : 0;
   }
   try
   {

@@ -12,7 +12,8 @@
  * - exact (default): transfer functions evaluated exactly, no early ray termination; this is
  *   the ground truth every reported error is measured against;
  * - GpuTwin: what vtkDeepShadowVolumeMapper computes (its transfer table, its termination
- *   opacity, its jitter), to compare GPU and CPU formula by formula.
+ *   opacity, its jitter, and under a vtkDeepShadowPass only as many translucent mesh crossings
+ *   per view ray as it peels layers), to compare GPU and CPU formula by formula.
  * Shadows follow each mapper's vtkDeepShadowTechnique (its CPU twin), or the ground truth.
  * The image shows what the mapper's OutputMode says: the lit colour, or the shadow term.
  */
