@@ -4,7 +4,7 @@
 # short error-against-run-time report of every shadow technique into out/report; and the
 # bounded scenes (volumes inside CSG bounds) with deep shadows into out/bounded; and the
 # hybrid scenes (meshes and volumes shadowing each other) with coloured deep shadows into
-# out/hybrid.
+# out/hybrid, and their short error-against-run-time report into out/report-hybrid.
 # Extra arguments go to `deepshadow all` (e.g. --size 256x256).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -22,3 +22,5 @@ for scene in hybrid-ground hybrid-glass hybrid-rod; do
   "$root/build/bin/deepshadow" render --scene "$scene" --technique dsm-color --frames 1 \
     --out "$root/out/hybrid/$scene.png" --json "$root/out/hybrid/$scene.json"
 done
+"$root/build/bin/deepshadow" report --quick --scenes hybrid-ground,hybrid-glass,hybrid-rod \
+  --out "$root/out/report-hybrid"

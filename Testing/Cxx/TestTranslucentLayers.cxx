@@ -122,6 +122,24 @@ int TestTranslucentLayers(int argc, char* argv[])
   pane->GetProperty()->SetOpacity(0.35);
   ball->GetProperty()->SetOpacity(0.4);
 
+  // 6. A second volume: defined, not sorted with the first. The first volume in the renderer
+  //    merges the layers; the second is blended over the picture, as VTK does.
+  {
+    vtkNew<vtkDeepShadowVolumeMapper> secondMapper;
+    secondMapper->SetInputData(deepshadow::testing::MakeShadowVolume(16));
+    vtkNew<vtkVolume> second;
+    second->SetMapper(secondMapper);
+    second->SetProperty(scene.Property);
+    second->SetPosition(60.0, -60.0, 0.0);
+    renderer->AddVolume(second);
+    window->Render();
+    ok = Check("two volumes: the first merges the layers, the second draws without them",
+           pass->GetPeeledLayers() == 4 && HasFeature(scene.Mapper, "TranslucentLayers") &&
+             !HasFeature(secondMapper, "TranslucentLayers") && secondMapper->GetLastError().empty() &&
+             scene.Mapper->GetLastError().empty()) && ok;
+    renderer->RemoveVolume(second);
+  }
+
   window->Render();
   const int result = vtkRegressionTestImage(window);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
