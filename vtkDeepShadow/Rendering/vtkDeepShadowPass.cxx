@@ -155,7 +155,8 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
 
   // Translucent meshes go into layers when a volume will merge them.
   std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
-  if (this->TranslucentLayers > 0 && !volumes.empty())
+  if (this->TranslucentLayers > 0 && !volumes.empty() &&
+    vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()))
   {
     for (const auto& entry : meshes)
     {

@@ -15,6 +15,8 @@
  *   scaled by the visibility the shadowing volume's technique gives, exactly as for volume
  *   samples. The lookup starts ShadowBias world units towards the light (more at grazing
  *   light: deepshadow::ReceiverOffset), so a mesh that casts does not shadow itself (acne).
+ * - when translucent in a scene with a volume, it is peeled into layers that the volume
+ *   composites at their depths along each view ray (vtkDeepShadowPass::SetTranslucentLayers).
  * Without the pass, the mesh is lit without shadows.
  *
  * Bad input: no input or no triangles draws nothing (with a warning); non-finite points are
