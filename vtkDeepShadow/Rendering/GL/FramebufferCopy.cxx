@@ -34,6 +34,7 @@ int ReadFramebufferDepthFormat()
   return depthBits <= 16 ? vtkTextureObject::Fixed16
                          : depthBits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32;
 }
+}
 
 vtkSmartPointer<vtkTextureObject> NewNearestTexture(vtkOpenGLRenderWindow* window)
 {
@@ -44,7 +45,6 @@ vtkSmartPointer<vtkTextureObject> NewNearestTexture(vtkOpenGLRenderWindow* windo
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   return texture;
-}
 }
 
 void FramebufferCopy::AllocateMatchingDepth(vtkTextureObject* texture, int width, int height) const

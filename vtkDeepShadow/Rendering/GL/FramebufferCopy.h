@@ -13,6 +13,9 @@ class vtkWindow;
 namespace deepshadow
 {
 
+/** A 2D texture for texelFetch-style reads: clamped, nearest, of `window`'s context. */
+vtkSmartPointer<vtkTextureObject> NewNearestTexture(vtkOpenGLRenderWindow* window);
+
 class FramebufferCopy
 {
 public:

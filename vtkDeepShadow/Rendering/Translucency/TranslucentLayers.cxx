@@ -26,12 +26,7 @@ constexpr GLuint EmptyLayerTexel[4] = { 0x3f800000u, 0u, 0u, 0u };
 
 vtkSmartPointer<vtkTextureObject> NewLayerTexture(vtkOpenGLRenderWindow* window, int width, int height)
 {
-  auto texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(window);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  auto texture = NewNearestTexture(window);
   texture->SetInternalFormat(GL_RG32UI);
   texture->SetFormat(GL_RG_INTEGER);
   texture->SetDataType(GL_UNSIGNED_INT);
