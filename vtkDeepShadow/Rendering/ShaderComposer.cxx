@@ -92,25 +92,30 @@ std::string GlslConstantArray(const std::string& type, const std::string& name,
   return text.str();
 }
 
+namespace
+{
+// A sized feature: its source with `defines` at the top of its Dec part.
+ShaderFeature WithDefines(const char* name, std::string source, const std::string& defines)
+{
+  const std::string dec = "//@Dec\n";
+  source.insert(source.find(dec) + dec.size(), defines + "\n");
+  return ShaderFeature(name, source);
+}
+}
+
 ShaderFeature BoundShaderFeature(int leaves)
 {
-  std::string source = vtkDeepShadowFeatureBound;
-  const std::string dec = "//@Dec\n";
-  source.insert(source.find(dec) + dec.size(), "#define BOUND_LEAVES " + std::to_string(leaves) + "\n");
-  return ShaderFeature("Bound", source);
+  return WithDefines("Bound", vtkDeepShadowFeatureBound, "#define BOUND_LEAVES " + std::to_string(leaves));
 }
 
 ShaderFeature TranslucentLayersShaderFeature(int layers)
 {
-  std::string source = vtkDeepShadowFeatureTranslucentLayers;
   std::string defines = "#define TRANSLUCENT_LAYERS " + std::to_string(layers) + "\n#define LOAD_TRANSLUCENT_LAYERS";
   for (int k = 0; k < layers; ++k)
   {
     defines += " LOAD_LAYER(" + std::to_string(k) + ")";
   }
-  const std::string dec = "//@Dec\n";
-  source.insert(source.find(dec) + dec.size(), defines + "\n");
-  return ShaderFeature("TranslucentLayers", source);
+  return WithDefines("TranslucentLayers", vtkDeepShadowFeatureTranslucentLayers, defines);
 }
 
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,

@@ -23,6 +23,12 @@ vec3 unproject(vec2 ndc, float z)
   return p.xyz / p.w;
 }
 
+// Ray t of the surface drawn at window depth `depth` in this pixel (opaque or peeled).
+float windowDepthToRayT(float depth, vec2 ndc, vec3 rayOrigin, vec3 rayDirection)
+{
+  return dot(unproject(ndc, 2.0 * depth - 1.0) - rayOrigin, rayDirection);
+}
+
 // Front-to-back "over" (deepshadow::CompositeFrontToBack).
 void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 {

@@ -6,7 +6,6 @@ uniform sampler2D u_opaqueDepth; // window depth of the opaque geometry in this 
     float depth = texelFetch(u_opaqueDepth, ivec2(pixel), 0).r;
     if (depth < 1.0)
     {
-      vec3 surface = unproject(ndc, 2.0 * depth - 1.0);
-      t1 = min(t1, dot(surface - rayOrigin, rayDirection));
+      t1 = min(t1, windowDepthToRayT(depth, ndc, rayOrigin, rayDirection));
     }
   }

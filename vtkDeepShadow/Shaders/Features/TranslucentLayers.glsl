@@ -41,9 +41,7 @@ void compositeLayersBefore(float key, inout vec4 accumulated)
   loadLayers(ivec2(pixel));
   for (int i = 0; i < layerCount; ++i)
   {
-    // Window depth to ray t, as OpaqueDepth does for the opaque surface.
-    vec3 surface = unproject(ndc, 2.0 * layerKey[i] - 1.0);
-    layerKey[i] = dot(surface - rayOrigin, rayDirection);
+    layerKey[i] = windowDepthToRayT(layerKey[i], ndc, rayOrigin, rayDirection);
   }
 //@Miss
   {
