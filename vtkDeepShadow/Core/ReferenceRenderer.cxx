@@ -2,6 +2,7 @@
 
 #include "Jitter.h"
 #include "Parallel.h"
+#include "ShadowGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -26,8 +27,14 @@ MarchSettings MarchSettings::GpuTwin(
   return settings;
 }
 
+const LightShadow* ReferenceRenderer::PreparedVolume::ReceiverLookup(size_t light) const
+{
+  const auto& lookups = this->DirectShadows.empty() ? this->Shadows : this->DirectShadows;
+  return light < lookups.size() ? lookups[light].get() : nullptr;
+}
+
 ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
-  const VolumeInstance& volume, const MarchSettings& settings, int threads)
+  const VolumeInstance& volume, const MarchSettings& settings, int threads, bool castSurfaces)
 {
   PreparedVolume prepared;
   const glm::dvec2 range = volume.Grid->GetRange();
@@ -52,7 +59,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Sampling = volume.Sampling;
   caster.Empty = prepared.Empty.get();
   caster.Bound = volume.Bound.get();
-  caster.Surfaces = scene.CastingSurfaces.get();
+  caster.Surfaces = castSurfaces ? scene.CastingSurfaces.get() : nullptr;
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
@@ -70,7 +77,11 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
     {
       prepared.Shadows[l] =
         MakeLightShadow(volume.Shadows, caster, scene.Lights[l], settings.SampleDistance, threads);
-      if (volume.Shadows.Cached && scene.Surfaces && !scene.Surfaces->Empty())
+      // A cache's grid covers its own box only: receivers elsewhere need the technique itself.
+      const bool receiversElsewhere = (scene.Surfaces && !scene.Surfaces->Empty()) ||
+        std::count_if(scene.Volumes.begin(), scene.Volumes.end(),
+          [](const VolumeInstance& v) { return v.Shadows.Kind != ShadowKind::None; }) > 1;
+      if (volume.Shadows.Cached && receiversElsewhere)
       {
         ShadowParameters direct = volume.Shadows;
         direct.Cached = false;
@@ -181,9 +192,15 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
             : volume.Surface.Diffuse * sample.Diffuse * color;
         }
         const bool termReached = wantTerm && sample.Reach > 0.0;
-        if (shadowed && prepared.Shadows[l] && (contribution != glm::dvec3(0.0) || termReached))
+        const LightShadow* own = shadowed ? prepared.Shadows[l].get() : nullptr;
+        const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
+        if ((own || others) && (contribution != glm::dvec3(0.0) || termReached))
         {
-          const glm::dvec3 visibility = prepared.Shadows[l]->Visibility(position);
+          glm::dvec3 visibility = own ? own->Visibility(position) : glm::dvec3(1.0);
+          if (others)
+          {
+            visibility *= others->Visibility(position);
+          }
           const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
           contribution *= factor;
           if (termReached)
@@ -213,8 +230,8 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
 }
 
 glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
-  const SurfaceHit& hit, const Ray& ray, const std::vector<std::unique_ptr<LightShadow>>* shadows,
-  double receiverBias)
+  const SurfaceHit& hit, const Ray& ray, const std::vector<const LightShadow*>& shadows,
+  const std::vector<const LightShadow*>& others, double receiverBias)
 {
   const SurfaceMaterial& material = surfaces.GetSurface(hit.Surface).Material;
   const glm::dvec3 color = surfaces.Color(hit);
@@ -226,10 +243,17 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
     const LightSample sample = scene.Lights[l].At(position);
     glm::dvec3 contribution =
       PhongLight(color, normal, -ray.Direction, sample, material.Shading, scene.TwoSidedLighting);
-    if (shadows && (*shadows)[l] && contribution != glm::dvec3(0.0))
+    const LightShadow* own = l < shadows.size() ? shadows[l] : nullptr;
+    const LightShadow* other = l < others.size() ? others[l] : nullptr;
+    if ((own || other) && contribution != glm::dvec3(0.0))
     {
       const double offset = ReceiverOffset(receiverBias, normal, sample.ToLight);
-      const glm::dvec3 visibility = (*shadows)[l]->Visibility(position + offset * sample.ToLight);
+      const glm::dvec3 at = position + offset * sample.ToLight;
+      glm::dvec3 visibility = own ? own->Visibility(at) : glm::dvec3(1.0);
+      if (other)
+      {
+        visibility *= other->Visibility(at);
+      }
       contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
     }
     lit += contribution;
@@ -248,25 +272,106 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
     *shadowTerm = Image(width, height);
   }
 
-  std::vector<PreparedVolume> prepared;
-  const PreparedVolume* shadowSource = nullptr; // what mesh receivers look up
-  double receiverBias = scene.ReceiverBias;
-  for (const VolumeInstance& volume : scene.Volumes)
-  {
-    prepared.push_back(Prepare(scene, volume, settings, threads));
-  }
-  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  // The first shadowing volume is the meshes' shadow source and holds the casting meshes.
+  size_t source = scene.Volumes.size();
+  for (size_t v = 0; v < scene.Volumes.size() && source == scene.Volumes.size(); ++v)
   {
     if (scene.Volumes[v].Shadows.Kind != ShadowKind::None)
     {
-      shadowSource = &prepared[v];
-      if (!(receiverBias > 0.0))
-      {
-        receiverBias = DefaultReceiverBias(scene.Volumes[v].Shadows.StepFactor * settings.SampleDistance);
-      }
-      break;
+      source = v;
     }
   }
+  std::vector<PreparedVolume> prepared;
+  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  {
+    prepared.push_back(Prepare(scene, scene.Volumes[v], settings, threads, v == source));
+  }
+  double receiverBias = scene.ReceiverBias;
+  if (source < scene.Volumes.size() && !(receiverBias > 0.0))
+  {
+    receiverBias = DefaultReceiverBias(scene.Volumes[source].Shadows.StepFactor * settings.SampleDistance);
+  }
+
+  // What the shadowing volumes other than `skip` cast for light l: their product, exact or
+  // on the pass's grid over `frame`.
+  const auto othersCast = [&](size_t skip, size_t l, const GridFrame* frame) -> std::unique_ptr<LightShadow> {
+    std::vector<const LightShadow*> factors;
+    for (size_t u = 0; u < prepared.size(); ++u)
+    {
+      const LightShadow* lookup = u == skip ? nullptr : prepared[u].ReceiverLookup(l);
+      if (lookup)
+      {
+        factors.push_back(lookup);
+      }
+    }
+    if (factors.empty())
+    {
+      return nullptr;
+    }
+    auto product = std::make_unique<ProductShadow>(std::move(factors));
+    if (!frame)
+    {
+      return product;
+    }
+    const bool colored = std::any_of(scene.Volumes.begin(), scene.Volumes.end(),
+      [](const VolumeInstance& v) { return v.Shadows.IsColored(); });
+    const ProductShadow& evaluate = *product;
+    return std::make_unique<ShadowGrid>(
+      [&evaluate](const glm::dvec3& p) { return evaluate.Visibility(p); }, *frame, colored, threads);
+  };
+  const bool onGrids = scene.OtherVolumeShadowSize > 0;
+  std::vector<std::unique_ptr<LightShadow>> exactOthers; // kept alive for the meshes
+  for (size_t v = 0; v < prepared.size(); ++v)
+  {
+    if (scene.Volumes[v].Shadows.Kind == ShadowKind::None)
+    {
+      continue; // a volume receives shadows when it has a technique
+    }
+    const VolumeGrid& grid = *scene.Volumes[v].Grid;
+    const GridFrame frame =
+      GridFrame::OverVolume(grid.GetDims(), grid.GetIndexToWorld(), scene.OtherVolumeShadowSize);
+    prepared[v].OtherShadows.resize(scene.Lights.size());
+    for (size_t l = 0; l < scene.Lights.size(); ++l)
+    {
+      prepared[v].OtherShadows[l] = othersCast(v, l, onGrids ? &frame : nullptr);
+    }
+  }
+  // Per drawn mesh and light: the source's lookups, and what the other volumes cast onto it.
+  const size_t meshCount = scene.Surfaces ? static_cast<size_t>(scene.Surfaces->GetSurfaceCount()) : 0;
+  std::vector<const LightShadow*> sourceLookups(scene.Lights.size(), nullptr);
+  std::vector<std::vector<const LightShadow*>> meshOthers(meshCount);
+  std::vector<std::unique_ptr<LightShadow>> meshOthersStore;
+  if (source < prepared.size())
+  {
+    for (size_t l = 0; l < scene.Lights.size(); ++l)
+    {
+      sourceLookups[l] = prepared[source].ReceiverLookup(l);
+      if (!onGrids)
+      {
+        exactOthers.push_back(othersCast(source, l, nullptr));
+      }
+    }
+    for (size_t s = 0; s < meshCount; ++s)
+    {
+      const SurfaceMesh& mesh = scene.Surfaces->GetSurface(static_cast<int>(s));
+      if (!mesh.ReceivesShadows)
+      {
+        continue;
+      }
+      glm::dvec3 lo, hi;
+      MeshBounds(mesh, lo, hi);
+      const GridFrame frame = onGrids ? GridFrame::OverBox(lo, hi, scene.OtherVolumeShadowSize) : GridFrame();
+      for (size_t l = 0; l < scene.Lights.size(); ++l)
+      {
+        if (onGrids)
+        {
+          meshOthersStore.push_back(othersCast(source, l, &frame));
+        }
+        meshOthers[s].push_back(onGrids ? meshOthersStore.back().get() : exactOthers[l].get());
+      }
+    }
+  }
+  const std::vector<const LightShadow*> none;
 
   ParallelFor(
     height,
@@ -318,10 +423,7 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
               const SurfaceMaterial& material = scene.Surfaces->GetSurface(hits[h].Surface).Material;
               const bool receives = scene.Surfaces->GetSurface(hits[h].Surface).ReceivesShadows;
               const glm::dvec3 color = ShadeSurface(scene, *scene.Surfaces, hits[h], ray,
-                receives && shadowSource ? (shadowSource->DirectShadows.empty() ? &shadowSource->Shadows
-                                                                                : &shadowSource->DirectShadows)
-                                         : nullptr,
-                receiverBias);
+                receives ? sourceLookups : none, receives ? meshOthers[hits[h].Surface] : none, receiverBias);
               CompositeFrontToBack(front, color, std::clamp(material.Opacity, 0.0, 1.0));
             }
             from = to;

@@ -15,8 +15,14 @@
 //
 // Hybrid scenes: along a view ray, the meshes' crossings and the volumes' samples are composited
 // in depth order (an opaque mesh ends the ray); a mesh point is Phong-lit with its interpolated
-// normal and colour, each light scaled by its visibility from the first shadowing volume's
-// technique, looked up deepshadow::ReceiverOffset towards the light.
+// normal and colour, each light scaled by its visibility, looked up deepshadow::ReceiverOffset
+// towards the light.
+//
+// Several volumes: every volume with a shadow technique casts shadows onto the others and
+// onto the meshes. A light's visibility at a point is the product of every shadowing volume's
+// answer there (optical depths add along a light ray, whatever the order of the volumes).
+// The casting meshes are held by the first shadowing volume's technique only, so that they
+// count once; meshes look that technique up directly and multiply in the other volumes'.
 //
 // With the default MarchSettings it is the exact model (transfer functions evaluated exactly,
 // no early termination). `GpuTwin()` settings reproduce what the GPU computes instead (table
@@ -86,6 +92,13 @@ struct Scene
    * (opaque meshes still end the ray).
    */
   int TranslucentLayers = 0;
+  /**
+   * 0: what other volumes cast onto a receiver is their product evaluated at each point
+   * (exact). n > 0: the twin of vtkDeepShadowPass, which stores that product per light on a
+   * grid of n nodes along the receiver's longest side (GridFrame::OverVolume for a volume,
+   * GridFrame::OverBox over a mesh's points) and interpolates it trilinearly.
+   */
+  int OtherVolumeShadowSize = 0;
 };
 
 /**
@@ -141,9 +154,17 @@ public:
     /** What mesh receivers look up: Shadows, or uncached when they are cached (a cache's grid
      * covers the volume's box only). Empty: the same as Shadows. */
     std::vector<std::unique_ptr<LightShadow>> DirectShadows;
+    /** Per scene light: what the other shadowing volumes cast onto this one (null: none). */
+    std::vector<std::unique_ptr<LightShadow>> OtherShadows;
+    /** What receivers elsewhere look up: DirectShadows if there are any, else Shadows. */
+    const LightShadow* ReceiverLookup(size_t light) const;
   };
+  /**
+   * `castSurfaces`: whether the scene's casting meshes go into this volume's technique (the
+   * first shadowing volume's only; see above). OtherShadows is left to Render().
+   */
   static PreparedVolume Prepare(const Scene& scene, const VolumeInstance& volume,
-    const MarchSettings& settings, int threads = 0);
+    const MarchSettings& settings, int threads = 0, bool castSurfaces = true);
 
   /**
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
@@ -156,12 +177,13 @@ public:
     const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr, double tFrom = -1.0);
 
   /**
-   * Lit colour of a mesh point (`shadows`: the shadowing volume's, per light, or null), as
-   * vtkDeepShadowPolyDataMapper's shader computes it.
+   * Lit colour of a mesh point, as vtkDeepShadowPolyDataMapper's shader computes it.
+   * `shadows`: the first shadowing volume's lookups, per light, or null; `others`: what the
+   * other volumes cast onto this mesh, per light, or null.
    */
   static glm::dvec3 ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
-    const SurfaceHit& hit, const Ray& ray, const std::vector<std::unique_ptr<LightShadow>>* shadows,
-    double receiverBias);
+    const SurfaceHit& hit, const Ray& ray, const std::vector<const LightShadow*>& shadows,
+    const std::vector<const LightShadow*>& others, double receiverBias);
 };
 
 }

@@ -6,6 +6,7 @@
 #include "LightSpace.h"
 #include "OpticalModel.h"
 #include "Parallel.h"
+#include "ShadowGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -245,71 +246,6 @@ private:
   double Step;
 };
 
-// Any technique's answer evaluated once per node of a grid spanning the volume's box, then
-// trilinear: the GPU's 3D shadow texture.
-class CachedShadow : public LightShadow
-{
-public:
-  CachedShadow(const LightShadow& inner, const VolumeGrid& grid, int size, bool colored, int threads)
-    : Colored(colored)
-    , Grid(grid)
-    , Dims(ShadowVolumeDims(grid.GetDims(), size))
-    , Values(3 * static_cast<size_t>(Dims.x) * Dims.y * Dims.z)
-  {
-    const glm::dvec3 nodeToIndex = glm::dvec3(grid.GetDims() - 1) / glm::dvec3(this->Dims - 1);
-    ParallelFor(
-      this->Dims.z,
-      [&](int k) {
-        for (int j = 0; j < this->Dims.y; ++j)
-        {
-          for (int i = 0; i < this->Dims.x; ++i)
-          {
-            const glm::dvec3 index = glm::dvec3(i, j, k) * nodeToIndex;
-            const glm::dvec3 world = glm::dvec3(grid.GetIndexToWorld() * glm::dvec4(index, 1.0));
-            const glm::dvec3 v = inner.Visibility(world);
-            const size_t n = 3 * this->Node(i, j, k);
-            this->Values[n] = static_cast<float>(v.r);
-            this->Values[n + 1] = static_cast<float>(v.g);
-            this->Values[n + 2] = static_cast<float>(v.b);
-          }
-        }
-      },
-      threads);
-  }
-
-  size_t Node(int i, int j, int k) const
-  {
-    return i + static_cast<size_t>(this->Dims.x) * (j + static_cast<size_t>(this->Dims.y) * k);
-  }
-
-  glm::dvec3 Visibility(const glm::dvec3& p) const override
-  {
-    const glm::dvec3 index = glm::dvec3(this->Grid.GetWorldToIndex() * glm::dvec4(p, 1.0));
-    // A grid one point thick along an axis has no extent there: node 0 (not 0 / 0).
-    const glm::dvec3 extent = glm::max(glm::dvec3(this->Grid.GetDims() - 1), glm::dvec3(1.0));
-    const glm::dvec3 node = glm::clamp(index * glm::dvec3(this->Dims - 1) / extent,
-      glm::dvec3(0.0), glm::dvec3(this->Dims - 1));
-    const glm::ivec3 n0 = glm::min(glm::ivec3(glm::floor(node)), this->Dims - 2);
-    const glm::dvec3 t = node - glm::dvec3(n0);
-    glm::dvec3 result(0.0);
-    for (int c = 0; c < 8; ++c)
-    {
-      const glm::ivec3 o((c & 1), (c >> 1) & 1, (c >> 2) & 1);
-      const double w = (o.x ? t.x : 1.0 - t.x) * (o.y ? t.y : 1.0 - t.y) * (o.z ? t.z : 1.0 - t.z);
-      const size_t n = 3 * this->Node(n0.x + o.x, n0.y + o.y, n0.z + o.z);
-      result += w * glm::dvec3(this->Values[n], this->Values[n + 1], this->Values[n + 2]);
-    }
-    return result;
-  }
-  /** As the GPU stores it: RGBA or R, 16-bit floats. */
-  size_t Bytes() const override { return this->Values.size() / 3 * (this->Colored ? 8 : 2); }
-
-private:
-  bool Colored;
-  const VolumeGrid& Grid;
-  glm::ivec3 Dims;
-  std::vector<float> Values;
-};
 }
 
 std::unique_ptr<LightShadow> MakeLightShadow(const ShadowParameters& parameters,
@@ -335,8 +271,11 @@ std::unique_ptr<LightShadow> MakeLightShadow(const ShadowParameters& parameters,
   }
   if (parameters.Cached)
   {
-    return std::make_unique<CachedShadow>(
-      *shadow, *caster.Grid, parameters.VolumeSize, parameters.IsColored(), threads);
+    // Once per node of a grid over the volume's box, then trilinear (the GPU's 3D texture).
+    const LightShadow& inner = *shadow;
+    return std::make_unique<ShadowGrid>([&inner](const glm::dvec3& p) { return inner.Visibility(p); },
+      GridFrame::OverVolume(caster.Grid->GetDims(), caster.Grid->GetIndexToWorld(), parameters.VolumeSize),
+      parameters.IsColored(), threads);
   }
   return shadow;
 }

@@ -13,7 +13,7 @@
 //     deep shadow map (a visibility function per texel compressed within epsilon), opacity
 //     levels (depths at 10/50/90 % opacity) and coloured stochastic shadow maps (CSSM).
 //   - Cached ("PP"): any of the above evaluated once per node of a grid over the volume's box
-//     and interpolated trilinearly, as the GPU's 3D shadow texture is.
+//     and interpolated trilinearly, as the GPU's 3D shadow texture is (Shadows/ShadowGrid.h).
 // Feelers and light rays take samples at (j + 0.5) * step, like the view ray.
 #ifndef deepshadow_Shadows_h
 #define deepshadow_Shadows_h

@@ -11,6 +11,18 @@
 namespace deepshadow
 {
 
+void MeshBounds(const SurfaceMesh& mesh, glm::dvec3& lo, glm::dvec3& hi)
+{
+  lo = glm::dvec3(std::numeric_limits<double>::infinity());
+  hi = -lo;
+  for (const glm::dvec3& p : mesh.Points)
+  {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+}
+
+
 glm::dvec3 SurfaceTransmission(const SurfaceMaterial& material, bool colored)
 {
   const double alpha = std::clamp(material.Opacity, 0.0, 1.0);

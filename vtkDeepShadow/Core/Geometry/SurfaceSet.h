@@ -53,6 +53,9 @@ struct SurfaceMesh
   bool ReceivesShadows = true;
 };
 
+/** The axis-aligned box of a mesh's points (lo > hi when it has none). */
+VTKDEEPSHADOWCORE_EXPORT void MeshBounds(const SurfaceMesh& mesh, glm::dvec3& lo, glm::dvec3& hi);
+
 /** The default world distance a mesh receiver's lookup starts towards the light. */
 inline double DefaultReceiverBias(double feelerStep)
 {
