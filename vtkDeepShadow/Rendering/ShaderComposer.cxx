@@ -15,7 +15,9 @@
 #include "vtkDeepShadowFeatureTranslucentLayers.h"
 #include "vtkDeepShadowFeatureTriangleHierarchy.h"
 #include "vtkDeepShadowFeatureOpaqueDepth.h"
+#include "vtkDeepShadowFeatureOtherVolumeShadows.h"
 #include "vtkDeepShadowFeaturePeel.h"
+#include "vtkDeepShadowFeatureShadowGrid.h"
 #include "vtkDeepShadowFeatureShadowTerm.h"
 #include "vtkDeepShadowFeatureVolumeSampling.h"
 
@@ -67,8 +69,10 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
     add("Lighting", vtkDeepShadowFeatureLighting);
     add("MeshNormal", vtkDeepShadowFeatureMeshNormal);
     add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
+    add("OtherVolumeShadows", vtkDeepShadowFeatureOtherVolumeShadows);
     add("Peel", vtkDeepShadowFeaturePeel);
     add("Phong", vtkDeepShadowFeaturePhong);
+    add("ShadowGrid", vtkDeepShadowFeatureShadowGrid);
     add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
     add("Surfaces", vtkDeepShadowFeatureSurfaces);
     add("TriangleHierarchy", vtkDeepShadowFeatureTriangleHierarchy);

@@ -1,5 +1,7 @@
 #include "vtkDeepShadowPass.h"
 
+#include "Shadows/OtherVolumeShadows.h"
+#include "Shadows/ShadowContext.h"
 #include "SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowPolyDataMapper.h"
@@ -17,6 +19,7 @@
 #include "vtkVolume.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -28,7 +31,33 @@ public:
   std::vector<double> SurfaceKey;
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
   std::vector<vtkDeepShadowPolyDataMapper*> Receivers;
+  std::vector<vtkDeepShadowVolumeMapper*> VolumeReceivers;
   deepshadow::TranslucentLayers Layers;
+
+  // What the other volumes cast, per receiver: volumes by mapper, meshes by actor (with the
+  // grid's frame over the mesh's points, found again only when the mesh changed).
+  std::map<vtkDeepShadowVolumeMapper*, deepshadow::OtherVolumeShadows> VolumeGrids;
+  struct MeshGrid
+  {
+    std::vector<double> Key;
+    deepshadow::GridFrame Frame;
+    deepshadow::OtherVolumeShadows Grid;
+  };
+  std::map<vtkActor*, MeshGrid> MeshGrids;
+
+  void ReleaseGrids(vtkWindow* window)
+  {
+    for (auto& entry : this->VolumeGrids)
+    {
+      entry.second.Release(window);
+    }
+    for (auto& entry : this->MeshGrids)
+    {
+      entry.second.Grid.Release(window);
+    }
+    this->VolumeGrids.clear();
+    this->MeshGrids.clear();
+  }
 };
 
 vtkDeepShadowPass::vtkDeepShadowPass()
@@ -131,18 +160,35 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     ++this->SurfaceSetBuilds;
   }
 
-  // Every shadowing volume sees the meshes; the first one's structures light the meshes.
-  const deepshadow::ShadowContext* source = nullptr;
-  vtkDeepShadowTechnique* technique = nullptr;
-  for (const auto& [volume, mapper] : volumes)
+  // Every volume with a technique casts shadows onto the others and onto the meshes. The
+  // first one is the meshes' shadow source and holds the casting meshes (so that they count
+  // once); the others reach each receiver through a grid (deepshadow::OtherVolumeShadows).
+  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> shadowing;
+  for (const auto& entry : volumes)
   {
-    mapper->SetCastingSurfaces(impl.Surfaces);
-    if (!source && mapper->GetShadowTechnique() && !meshes.empty())
+    entry.second->SetCastingSurfaces(nullptr);
+    if (entry.second->GetShadowTechnique())
     {
-      source = mapper->PrepareShadows(renderer, volume);
-      technique = source ? mapper->GetShadowTechnique() : nullptr;
+      shadowing.push_back(entry);
     }
   }
+  std::vector<deepshadow::VolumeCaster> casters(shadowing.size());
+  if (!meshes.empty() || shadowing.size() > 1)
+  {
+    for (size_t v = 0; v < shadowing.size(); ++v)
+    {
+      auto [volume, mapper] = shadowing[v];
+      mapper->SetCastingSurfaces(v == 0 ? impl.Surfaces : nullptr);
+      casters[v].Context = mapper->PrepareShadows(renderer, volume);
+      casters[v].Technique = mapper->GetShadowTechnique();
+    }
+  }
+  else if (!shadowing.empty())
+  {
+    shadowing.front().second->SetCastingSurfaces(impl.Surfaces);
+  }
+  const deepshadow::ShadowContext* source = casters.empty() ? nullptr : casters.front().Context;
+  vtkDeepShadowTechnique* technique = source ? casters.front().Technique : nullptr;
   for (const auto& [actor, mapper] : meshes)
   {
     mapper->SetShadowSource(source, technique);
@@ -152,6 +198,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   {
     impl.Receivers.push_back(entry.second);
   }
+  this->UpdateOtherVolumeShadows(renderer, shadowing, casters, meshes);
 
   // Translucent meshes go into layers when a volume will merge them.
   std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
@@ -178,11 +225,111 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   }
   this->TranslucentLayerBytes = impl.Layers.GetBytes();
 
-  // The source is valid for this frame only.
+  // The source and the grids are set for this frame only.
   for (vtkDeepShadowPolyDataMapper* mapper : impl.Receivers)
   {
     mapper->SetShadowSource(nullptr, nullptr);
+    mapper->SetOtherVolumeShadows(nullptr);
   }
+  for (vtkDeepShadowVolumeMapper* mapper : impl.VolumeReceivers)
+  {
+    mapper->SetOtherVolumeShadows(nullptr);
+  }
+}
+
+void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
+  const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& shadowing,
+  const std::vector<deepshadow::VolumeCaster>& casters,
+  const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes)
+{
+  Internals& impl = *this->Impl;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  impl.VolumeReceivers.clear();
+  this->OtherVolumeShadowBytes = 0;
+  // Casters other than `skip` whose structures are ready.
+  const auto othersThan = [&casters](size_t skip) {
+    std::vector<deepshadow::VolumeCaster> others;
+    for (size_t u = 0; u < casters.size(); ++u)
+    {
+      if (u != skip && casters[u].Context)
+      {
+        others.push_back(casters[u]);
+      }
+    }
+    return others;
+  };
+  const auto update = [&](deepshadow::OtherVolumeShadows& grid, const deepshadow::GridFrame& frame,
+                        const std::vector<deepshadow::VolumeCaster>& others) {
+    const int before = grid.GetBuildCount();
+    std::string error;
+    if (!grid.Update(window, frame, others, error))
+    {
+      vtkErrorMacro(<< error);
+    }
+    this->OtherVolumeShadowBuilds += grid.GetBuildCount() - before;
+    this->OtherVolumeShadowBytes += grid.GetBytes();
+    return grid.Any() ? &grid : nullptr;
+  };
+
+  std::map<vtkDeepShadowVolumeMapper*, deepshadow::OtherVolumeShadows> volumeGrids;
+  std::map<vtkActor*, Internals::MeshGrid> meshGrids;
+  for (size_t v = 0; v < shadowing.size() && window; ++v)
+  {
+    const std::vector<deepshadow::VolumeCaster> others = othersThan(v);
+    vtkDeepShadowVolumeMapper* mapper = shadowing[v].second;
+    if (others.empty() || !casters[v].Context)
+    {
+      continue;
+    }
+    deepshadow::OtherVolumeShadows& grid = volumeGrids[mapper];
+    if (auto found = impl.VolumeGrids.find(mapper); found != impl.VolumeGrids.end())
+    {
+      grid = std::move(found->second);
+      impl.VolumeGrids.erase(found);
+    }
+    const deepshadow::ShadowContext& context = *casters[v].Context;
+    mapper->SetOtherVolumeShadows(update(grid,
+      deepshadow::GridFrame::OverVolume(context.Dims, context.IndexToWorld, this->OtherVolumeShadowSize),
+      others));
+    impl.VolumeReceivers.push_back(mapper);
+  }
+  const std::vector<deepshadow::VolumeCaster> others = othersThan(0); // the source aside
+  for (const auto& [actor, mapper] : meshes)
+  {
+    if (others.empty() || !casters.front().Context || !mapper->GetReceiveShadows() || !window)
+    {
+      continue;
+    }
+    Internals::MeshGrid& entry = meshGrids[actor];
+    if (auto found = impl.MeshGrids.find(actor); found != impl.MeshGrids.end())
+    {
+      entry = std::move(found->second);
+      impl.MeshGrids.erase(found);
+    }
+    vtkPolyData* input = mapper->GetInput();
+    std::vector<double> key{ static_cast<double>(mapper->GetMTime()),
+      static_cast<double>(input ? input->GetMTime() : 0), static_cast<double>(this->OtherVolumeShadowSize) };
+    const double* m = actor->GetMatrix()->GetData();
+    key.insert(key.end(), m, m + 16);
+    if (key != entry.Key)
+    {
+      deepshadow::SurfaceMesh mesh;
+      std::string error;
+      if (!mapper->GetSurfaceMesh(actor, mesh, error))
+      {
+        continue; // the mapper says why when it draws
+      }
+      glm::dvec3 lo, hi;
+      deepshadow::MeshBounds(mesh, lo, hi);
+      entry.Frame = deepshadow::GridFrame::OverBox(lo, hi, this->OtherVolumeShadowSize);
+      entry.Key = key;
+    }
+    mapper->SetOtherVolumeShadows(update(entry.Grid, entry.Frame, others));
+  }
+  // Receivers gone from the scene give their grids back.
+  impl.ReleaseGrids(window);
+  impl.VolumeGrids = std::move(volumeGrids);
+  impl.MeshGrids = std::move(meshGrids);
 }
 
 void vtkDeepShadowPass::RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
@@ -231,6 +378,7 @@ void vtkDeepShadowPass::RenderWithLayers(const vtkRenderState* state, vtkDeepSha
 void vtkDeepShadowPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Impl->Layers.Release(window);
+  this->Impl->ReleaseGrids(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -241,4 +389,6 @@ void vtkDeepShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CastingMeshes: " << this->CastingMeshes << "\n";
   os << indent << "TranslucentLayers: " << this->TranslucentLayers << "\n";
   os << indent << "PeeledLayers: " << this->PeeledLayers << "\n";
+  os << indent << "OtherVolumeShadowSize: " << this->OtherVolumeShadowSize << "\n";
+  os << indent << "OtherVolumeShadowBuilds: " << this->OtherVolumeShadowBuilds << "\n";
 }

@@ -8,11 +8,16 @@
  * go to every such volume (vtkDeepShadowVolumeMapper::SetCastingSurfaces) and into its
  * technique's structure of each light; they are gathered again only when a mesh, its
  * property, its actor's placement or the set of casting meshes changed (GetSurfaceSetBuilds).
- * The first visible volume with a shadow technique is the scene's shadow source: its
- * structures are brought up to date before any mesh is drawn, and every mesh with
- * ReceiveShadows on looks them up. Then the props are drawn as vtkDefaultPass draws them
- * (opaque, translucent, volumes, overlay).
- *
+ * Every visible volume with a shadow technique casts shadows onto the other volumes with a
+ * technique and onto the meshes with ReceiveShadows on: a light's visibility is the product
+ * of every caster's (optical depths add along a light ray). The first such volume is the
+ * scene's shadow source: it holds the casting meshes (so that they count once) and meshes
+ * look its structures up directly. What the other volumes cast reaches a receiver through a
+ * grid over it (OtherVolumeShadowSize nodes along its longest side, one RGBA16F texel per
+ * node and light), filled by each caster's own lookup and rebuilt only when a caster, its
+ * structures, a light or the receiver's placement changed (GetOtherVolumeShadowBuilds). All
+ * shadow structures are brought up to date before anything is drawn; then the props are
+ * drawn as vtkDefaultPass draws them (opaque, translucent, volumes, overlay).
  *
  * Translucent meshes and the volume are composited in depth order along each view ray: the
  * translucent meshes are peeled into TranslucentLayers layers (depth peeling), and the first
@@ -21,8 +26,9 @@
  * the last layer are left out (GetTranslucentLayersOverflowed says when). With
  * TranslucentLayers 0, or with no volume, translucent meshes are blended as VTK blends them.
  *
- * Limits of this version: meshes receive from one volume's structures (the first shadowing
- * one); only the first volume merges the layers (a second volume is blended over them).
+ * Limits of this version: only the first volume merges the layers, and volumes are blended
+ * over each other in the renderer's order (as VTK does), not interleaved along the view ray.
+ * Mesh shadows reach the volumes after the first at the grid's resolution.
  */
 #ifndef vtkDeepShadowPass_h
 #define vtkDeepShadowPass_h
@@ -38,6 +44,12 @@
 class vtkActor;
 class vtkDeepShadowPolyDataMapper;
 class vtkDeepShadowVolumeMapper;
+class vtkRenderer;
+class vtkVolume;
+namespace deepshadow
+{
+struct VolumeCaster;
+}
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPass : public vtkDefaultPass
 {
@@ -69,6 +81,19 @@ public:
   /** GPU memory of the layers (and the opaque image copy they need), in bytes. */
   vtkGetMacro(TranslucentLayerBytes, long long);
 
+  ///@{
+  /**
+   * Nodes along a receiver's longest side of the grid that carries the other volumes'
+   * shadows to it (default 64; a volume's grid is never finer than its data).
+   */
+  vtkSetClampMacro(OtherVolumeShadowSize, int, 2, 256);
+  vtkGetMacro(OtherVolumeShadowSize, int);
+  ///@}
+  /** Grids of other volumes' shadows built so far (observability). */
+  vtkGetMacro(OtherVolumeShadowBuilds, int);
+  /** GPU memory of those grids in the last frame, in bytes. */
+  vtkGetMacro(OtherVolumeShadowBytes, long long);
+
   /** Why the last frame's meshes cast no shadows (e.g. a mesh with NaN points); "" if none. */
   const std::string& GetLastError() const { return this->LastError; }
 
@@ -82,11 +107,20 @@ protected:
   int PeeledLayers = 0;
   bool TranslucentLayersOverflowed = false;
   long long TranslucentLayerBytes = 0;
+  int OtherVolumeShadowSize = 64;
+  int OtherVolumeShadowBuilds = 0;
+  long long OtherVolumeShadowBytes = 0;
   std::string LastError;
 
   /** Opaque, translucent (peeled and merged into the first volume), volumes, overlay. */
   void RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
     const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled);
+
+  /** Brings each receiver's grid of the other volumes' shadows up to date and hands it over. */
+  void UpdateOtherVolumeShadows(vtkRenderer* renderer,
+    const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& shadowing,
+    const std::vector<deepshadow::VolumeCaster>& casters,
+    const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes);
 
 private:
   vtkDeepShadowPass(const vtkDeepShadowPass&) = delete;

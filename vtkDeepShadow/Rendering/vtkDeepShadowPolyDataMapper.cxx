@@ -3,6 +3,7 @@
 #include "CoreAdapter.h"
 #include "LightingUniforms.h"
 #include "ShaderComposer.h"
+#include "Shadows/OtherVolumeShadows.h"
 #include "Shadows/ShadowContext.h"
 #include "SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
@@ -64,6 +65,7 @@ public:
   const deepshadow::ShadowContext* Context = nullptr;
   vtkDeepShadowTechnique* Technique = nullptr;
   const deepshadow::PeelStep* Peel = nullptr;
+  const deepshadow::OtherVolumeShadows* Others = nullptr;
 
   /**
    * Triangles, normals and colours of the input, rebuilt only when something they depend on
@@ -85,6 +87,11 @@ vtkDeepShadowPolyDataMapper::~vtkDeepShadowPolyDataMapper() = default;
 void vtkDeepShadowPolyDataMapper::SetPeelStep(const deepshadow::PeelStep* step)
 {
   this->Impl->Peel = step;
+}
+
+void vtkDeepShadowPolyDataMapper::SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others)
+{
+  this->Impl->Others = others;
 }
 
 void vtkDeepShadowPolyDataMapper::SetShadowSource(
@@ -298,6 +305,13 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
       features.insert(feature);
     }
   }
+  // What the other shadowing volumes cast, on a grid over this mesh.
+  const deepshadow::OtherVolumeShadows* others =
+    technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
+  if (others)
+  {
+    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
+  }
   const deepshadow::PeelStep* peel = impl.Peel;
   if (peel)
   {
@@ -347,6 +361,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
       ? this->ShadowBias
       : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
     sink.Set("u_receiverOffset", static_cast<float>(bias));
+  }
+  if (others)
+  {
+    others->Activate(sink, static_cast<int>(lights.size()));
   }
   if (peel)
   {
@@ -410,6 +428,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   {
     technique->Unbind(true);
     context->DeactivateVolumeTextures();
+  }
+  if (others)
+  {
+    others->Deactivate();
   }
 }
 

@@ -34,6 +34,7 @@
 
 namespace deepshadow
 {
+class OtherVolumeShadows;
 struct PeelStep;
 struct ShadowContext;
 struct SurfaceMesh;
@@ -84,6 +85,8 @@ public:
   // ---- Used by vtkDeepShadowPass, not by applications ----
   /** Where this frame's shadows come from (null: lit without shadows). */
   void SetShadowSource(const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique);
+  /** What the scene's other shadowing volumes cast onto this mesh this frame (null: none). */
+  void SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others);
   /** While set, Render draws one layer of depth peeling (see Translucency/TranslucentLayers.h). */
   void SetPeelStep(const deepshadow::PeelStep* step);
 

@@ -165,10 +165,12 @@ bool vtkDeepShadowReferenceRenderer::Render(
     }
     drawn.push_back(std::move(mesh));
   }
-  // The GPU twin peels translucent meshes into as many layers as the scene pass does.
+  // The GPU twin peels translucent meshes into as many layers as the scene pass does...
   if (auto* pass = vtkDeepShadowPass::SafeDownCast(renderer->GetPass()))
   {
     scene.TranslucentLayers = this->GpuTwin ? pass->GetTranslucentLayers() : 0;
+    // ... and stores what other volumes cast on grids of as many nodes.
+    scene.OtherVolumeShadowSize = this->GpuTwin ? pass->GetOtherVolumeShadowSize() : 0;
   }
   try
   {

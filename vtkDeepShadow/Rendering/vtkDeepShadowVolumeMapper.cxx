@@ -1,6 +1,7 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "CoreAdapter.h"
+#include "Shadows/OtherVolumeShadows.h"
 #include "Shadows/ShadowContext.h"
 #include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
@@ -174,6 +175,8 @@ public:
 
   // vtkDeepShadowPass's translucent layers for this frame.
   const deepshadow::TranslucentLayers* Layers = nullptr;
+  // vtkDeepShadowPass's grid of what the other volumes cast onto this one, for this frame.
+  const deepshadow::OtherVolumeShadows* Others = nullptr;
 
   void Release(vtkWindow* window)
   {
@@ -213,12 +216,14 @@ public:
     // What the pass set for this frame survives a data change inside it.
     const bool prepareOnly = this->PrepareOnly;
     const deepshadow::TranslucentLayers* layers = this->Layers;
+    const deepshadow::OtherVolumeShadows* others = this->Others;
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
     this->Surfaces = std::move(surfaces);
     this->PrepareOnly = prepareOnly;
     this->Layers = layers;
+    this->Others = others;
   }
 };
 
@@ -726,6 +731,13 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       features.insert(feature);
     }
   }
+  // Shadows of the other volumes, when they cast any (a volume receives with a technique).
+  const deepshadow::OtherVolumeShadows* others =
+    technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
+  if (others)
+  {
+    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
+  }
   if (this->Jitter)
   {
     features.insert("Jitter");
@@ -803,6 +815,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     technique->Bind(sink, context);
   }
+  if (others)
+  {
+    others->Activate(sink, static_cast<int>(context.Lights.size()));
+  }
   if (layers)
   {
     layers->Activate(sink);
@@ -876,6 +892,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     technique->Unbind();
   }
+  if (others)
+  {
+    others->Deactivate();
+  }
   if (layers)
   {
     layers->Deactivate();
@@ -896,6 +916,11 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastError.clear();
   }
   ++this->RenderCount;
+}
+
+void vtkDeepShadowVolumeMapper::SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others)
+{
+  this->Impl->Others = others;
 }
 
 void vtkDeepShadowVolumeMapper::SetTranslucentLayers(const deepshadow::TranslucentLayers* layers)

@@ -41,6 +41,7 @@
 class vtkDeepShadowTechnique;
 namespace deepshadow
 {
+class OtherVolumeShadows;
 class SurfaceSet;
 class TranslucentLayers;
 struct ShadowContext;
@@ -179,6 +180,13 @@ public:
    * until the next frame. The frame's Render() then finds nothing left to build.
    */
   const deepshadow::ShadowContext* PrepareShadows(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * Used by vtkDeepShadowPass for one frame: what the scene's other shadowing volumes cast
+   * onto this one, on a grid over its box, multiplied into each light's visibility (with a
+   * technique only: a volume receives shadows when it has one). Null: none.
+   */
+  void SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others);
 
   /**
    * Used by vtkDeepShadowPass for one frame: the peeled layers of the translucent meshes,

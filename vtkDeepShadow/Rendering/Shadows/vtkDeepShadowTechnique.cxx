@@ -3,6 +3,7 @@
 #include "OpticalModel.h"
 #include "ShadowContext.h"
 #include "ShadowSlots.h"
+#include "ShadowGrid.h"
 #include "Shadows.h"
 #include "vtkDeepShadowCachedShadow.h"
 #include "vtkDeepShadowCachedShadowCS.h"
@@ -51,11 +52,14 @@ public:
 
   // The cache ("PP"): one slab of a 3D texture per shadow-casting light.
   vtkSmartPointer<vtkTextureObject> Cache;
+  deepshadow::GridFrame CacheFrame;
   glm::ivec3 CacheDims{ 0 };
   int CacheSlabs = 0;
   bool CacheColored = false;
   deepshadow::ShadowSlots CacheSlots;
   deepshadow::ComputeProgram CacheBuild;
+  // The lookup evaluated on other volumes' grids (deepshadow::OtherVolumeShadows).
+  deepshadow::ComputeProgram OtherBuild;
 
   void ReleaseCache(vtkWindow* window)
   {
@@ -65,6 +69,7 @@ public:
       this->Cache = nullptr;
     }
     this->CacheBuild.Release();
+    this->OtherBuild.Release();
     this->CacheSlots.Invalidate();
   }
 };
@@ -247,7 +252,9 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
   const int maxLights = std::min(this->GetMaxShadowLights(), MaxCachedLights);
   // The cache depends on everything the structure and the lookup do, on its own size, and
   // (where it skips nodes no view sample reads) on the blocks the drawn opacity leaves.
-  const glm::ivec3 dims = deepshadow::ShadowVolumeDims(context.Dims, this->ShadowVolumeSize);
+  const deepshadow::GridFrame frame =
+    deepshadow::GridFrame::OverVolume(context.Dims, context.IndexToWorld, this->ShadowVolumeSize);
+  const glm::ivec3 dims = frame.Dims;
   const glm::vec3 reach = glm::vec3(context.Dims - 1) / glm::vec3(dims - 1);
   const bool skipEmpty = context.Occupancy &&
     std::max({ reach.x, reach.y, reach.z }) <= context.BlockSize;
@@ -288,6 +295,7 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
     impl.CacheSlabs = slabs;
     impl.CacheColored = colored;
   }
+  impl.CacheFrame = frame; // stale slots below are rebuilt for it
   impl.CacheSlots.Assign(context.Lights, maxLights);
   std::vector<int> staleCache;
   for (int slot = 0; slot < impl.CacheSlots.Count(); ++slot)
@@ -299,40 +307,95 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
   }
   if (!staleCache.empty())
   {
-    const std::string lookup = (colored ? "//@Dec\n#define CACHE_COLORED\n" : "") + this->GetLookupSource();
-    if (!this->BeginBuildPass(impl.CacheBuild, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
+    std::vector<std::pair<int, int>> slotsAndSlabs;
+    for (int slot : staleCache)
+    {
+      slotsAndSlabs.emplace_back(slot, slot);
+    }
+    if (!this->RunGridPass(impl.CacheBuild, colored ? "#define CACHE_COLORED\n" : "", context,
+          impl.Cache, colored, frame, slotsAndSlabs, impl.CacheSlots, skipEmpty, reach, -1))
     {
       impl.CacheSlots.Invalidate();
       return false;
     }
-    deepshadow::UniformSink sink(&impl.CacheBuild);
-    this->BindLookup(sink, context);
-    impl.CacheBuild.Set("u_shadowDims", dims);
-    impl.CacheBuild.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
-    impl.CacheBuild.Set("u_cacheReach", reach);
-    impl.CacheBuild.Set("u_indexToWorld", glm::mat4(context.IndexToWorld));
-    const GLenum format = colored ? GL_RGBA16F : GL_R16F;
-    glBindImageTexture(0, impl.Cache->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    for (int slot : staleCache)
-    {
-      const deepshadow::Light& light = context.Lights[static_cast<size_t>(impl.CacheSlots.Light(slot))];
-      impl.CacheBuild.Set("u_slot", slot);
-      impl.CacheBuild.Set("u_lightPositional", light.Positional ? 1 : 0);
-      impl.CacheBuild.Set("u_lightPosition", glm::vec3(light.Position));
-      impl.CacheBuild.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
-      impl.CacheBuild.Dispatch(dims, glm::ivec3(4));
-      this->LastPasses.emplace_back("shadow-cache");
-    }
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    this->UnbindLookup();
-    this->EndBuildPass(context);
+    this->LastPasses.insert(this->LastPasses.end(), staleCache.size(), "shadow-cache");
     rebuilt.insert(staleCache.begin(), staleCache.end());
   }
   return true;
 }
 
+bool vtkDeepShadowTechnique::RunGridPass(deepshadow::ComputeProgram& program,
+  const std::string& defines, const deepshadow::ShadowContext& context, vtkTextureObject* grid, bool colored,
+  const deepshadow::GridFrame& frame, const std::vector<std::pair<int, int>>& slotsAndSlabs,
+  const deepshadow::ShadowSlots& slots, bool skipEmpty, const glm::vec3& reach, int storeMask)
+{
+  const std::string lookup = "//@Dec\n" + defines + this->GetLookupSource();
+  if (!this->BeginBuildPass(program, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
+  {
+    return false;
+  }
+  deepshadow::UniformSink sink(&program);
+  this->BindLookup(sink, context);
+  program.Set("u_shadowDims", frame.Dims);
+  program.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
+  program.Set("u_cacheReach", reach);
+  program.Set("u_nodeToWorld", glm::mat4(frame.NodeToWorld));
+  const GLenum format = colored ? GL_RGBA16F : GL_R16F;
+  const bool multiply = storeMask >= 0;
+  glBindImageTexture(0, grid->GetHandle(), 0, GL_TRUE, 0, multiply ? GL_READ_WRITE : GL_WRITE_ONLY, format);
+  for (const auto& [slot, slab] : slotsAndSlabs)
+  {
+    const deepshadow::Light& light = context.Lights[static_cast<size_t>(slots.Light(slot))];
+    program.Set("u_slot", slot);
+    program.Set("u_slab", slab);
+    if (multiply)
+    {
+      program.Set("u_firstCaster", (storeMask >> slab) & 1);
+    }
+    program.Set("u_lightPositional", light.Positional ? 1 : 0);
+    program.Set("u_lightPosition", glm::vec3(light.Position));
+    program.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
+    program.Dispatch(frame.Dims, glm::ivec3(4));
+  }
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, format);
+  this->UnbindLookup();
+  this->EndBuildPass(context);
+  return true;
+}
+
+int vtkDeepShadowTechnique::EvaluateOnGrid(const deepshadow::ShadowContext& context,
+  vtkTextureObject* grid, const deepshadow::GridFrame& frame, int writtenSlabs)
+{
+  Internals& impl = *this->Impl;
+  // Slab l holds light l of the context; each light with a structure of ours.
+  std::vector<std::pair<int, int>> slotsAndSlabs;
+  for (int slot = 0; slot < impl.Slots.Count(); ++slot)
+  {
+    slotsAndSlabs.emplace_back(slot, impl.Slots.Light(slot));
+  }
+  if (slotsAndSlabs.empty())
+  {
+    return writtenSlabs;
+  }
+  this->LastError.clear();
+  if (!this->RunGridPass(impl.OtherBuild, "#define OTHER_VOLUMES\n", context, grid, true, frame,
+        slotsAndSlabs, impl.Slots, false, glm::vec3(0.0), ~writtenSlabs & 0xff))
+  {
+    return -1;
+  }
+  for (const auto& entry : slotsAndSlabs)
+  {
+    writtenSlabs |= 1 << entry.second;
+  }
+  return writtenSlabs;
+}
+
 std::vector<std::string> vtkDeepShadowTechnique::GetLookupFeatures(bool direct) const
 {
+  if (this->Cached && !direct)
+  {
+    return { "ShadowGrid" };
+  }
   if (this->NeedsFeeler(direct) && this->GetParameters().IsColored())
   {
     return { "FeelerColored" };
@@ -458,6 +521,7 @@ void vtkDeepShadowTechnique::Bind(
     impl.Cache->Activate();
     sink.Set("u_shadowVolume", impl.Cache->GetTextureUnit());
     sink.Set("u_shadowDims", glm::vec3(impl.CacheDims));
+    sink.Set("u_shadowWorldToNode", glm::mat4(impl.CacheFrame.WorldToNode));
     sink.Set("u_shadowSlabs", static_cast<float>(impl.CacheSlabs));
     return;
   }

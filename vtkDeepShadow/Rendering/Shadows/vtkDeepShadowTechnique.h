@@ -31,17 +31,22 @@
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkObject.h"
 
+#include <glm/vec3.hpp> // For glm::vec3
+
 #include <memory> // For std::unique_ptr
 #include <set>    // For std::set
 #include <string> // For std::string
+#include <utility> // For std::pair
 #include <vector> // For std::vector
 
+class vtkTextureObject;
 class vtkVolumeProperty;
 class vtkWindow;
 
 namespace deepshadow
 {
 class ComputeProgram;
+struct GridFrame;
 struct ShadowContext;
 struct ShadowParameters;
 class ShadowSlots;
@@ -152,6 +157,17 @@ public:
   void Unbind(bool direct = false);
   virtual void ReleaseGraphicsResources(vtkWindow* window);
 
+  /**
+   * Used by deepshadow::OtherVolumeShadows: evaluates this technique's own lookup (never its
+   * cache, which covers its volume's box only) at every node of `frame`, for each light it
+   * has a structure for, and multiplies the answer into slab l of `grid` (RGBA16F) for the
+   * context's light l; slabs not in the bit mask `writtenSlabs` are stored instead. Returns
+   * the mask with its slabs added, or -1 (and GetLastError()) if the pass failed. Prepare()
+   * must have run this frame.
+   */
+  int EvaluateOnGrid(const deepshadow::ShadowContext& context, vtkTextureObject* grid,
+    const deepshadow::GridFrame& frame, int writtenSlabs);
+
 protected:
   vtkDeepShadowTechnique();
   ~vtkDeepShadowTechnique() override;
@@ -242,6 +258,16 @@ private:
 
   /** The feeler's table (the casting transfer function for the feeler step), if stale. */
   void UpdateFeelerTable(const deepshadow::ShadowContext& context, bool colored);
+  /**
+   * The grid pass (vtkDeepShadowCachedShadowCS): the lookup at every node of `frame` into
+   * `grid` (RGBA16F if `colored`, else R16F), per (slot, slab). `storeMask` < 0: store (a
+   * cache, which may skip empty nodes); else multiply into what is stored, except in the
+   * slabs whose bit is set, which are stored.
+   */
+  bool RunGridPass(deepshadow::ComputeProgram& program, const std::string& defines,
+    const deepshadow::ShadowContext& context, vtkTextureObject* grid, bool colored,
+    const deepshadow::GridFrame& frame, const std::vector<std::pair<int, int>>& slotsAndSlabs,
+    const deepshadow::ShadowSlots& slots, bool skipEmpty, const glm::vec3& reach, int storeMask);
   /** Brings the cache of every slot whose `key` (structure, lookup, cache) changed up to date. */
   bool PrepareCache(deepshadow::ShadowContext& context, std::vector<double> key,
     const std::vector<double>& drawnOpacityKey, std::set<int>& rebuilt);

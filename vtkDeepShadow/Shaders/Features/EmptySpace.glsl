@@ -62,8 +62,8 @@ bool emptyAround(vec3 index, vec3 reach)
     }
 //@CacheSkip
   // Nodes no view sample interpolates from need no answer (they hold "lit").
-  if (u_cacheSkipEmpty != 0 && emptyAround(index, u_cacheReach))
+  if (u_cacheSkipEmpty != 0 && emptyAround((u_worldToIndex * vec4(world, 1.0)).xyz, u_cacheReach))
   {
-    imageStore(u_output, ivec3(node.xy, node.z + u_slot * u_shadowDims.z), vec4(1.0));
+    imageStore(u_output, texel, vec4(1.0));
     return;
   }

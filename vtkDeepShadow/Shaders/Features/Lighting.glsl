@@ -19,7 +19,9 @@ uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
 //DeepShadow::Gradient::Dec
+//DeepShadow::ShadowGrid::Dec
 //DeepShadow::Shadow::Dec
+//DeepShadow::OtherVolumeShadows::Dec
 
 vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
 {
