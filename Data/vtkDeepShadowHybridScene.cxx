@@ -2,11 +2,18 @@
 
 #include "vtkDeepShadowBoundedScene.h"
 
+#include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkDeepShadowHybridScene);
 
@@ -53,11 +60,103 @@ vtkSmartPointer<vtkPolyData> Slab(const double b[6], int axis, double from, doub
   }
   return vtkDeepShadowBoundedScene::MakeBox(box);
 }
+
+// Where "hybrid-smoke" puts its cup: on the ground, beside the volume on the side the light
+// comes from (so the smoke rising from it shadows the volume). `up` is the light axis.
+struct CupPlace
+{
+  int Up = 2;
+  double Side = 1.0;     // +1: the light is on the positive side of Up
+  int Lateral = 0;       // the axis the cup is moved along
+  double Base[3] = { 0.0, 0.0, 0.0 }; // centre of the cup's bottom
+  double Radius = 0.0;
+  double Height = 0.0;
+};
+
+CupPlace PlaceCup(const double b[6], const double toLight[3])
+{
+  CupPlace cup;
+  LightAxis(toLight, cup.Up, cup.Side);
+  cup.Lateral = cup.Up == 0 ? 1 : 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != cup.Up && std::abs(toLight[a]) > std::abs(toLight[cup.Lateral]))
+    {
+      cup.Lateral = a;
+    }
+  }
+  const double lateralSide = toLight[cup.Lateral] >= 0.0 ? 1.0 : -1.0;
+  const double size = Extent(b);
+  cup.Radius = 0.09 * size;
+  cup.Height = 0.22 * size;
+  for (int a = 0; a < 3; ++a)
+  {
+    cup.Base[a] = 0.5 * (b[2 * a] + b[2 * a + 1]);
+  }
+  // On the ground (MakeGround's near face), one cup beyond the volume's side.
+  const double face = cup.Side > 0.0 ? b[2 * cup.Up] : b[2 * cup.Up + 1];
+  cup.Base[cup.Up] = face - cup.Side * 0.04 * size;
+  cup.Base[cup.Lateral] = lateralSide > 0.0 ? b[2 * cup.Lateral + 1] + 1.6 * cup.Radius
+                                            : b[2 * cup.Lateral] - 1.6 * cup.Radius;
+  return cup;
+}
+
+// A closed cylinder of `sides` sides along axis `up` (towards `side`). The caps have points of
+// their own, so that the sides' point normals stay horizontal.
+vtkSmartPointer<vtkPolyData> Cylinder(const CupPlace& cup, int sides)
+{
+  const int u = (cup.Up + 1) % 3, v = (cup.Up + 2) % 3;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  for (int copy = 0; copy < 2; ++copy) // rings 0, 1: the sides; 2, 3: the caps
+  {
+    for (int ring = 0; ring < 2; ++ring)
+    {
+      for (int i = 0; i < sides; ++i)
+      {
+        const double angle = 2.0 * 3.14159265358979323846 * i / sides;
+        double p[3] = { cup.Base[0], cup.Base[1], cup.Base[2] };
+        p[u] += cup.Radius * std::cos(angle);
+        p[v] += cup.Radius * std::sin(angle);
+        p[cup.Up] += ring * cup.Side * cup.Height;
+        points->InsertNextPoint(p);
+      }
+    }
+  }
+  // Outward, counter-clockwise seen from outside.
+  const bool flip = cup.Side < 0.0;
+  for (int i = 0; i < sides; ++i)
+  {
+    const vtkIdType j = (i + 1) % sides;
+    const vtkIdType quad[4] = { i, j, sides + j, sides + i };
+    const vtkIdType flipped[4] = { i, sides + i, sides + j, j };
+    polys->InsertNextCell(4, flip ? flipped : quad);
+  }
+  const vtkIdType caps = 2 * sides;
+  std::vector<vtkIdType> bottom, top;
+  for (int i = 0; i < sides; ++i)
+  {
+    bottom.push_back(caps + sides - 1 - i);
+    top.push_back(caps + sides + i);
+  }
+  if (flip)
+  {
+    std::swap(bottom, top);
+    std::reverse(bottom.begin(), bottom.end());
+    std::reverse(top.begin(), top.end());
+  }
+  polys->InsertNextCell(static_cast<vtkIdType>(bottom.size()), bottom.data());
+  polys->InsertNextCell(static_cast<vtkIdType>(top.size()), top.data());
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
 }
 
 std::vector<std::string> vtkDeepShadowHybridScene::GetSceneNames()
 {
-  return { "hybrid-ground", "hybrid-glass", "hybrid-rod" };
+  return { "hybrid-ground", "hybrid-glass", "hybrid-rod", "hybrid-smoke" };
 }
 
 bool vtkDeepShadowHybridScene::IsSceneName(const std::string& name)
@@ -80,6 +179,10 @@ std::string vtkDeepShadowHybridScene::GetSceneDescription(const std::string& nam
   {
     return "the head with an opaque rod through it (a tool), over a ground";
   }
+  if (name == "hybrid-smoke")
+  {
+    return "the head beside a smoking cup of coffee (the smoke a second volume), over a ground";
+  }
   return std::string();
 }
 
@@ -93,7 +196,7 @@ std::string vtkDeepShadowHybridScene::GetVolumeSceneName(const std::string& name
   {
     return "box";
   }
-  if (name == "hybrid-rod")
+  if (name == "hybrid-rod" || name == "hybrid-smoke")
   {
     return "head";
   }
@@ -154,7 +257,110 @@ std::vector<vtkDeepShadowHybridScene::Mesh> vtkDeepShadowHybridScene::MakeMeshes
     tool.Color = { { 0.75, 0.75, 0.8 } };
     meshes.push_back(tool);
   }
+  else if (name == "hybrid-smoke")
+  {
+    Mesh cup;
+    cup.PolyData = Cylinder(PlaceCup(b, toLight), 32);
+    cup.Color = { { 0.92, 0.9, 0.85 } };
+    meshes.push_back(cup);
+  }
   return meshes;
+}
+
+vtkSmartPointer<vtkImageData> vtkDeepShadowHybridScene::MakeSmoke(
+  const std::string& name, const double b[6], const double toLight[3])
+{
+  if (name != "hybrid-smoke")
+  {
+    return nullptr;
+  }
+  const CupPlace cup = PlaceCup(b, toLight);
+  const double size = Extent(b);
+  // A plume from the cup's rim up to 1.2 volume sizes above the ground, drifting over the
+  // volume: 40 x 40 x 64 points (64 along the light axis).
+  const double height = 1.15 * size, width = 0.55 * size;
+  const int across = 40, along = 64;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  int dims[3];
+  double spacing[3], origin[3];
+  const double lateralSide = cup.Base[cup.Lateral] > 0.5 * (b[2 * cup.Lateral] + b[2 * cup.Lateral + 1]) ? -1.0 : 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const bool up = a == cup.Up;
+    dims[a] = up ? along : across;
+    spacing[a] = (up ? height : width) / (dims[a] - 1);
+    double lo = cup.Base[a] - 0.5 * width;
+    if (up)
+    {
+      lo = cup.Side > 0.0 ? cup.Base[a] + cup.Height : cup.Base[a] - cup.Height - height;
+    }
+    else if (a == cup.Lateral)
+    {
+      lo = cup.Base[a] - 0.5 * width + lateralSide * 0.2 * width; // drifts towards the volume
+    }
+    origin[a] = lo;
+  }
+  image->SetDimensions(dims);
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* density = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        const int index[3] = { i, j, k };
+        double p[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          p[a] = origin[a] + index[a] * spacing[a];
+        }
+        // h in [0, 1] up the plume; the axis drifts towards the volume and sways.
+        const double h = cup.Side > 0.0 ? (p[cup.Up] - origin[cup.Up]) / height
+                                         : (origin[cup.Up] + height - p[cup.Up]) / height;
+        double r2 = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          if (a == cup.Up)
+          {
+            continue;
+          }
+          double axis = cup.Base[a];
+          if (a == cup.Lateral)
+          {
+            axis += lateralSide * (0.35 * h * h * width + 0.03 * width * std::sin(5.0 * h));
+          }
+          else
+          {
+            axis += 0.03 * width * std::sin(4.0 * h + 1.0);
+          }
+          r2 += (p[a] - axis) * (p[a] - axis);
+        }
+        const double radius = cup.Radius * (0.6 + 1.8 * h);
+        const double wisps = 0.85 + 0.15 * std::sin(11.0 * h + 0.04 * (p[0] + p[1] + p[2]));
+        const double value = std::exp(-r2 / (radius * radius)) * (1.0 - h * h) * std::min(1.0, 8.0 * h) * wisps;
+        density[i + dims[0] * (j + dims[1] * k)] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(value, 0.0, 1.0)));
+      }
+  return image;
+}
+
+vtkSmartPointer<vtkVolumeProperty> vtkDeepShadowHybridScene::MakeSmokeProperty()
+{
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 0.75, 0.75, 0.78);
+  color->AddRGBPoint(255, 0.95, 0.95, 0.97);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(15, 0.0);
+  opacity->AddPoint(255, 0.35);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetInterpolationTypeToLinear();
+  property->SetAmbient(0.35);
+  property->SetDiffuse(0.75);
+  property->ShadeOff();
+  return property;
 }
 
 void vtkDeepShadowHybridScene::PrintSelf(ostream& os, vtkIndent indent)

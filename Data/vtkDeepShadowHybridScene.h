@@ -12,6 +12,10 @@
  *                    is tinted (coloured techniques) and lighter.
  * - "hybrid-rod":    the head with an opaque rod (a surgical tool) through it: the rod is
  *                    shadowed by the skull and shadows the brain, over a ground.
+ * - "hybrid-smoke":  the composition of the hybrid deep-shadow-map paper: a smoking cup of
+ *                    coffee beside the head, over a ground. The smoke is a second volume
+ *                    (MakeSmoke) rising from the cup on the light's side, so that its shadow
+ *                    falls over the head; the head shadows the cup, the cup the ground.
  */
 #ifndef vtkDeepShadowHybridScene_h
 #define vtkDeepShadowHybridScene_h
@@ -24,7 +28,9 @@
 #include <string> // For scene names
 #include <vector> // For scene names
 
+class vtkImageData;
 class vtkPolyData;
+class vtkVolumeProperty;
 
 class VTKDEEPSHADOWSCENES_EXPORT vtkDeepShadowHybridScene : public vtkObject
 {
@@ -33,7 +39,7 @@ public:
   vtkTypeMacro(vtkDeepShadowHybridScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** hybrid-ground, hybrid-glass, hybrid-rod. */
+  /** hybrid-ground, hybrid-glass, hybrid-rod, hybrid-smoke. */
   static std::vector<std::string> GetSceneNames();
   static bool IsSceneName(const std::string& name);
   static std::string GetSceneDescription(const std::string& name);
@@ -54,6 +60,14 @@ public:
   static std::vector<Mesh> MakeMeshes(const std::string& name, const double volumeBounds[6], const double toLight[3]);
   /** A ground square under the volume, on the far side from the light (deepshadow --ground). */
   static Mesh MakeGround(const double volumeBounds[6], const double toLight[3]);
+  /**
+   * The second volume of scene `name` (the smoke of "hybrid-smoke": a plume of unsigned char
+   * density, 0 outside it), placed as MakeMeshes places its cup; null for scenes without one.
+   */
+  static vtkSmartPointer<vtkImageData> MakeSmoke(const std::string& name, const double volumeBounds[6],
+    const double toLight[3]);
+  /** How the smoke looks and casts: grey-white, faint where thin (unshaded). */
+  static vtkSmartPointer<vtkVolumeProperty> MakeSmokeProperty();
 
 protected:
   vtkDeepShadowHybridScene() = default;

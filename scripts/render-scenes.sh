@@ -18,7 +18,7 @@ for scene in head-cut box-torus spheres-half; do
     --out "$root/out/bounded/$scene.png" --json "$root/out/bounded/$scene.json"
 done
 mkdir -p "$root/out/hybrid"
-for scene in hybrid-ground hybrid-glass hybrid-rod; do
+for scene in hybrid-ground hybrid-glass hybrid-rod hybrid-smoke; do
   "$root/build/bin/deepshadow" render --scene "$scene" --technique dsm-color --frames 1 \
     --out "$root/out/hybrid/$scene.png" --json "$root/out/hybrid/$scene.json"
 done

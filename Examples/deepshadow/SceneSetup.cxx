@@ -184,11 +184,13 @@ namespace
 {
 // The meshes of a hybrid scene, --ground and --mesh: vtkDeepShadowPolyDataMapper actors under
 // a vtkDeepShadowPass, which makes them cast into the volume's shadows and receive them.
-void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<LightSpec>& lights,
-  const double centre[3])
+// Towards the key light: hybrid meshes and volumes are placed from it (the headlight: from
+// the camera).
+void TowardsKeyLight(const SceneSetup& setup, const std::vector<LightSpec>& lights,
+  const double centre[3], double toLight[3])
 {
-  // Towards the key light: hybrid meshes are placed from it (the headlight: from the camera).
-  double toLight[3] = { 0.0, 0.0, 1.0 };
+  toLight[0] = toLight[1] = 0.0;
+  toLight[2] = 1.0;
   if (!lights.empty())
   {
     const LightSpec& key = lights.front();
@@ -205,6 +207,60 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
       toLight[c] = position[c] - centre[c];
     }
   }
+}
+
+// A hybrid scene's second volume (the smoke of hybrid-smoke): drawn by its own mapper with a
+// technique of the same kind, at the first volume's sample distance (the CPU reference marches
+// every volume with one), and the camera widened to show both.
+void AddSecondVolume(SceneSetup& setup, const Options& options, const std::vector<LightSpec>& lights,
+  const double centre[3])
+{
+  double toLight[3];
+  TowardsKeyLight(setup, lights, centre, toLight);
+  double bounds[6];
+  setup.Volume->GetBounds(bounds);
+  vtkSmartPointer<vtkImageData> smoke = options.VolumeFile.empty()
+    ? vtkDeepShadowHybridScene::MakeSmoke(options.Scene, bounds, toLight)
+    : nullptr;
+  if (!smoke)
+  {
+    return;
+  }
+  setup.SecondMapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
+  setup.SecondMapper->SetInputData(smoke);
+  double step = options.SampleDistance;
+  if (!(step > 0.0))
+  {
+    const double* spacing = setup.Data->GetSpacing();
+    step = 0.5 * std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
+  }
+  setup.Mapper->SetSampleDistance(step);
+  setup.SecondMapper->SetSampleDistance(step);
+  setup.SecondMapper->SetJitter(options.Jitter);
+  setup.SecondMapper->SetJitterSeed(options.JitterSeed);
+  setup.SecondTechnique = MakeTechnique(options);
+  setup.SecondMapper->SetShadowTechnique(setup.SecondTechnique);
+  setup.SecondVolume = vtkSmartPointer<vtkVolume>::New();
+  setup.SecondVolume->SetMapper(setup.SecondMapper);
+  setup.SecondVolume->SetProperty(vtkDeepShadowHybridScene::MakeSmokeProperty());
+  setup.Renderer->AddVolume(setup.SecondVolume);
+  double both[6];
+  smoke->GetBounds(both);
+  for (int a = 0; a < 3; ++a)
+  {
+    both[2 * a] = std::min(both[2 * a], bounds[2 * a]);
+    both[2 * a + 1] = std::max(both[2 * a + 1], bounds[2 * a + 1]);
+  }
+  setup.Renderer->ResetCamera(both);
+  setup.Renderer->GetActiveCamera()->Zoom(1.15);
+  setup.Renderer->ResetCameraClippingRange();
+}
+
+void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<LightSpec>& lights,
+  const double centre[3])
+{
+  double toLight[3];
+  TowardsKeyLight(setup, lights, centre, toLight);
   const double* bounds = setup.Volume->GetBounds();
   std::vector<vtkDeepShadowHybridScene::Mesh> meshes;
   if (options.VolumeFile.empty())
@@ -437,6 +493,7 @@ SceneSetup SceneSetup::Build(const Options& options)
   // automatic headlight.
   const double* centre = setup.Volume->GetCenter();
   AddMeshes(setup, options, lights, centre);
+  AddSecondVolume(setup, options, lights, centre);
   for (const LightSpec& spec : lights)
   {
     vtkNew<vtkLight> light;

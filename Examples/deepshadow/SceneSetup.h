@@ -43,6 +43,10 @@ struct SceneSetup
   // Hybrid scenes (a hybrid scene's meshes, --ground, --mesh): the meshes and their pass.
   std::vector<vtkSmartPointer<vtkDeepShadowPolyDataMapper>> Meshes;
   vtkSmartPointer<vtkDeepShadowPass> Pass;
+  // A hybrid scene's second volume (hybrid-smoke's smoke), with its own technique; null if none.
+  vtkSmartPointer<vtkVolume> SecondVolume;
+  vtkSmartPointer<vtkDeepShadowVolumeMapper> SecondMapper;
+  vtkSmartPointer<vtkDeepShadowTechnique> SecondTechnique;
 
   /** Loads or generates the volume and sets up the view; throws UsageError on bad input. */
   static SceneSetup Build(const Options& options);

@@ -123,7 +123,7 @@ awk -F, 'NR > 1 { s[NR] = $1; t[NR] = $13; e[NR] = $18; p[NR] = $22 }
 expect 2 "report without --out" -- "$tool" report --quick
 expect 2 "report of an unknown scene" -- "$tool" report --scenes teapot --out report2
 expect 0 "scenes" -- "$tool" scenes
-[ "$(grep -c '^[a-z]' out.txt)" -eq 12 ] || { echo "FAILED: expected 6 scenes, 3 bounded and 3 hybrid ones"; failures=$((failures + 1)); }
+[ "$(grep -c '^[a-z]' out.txt)" -eq 13 ] || { echo "FAILED: expected 6 scenes, 3 bounded and 4 hybrid ones"; failures=$((failures + 1)); }
 
 # Polyhedral bounds: bounded scenes, meshes from files combined by --csg, and bad bounds.
 cube_obj() { # cube_obj FILE LO HI [FACES]: an OBJ cube, outward; FACES < 6 leaves it open
@@ -160,6 +160,9 @@ expect 2 "a missing mesh" -- "$tool" render --scene box --size 64x64 --bound non
 # Hybrid scenes: meshes that cast and receive (--mesh and its options, --ground, the scenes).
 expect 0 "a hybrid scene" -- "$tool" render --scene hybrid-glass --scale 0.5 --size 64x64 --technique dsm-color --frames 1 --out glass.png --json glass.json
 grep -q '"casting_meshes": 2' glass.json || { echo "FAILED: glass.json lacks its 2 casting meshes"; failures=$((failures + 1)); }
+expect 0 "the smoke + cup + head scene (two volumes)" -- "$tool" render --scene hybrid-smoke --scale 0.5 --size 64x64 --technique dsm --frames 2 --out smoke.png --json smoke.json
+grep -q '"volumes": 2' smoke.json && grep -q '"other_volume_shadow_builds": 4' smoke.json ||
+  { echo "FAILED: smoke.json lacks its 2 volumes and their 4 grids (head, smoke, ground, cup), built once"; failures=$((failures + 1)); }
 expect 0 "--mesh with opacity, colour, transform and --ground" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique rays --frames 1 --mesh small.obj --mesh-opacity 0.4 --mesh-color 1,0.2,0.2 --mesh-transform 0,0,30,0.5 --ground --out meshes.png --json meshes.json
 grep -q '"meshes": 2' meshes.json || { echo "FAILED: meshes.json lacks the mesh and the ground"; failures=$((failures + 1)); }
 expect 0 "an open mesh (meshes need not be closed)" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique shadowmap --frames 1 --mesh open.obj --out open.png

@@ -412,10 +412,10 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           for (size_t h = 0; h <= hits.size(); ++h)
           {
             const double to = h < hits.size() ? hits[h].T : tEnd;
-            for (size_t v = 0; v < scene.Volumes.size(); ++v)
+            if (!scene.Volumes.empty())
             {
               const glm::dvec4 rgba =
-                MarchRay(scene, scene.Volumes[v], prepared[v], ray, to, offset, settings, nullptr, from);
+                MarchRay(scene, scene.Volumes[0], prepared[0], ray, to, offset, settings, nullptr, from);
               CompositeFrontToBack(front, rgba.a > 0.0 ? glm::dvec3(rgba) / rgba.a : glm::dvec3(0.0), rgba.a);
             }
             if (h < hits.size())
@@ -429,6 +429,12 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
             from = to;
           }
           pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
+          // The other volumes are blended over in scene order, up to the first opaque mesh.
+          for (size_t v = 1; v < scene.Volumes.size(); ++v)
+          {
+            const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings);
+            pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+          }
           termPixel = pixel;
         }
         else

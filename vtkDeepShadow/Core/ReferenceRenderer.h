@@ -13,8 +13,10 @@
 // part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)), per colour
 // channel (coloured techniques give each channel its own V); ambient never is.
 //
-// Hybrid scenes: along a view ray, the meshes' crossings and the volumes' samples are composited
-// in depth order (an opaque mesh ends the ray); a mesh point is Phong-lit with its interpolated
+// Hybrid scenes: along a view ray, the meshes' crossings and the first volume's samples are
+// composited in depth order (an opaque mesh ends the ray), and the other volumes are blended
+// over that in scene order, up to the first opaque mesh (as vtkDeepShadowPass draws them:
+// only the first volume merges the translucent layers); a mesh point is Phong-lit with its interpolated
 // normal and colour, each light scaled by its visibility, looked up deepshadow::ReceiverOffset
 // towards the light.
 //
