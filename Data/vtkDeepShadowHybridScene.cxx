@@ -68,6 +68,7 @@ struct CupPlace
   int Up = 2;
   double Side = 1.0;     // +1: the light is on the positive side of Up
   int Lateral = 0;       // the axis the cup is moved along
+  double LateralSide = 1.0; // +1: the cup is on the positive side of the volume
   double Base[3] = { 0.0, 0.0, 0.0 }; // centre of the cup's bottom
   double Radius = 0.0;
   double Height = 0.0;
@@ -85,7 +86,7 @@ CupPlace PlaceCup(const double b[6], const double toLight[3])
       cup.Lateral = a;
     }
   }
-  const double lateralSide = toLight[cup.Lateral] >= 0.0 ? 1.0 : -1.0;
+  cup.LateralSide = toLight[cup.Lateral] >= 0.0 ? 1.0 : -1.0;
   const double size = Extent(b);
   cup.Radius = 0.09 * size;
   cup.Height = 0.22 * size;
@@ -96,8 +97,8 @@ CupPlace PlaceCup(const double b[6], const double toLight[3])
   // On the ground (MakeGround's near face), one cup beyond the volume's side.
   const double face = cup.Side > 0.0 ? b[2 * cup.Up] : b[2 * cup.Up + 1];
   cup.Base[cup.Up] = face - cup.Side * 0.04 * size;
-  cup.Base[cup.Lateral] = lateralSide > 0.0 ? b[2 * cup.Lateral + 1] + 1.6 * cup.Radius
-                                            : b[2 * cup.Lateral] - 1.6 * cup.Radius;
+  cup.Base[cup.Lateral] = cup.LateralSide > 0.0 ? b[2 * cup.Lateral + 1] + 1.6 * cup.Radius
+                                                : b[2 * cup.Lateral] - 1.6 * cup.Radius;
   return cup;
 }
 
@@ -132,21 +133,18 @@ vtkSmartPointer<vtkPolyData> Cylinder(const CupPlace& cup, int sides)
     const vtkIdType flipped[4] = { i, sides + i, sides + j, j };
     polys->InsertNextCell(4, flip ? flipped : quad);
   }
-  const vtkIdType caps = 2 * sides;
-  std::vector<vtkIdType> bottom, top;
-  for (int i = 0; i < sides; ++i)
+  // A ring in ascending order faces +axis `up`: the cap at the base faces away from the cup
+  // (-side), the other one towards `side`.
+  for (int ring = 0; ring < 2; ++ring)
   {
-    bottom.push_back(caps + sides - 1 - i);
-    top.push_back(caps + sides + i);
+    const bool facesUp = (ring == 1) == (cup.Side > 0.0);
+    std::vector<vtkIdType> cap;
+    for (int i = 0; i < sides; ++i)
+    {
+      cap.push_back(2 * sides + ring * sides + (facesUp ? i : sides - 1 - i));
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(cap.size()), cap.data());
   }
-  if (flip)
-  {
-    std::swap(bottom, top);
-    std::reverse(bottom.begin(), bottom.end());
-    std::reverse(top.begin(), top.end());
-  }
-  polys->InsertNextCell(static_cast<vtkIdType>(bottom.size()), bottom.data());
-  polys->InsertNextCell(static_cast<vtkIdType>(top.size()), top.data());
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(points);
   mesh->SetPolys(polys);
@@ -283,7 +281,7 @@ vtkSmartPointer<vtkImageData> vtkDeepShadowHybridScene::MakeSmoke(
   auto image = vtkSmartPointer<vtkImageData>::New();
   int dims[3];
   double spacing[3], origin[3];
-  const double lateralSide = cup.Base[cup.Lateral] > 0.5 * (b[2 * cup.Lateral] + b[2 * cup.Lateral + 1]) ? -1.0 : 1.0;
+  const double lateralSide = -cup.LateralSide; // the plume drifts towards the volume
   for (int a = 0; a < 3; ++a)
   {
     const bool up = a == cup.Up;

@@ -1,5 +1,7 @@
 #include "SceneSetup.h"
 
+#include "VolumeGrid.h"
+
 #include "vtkDeepShadowBoundedScene.h"
 #include "vtkDeepShadowCSGFilter.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
@@ -37,6 +39,8 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -231,8 +235,10 @@ void AddSecondVolume(SceneSetup& setup, const Options& options, const std::vecto
   double step = options.SampleDistance;
   if (!(step > 0.0))
   {
+    // The first volume's default (a generated scene: axis-aligned, not transformed).
     const double* spacing = setup.Data->GetSpacing();
-    step = 0.5 * std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
+    step = deepshadow::DefaultSampleDistance(
+      glm::scale(glm::dmat4(1.0), glm::dvec3(spacing[0], spacing[1], spacing[2])));
   }
   setup.Mapper->SetSampleDistance(step);
   setup.SecondMapper->SetSampleDistance(step);

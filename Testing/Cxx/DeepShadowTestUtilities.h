@@ -77,11 +77,15 @@ inline bool Check(const std::string& what, bool good)
   return good;
 }
 
+/** Whether a list of shader features (a mapper's GetShaderFeatures()) has `feature`. */
+inline bool HasFeature(const std::vector<std::string>& features, const std::string& feature)
+{
+  return std::find(features.begin(), features.end(), feature) != features.end();
+}
 /** Whether the mapper's last composed shader has `feature`. */
 inline bool HasFeature(vtkDeepShadowVolumeMapper* mapper, const std::string& feature)
 {
-  const auto& features = mapper->GetShaderFeatures();
-  return std::find(features.begin(), features.end(), feature) != features.end();
+  return HasFeature(mapper->GetShaderFeatures(), feature);
 }
 
 /**

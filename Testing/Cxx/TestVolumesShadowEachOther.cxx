@@ -18,6 +18,7 @@
 #include "vtkRegressionTestImage.h"
 
 #include <cmath>
+#include <cstdlib>
 
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
@@ -45,12 +46,6 @@ vtkSmartPointer<vtkImageData> Smoke(const glm::dvec3& centre)
         v[i + n * (j + n * k)] = static_cast<unsigned char>(std::lround(255.0 * std::exp(-3.0 * r2)));
       }
   return image;
-}
-
-bool HasMeshFeature(vtkDeepShadowPolyDataMapper* mapper, const std::string& feature)
-{
-  const auto& features = mapper->GetShaderFeatures();
-  return std::find(features.begin(), features.end(), feature) != features.end();
 }
 }
 
@@ -114,7 +109,7 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   ok = WithinTolerance("two volumes and a ground: rays + dsm", gpu,
          deepshadow::testing::Reference(renderer, true), 2.0 / 255.0, 12.0 / 255.0, 0.01) && ok;
   ok = Check("the volume and the ground read the smoke's shadows",
-         HasFeature(scene.Mapper, "OtherVolumeShadows") && HasMeshFeature(groundMapper, "OtherVolumeShadows")) && ok;
+         HasFeature(scene.Mapper, "OtherVolumeShadows") && HasFeature(groundMapper->GetShaderFeatures(), "OtherVolumeShadows")) && ok;
   ok = Check("the smoke reads the volume's (" + std::to_string(pass->GetOtherVolumeShadowBuilds()) + " grids built, " +
            std::to_string(pass->GetOtherVolumeShadowBytes()) + " bytes)",
          HasFeature(smokeMapper, "OtherVolumeShadows") && pass->GetOtherVolumeShadowBuilds() == 3) && ok;
@@ -135,7 +130,10 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   dsm->SetShadowProperty(castsNothing);
   window->Render();
   const deepshadow::Image noSmokeShadow = Grab(window);
-  WithinTolerance("the smoke casting nothing", noSmokeShadow, gpu, 1.0, 1.0, 1.0); // only shown
+  if (const char* directory = std::getenv("DEEPSHADOW_TEST_IMAGES"))
+  {
+    deepshadow::WritePNG(noSmokeShadow, std::string(directory) + "/the_smoke_casting_nothing.png");
+  }
   dsm->SetShadowProperty(nullptr);
   int darker = 0, brighter = 0, outside = 0;
   for (int y = 0; y < gpu.Height; ++y)
@@ -199,7 +197,7 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   smokeMapper->SetShadowTechnique(nullptr);
   window->Render();
   ok = Check("with one shadowing volume no grid is read",
-         !HasFeature(scene.Mapper, "OtherVolumeShadows") && !HasMeshFeature(groundMapper, "OtherVolumeShadows") &&
+         !HasFeature(scene.Mapper, "OtherVolumeShadows") && !HasFeature(groundMapper->GetShaderFeatures(), "OtherVolumeShadows") &&
            pass->GetOtherVolumeShadowBytes() == 0) && ok;
   smokeMapper->SetShadowTechnique(dsm);
 

@@ -163,10 +163,12 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   // Every volume with a technique casts shadows onto the others and onto the meshes. The
   // first one is the meshes' shadow source and holds the casting meshes (so that they count
   // once); the others reach each receiver through a grid (deepshadow::OtherVolumeShadows).
+  // (Set once per volume: a replaced set marks the mapper modified.)
   std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> shadowing;
   for (const auto& entry : volumes)
   {
-    entry.second->SetCastingSurfaces(nullptr);
+    const bool source = shadowing.empty() && entry.second->GetShadowTechnique();
+    entry.second->SetCastingSurfaces(source ? impl.Surfaces : nullptr);
     if (entry.second->GetShadowTechnique())
     {
       shadowing.push_back(entry);
@@ -177,15 +179,9 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   {
     for (size_t v = 0; v < shadowing.size(); ++v)
     {
-      auto [volume, mapper] = shadowing[v];
-      mapper->SetCastingSurfaces(v == 0 ? impl.Surfaces : nullptr);
-      casters[v].Context = mapper->PrepareShadows(renderer, volume);
-      casters[v].Technique = mapper->GetShadowTechnique();
+      casters[v].Context = shadowing[v].second->PrepareShadows(renderer, shadowing[v].first);
+      casters[v].Technique = shadowing[v].second->GetShadowTechnique();
     }
-  }
-  else if (!shadowing.empty())
-  {
-    shadowing.front().second->SetCastingSurfaces(impl.Surfaces);
   }
   const deepshadow::ShadowContext* source = casters.empty() ? nullptr : casters.front().Context;
   vtkDeepShadowTechnique* technique = source ? casters.front().Technique : nullptr;

@@ -19,7 +19,8 @@ bool OtherVolumeShadows::Update(vtkOpenGLRenderWindow* window, const GridFrame& 
   const std::vector<VolumeCaster>& casters, std::string& error)
 {
   // What the grid depends on. A caster that ran any pass this frame (its table, structure or
-  // cache was rebuilt) changed what it casts.
+  // cache was rebuilt) changed what it casts; the key holds what can change without a pass
+  // (lookup parameters, a feeler's volume moving).
   std::vector<double> key(glm::value_ptr(frame.NodeToWorld), glm::value_ptr(frame.NodeToWorld) + 16);
   key.insert(key.end(), { double(frame.Dims.x), double(frame.Dims.y), double(frame.Dims.z) });
   bool casterChanged = false;
@@ -29,7 +30,7 @@ bool OtherVolumeShadows::Update(vtkOpenGLRenderWindow* window, const GridFrame& 
     const ShadowContext& context = *caster.Context;
     casterChanged = casterChanged || !caster.Technique->GetLastPasses().empty();
     key.insert(key.end(), { static_cast<double>(reinterpret_cast<uintptr_t>(caster.Technique)),
-      static_cast<double>(caster.Technique->GetMTime()), static_cast<double>(caster.Technique->GetBuildCount()),
+      static_cast<double>(caster.Technique->GetMTime()),
       static_cast<double>(context.DataVersion), static_cast<double>(context.BoundVersion),
       static_cast<double>(context.SurfacesVersion), context.ViewStep });
     key.insert(key.end(), glm::value_ptr(context.IndexToWorld), glm::value_ptr(context.IndexToWorld) + 16);

@@ -69,7 +69,6 @@ public:
       this->Cache = nullptr;
     }
     this->CacheBuild.Release();
-    this->OtherBuild.Release();
     this->CacheSlots.Invalidate();
   }
 };
@@ -377,7 +376,6 @@ int vtkDeepShadowTechnique::EvaluateOnGrid(const deepshadow::ShadowContext& cont
   {
     return writtenSlabs;
   }
-  this->LastError.clear();
   if (!this->RunGridPass(impl.OtherBuild, "#define OTHER_VOLUMES\n", context, grid, true, frame,
         slotsAndSlabs, impl.Slots, false, glm::vec3(0.0), ~writtenSlabs & 0xff))
   {
@@ -556,6 +554,7 @@ void vtkDeepShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
     impl.FeelerTable = nullptr;
   }
   impl.ReleaseCache(window);
+  impl.OtherBuild.Release();
   impl.Slots.Invalidate();
 }
 
