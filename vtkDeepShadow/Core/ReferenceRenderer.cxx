@@ -15,6 +15,62 @@
 namespace deepshadow
 {
 
+namespace
+{
+// A mesh crossing or a volume's sample (or segment) along a view ray, premultiplied.
+struct Fragment
+{
+  double T;
+  glm::dvec4 Color;
+  glm::dvec4 Term;
+  bool FirstVolume;
+};
+
+// Scene::VolumeSegments: a volume's samples along `ray` grouped into `count` segments of equal
+// length between its entry and its exit (or `tEnd`), each composited on its own and placed at
+// its opacity-weighted mean depth; as the GPU's march, the samples stop once the volume alone
+// is nearly opaque. Empty segments are left out.
+std::vector<RaySample> Segments(const std::vector<RaySample>& samples, const Ray& ray,
+  const VolumeGrid& grid, double tEnd, int count, double termination)
+{
+  double tEnter = 0.0, tExit = 0.0;
+  std::vector<RaySample> segments(static_cast<size_t>(count));
+  std::vector<double> weightedT(segments.size(), 0.0);
+  if (samples.empty() ||
+    !IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
+  {
+    return {};
+  }
+  const double t0 = std::max(tEnter, 0.0);
+  const double length = std::min(tExit, tEnd) - t0;
+  double alpha = 0.0;
+  for (const RaySample& sample : samples)
+  {
+    if (alpha > termination)
+    {
+      break;
+    }
+    const int s = std::clamp(static_cast<int>((sample.T - t0) / length * count), 0, count - 1);
+    RaySample& segment = segments[static_cast<size_t>(s)];
+    const double weight = (1.0 - segment.Color.a) * sample.Color.a;
+    weightedT[static_cast<size_t>(s)] += weight * sample.T;
+    segment.Color += (1.0 - segment.Color.a) * sample.Color;
+    segment.Term += (1.0 - segment.Term.a) * sample.Term;
+    alpha += (1.0 - alpha) * sample.Color.a;
+  }
+  std::vector<RaySample> kept;
+  for (size_t s = 0; s < segments.size(); ++s)
+  {
+    if (segments[s].Color.a > 0.0)
+    {
+      segments[s].T = weightedT[s] / segments[s].Color.a;
+      kept.push_back(segments[s]);
+    }
+  }
+  return kept;
+}
+}
+
 MarchSettings MarchSettings::GpuTwin(
   double sampleDistance, int tableSize, bool jitter, uint32_t seed, double terminationOpacity)
 {
@@ -96,12 +152,12 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
 
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-  const MarchSettings& settings, glm::dvec4* shadowTerm, double tFrom)
+  const MarchSettings& settings, glm::dvec4* shadowTerm, std::vector<RaySample>* samples)
 {
   const TransferTable* table = prepared.Table.get();
   const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
   const bool termOnly = settings.Output == RenderOutput::ShadowTerm;
-  const bool wantTerm = termOnly || shadowTerm;
+  const bool wantTerm = termOnly || shadowTerm || samples;
   const bool lit = volume.Shade || shadowed || termOnly;
   const VolumeGrid& grid = *volume.Grid;
   double tEnter = 0.0, tExit = 0.0;
@@ -128,13 +184,9 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
-    if (!(t < t1) || accumulated.a > settings.TerminationOpacity)
+    if (!(t < t1) || (!samples && accumulated.a > settings.TerminationOpacity))
     {
       break;
-    }
-    if (t < tFrom)
-    {
-      continue;
     }
     if (bound)
     {
@@ -173,6 +225,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     {
       continue;
     }
+    glm::dvec3 termColor(1.0); // nothing shadows an unlit sample
     if (lit)
     {
       const glm::dvec3 position = ray.Origin + t * ray.Direction;
@@ -211,14 +264,15 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         light += contribution;
       }
       color = glm::clamp(termOnly ? term : light, 0.0, 1.0);
-      if (shadowTerm)
-      {
-        CompositeFrontToBack(termAccumulated, glm::clamp(term, 0.0, 1.0), alpha);
-      }
+      termColor = glm::clamp(term, 0.0, 1.0);
     }
-    else if (shadowTerm)
+    if (shadowTerm)
     {
-      CompositeFrontToBack(termAccumulated, glm::dvec3(1.0), alpha);
+      CompositeFrontToBack(termAccumulated, termColor, alpha);
+    }
+    if (samples)
+    {
+      samples->push_back({ t, glm::dvec4(alpha * color, alpha), glm::dvec4(alpha * termColor, alpha) });
     }
     CompositeFrontToBack(accumulated, color, alpha);
   }
@@ -231,12 +285,16 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
 
 glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
   const SurfaceHit& hit, const Ray& ray, const std::vector<const LightShadow*>& shadows,
-  const std::vector<const LightShadow*>& others, double receiverBias)
+  const std::vector<const LightShadow*>& others, double receiverBias, glm::dvec3* term)
 {
   const SurfaceMaterial& material = surfaces.GetSurface(hit.Surface).Material;
   const glm::dvec3 color = surfaces.Color(hit);
   const glm::dvec3 normal = surfaces.Normal(hit);
   const glm::dvec3 position = ray.Origin + hit.T * ray.Direction;
+  if (term)
+  {
+    *term = glm::dvec3(1.0);
+  }
   glm::dvec3 lit = material.Shading.Ambient * color * scene.AmbientLight;
   for (size_t l = 0; l < scene.Lights.size(); ++l)
   {
@@ -245,7 +303,8 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
       PhongLight(color, normal, -ray.Direction, sample, material.Shading, scene.TwoSidedLighting);
     const LightShadow* own = l < shadows.size() ? shadows[l] : nullptr;
     const LightShadow* other = l < others.size() ? others[l] : nullptr;
-    if ((own || other) && contribution != glm::dvec3(0.0))
+    const bool termReached = term && sample.Reach > 0.0;
+    if ((own || other) && (contribution != glm::dvec3(0.0) || termReached))
     {
       const double offset = ReceiverOffset(receiverBias, normal, sample.ToLight);
       const glm::dvec3 at = position + offset * sample.ToLight;
@@ -254,9 +313,18 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
       {
         visibility *= other->Visibility(at);
       }
-      contribution *= 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+      const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+      contribution *= factor;
+      if (termReached)
+      {
+        *term *= factor;
+      }
     }
     lit += contribution;
+  }
+  if (term)
+  {
+    *term = glm::clamp(*term, 0.0, 1.0);
   }
   return glm::clamp(lit, 0.0, 1.0);
 }
@@ -384,69 +452,79 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           : UnjitteredOffset;
         glm::dvec3 pixel = scene.Background;
         glm::dvec3 termPixel = scene.Background;
-        if (scene.Surfaces && !scene.Surfaces->Empty())
+        if ((scene.Surfaces && !scene.Surfaces->Empty()) || scene.Volumes.size() > 1)
         {
-          // Mesh crossings in depth order, up to the first opaque one; the volumes' samples
-          // between them.
-          std::vector<SurfaceHit> hits;
+          // Mesh crossings in depth order, up to the first opaque one (which ends the ray).
+          std::vector<Fragment> fragments;
           double tEnd = std::numeric_limits<double>::infinity();
           int translucent = 0;
-          for (SurfaceHit hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0); hit.Found;
-               hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
+          for (SurfaceHit hit = scene.Surfaces ? scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0) : SurfaceHit();
+               hit.Found; hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
           {
-            if (scene.Surfaces->GetSurface(hit.Surface).Material.Opacity >= 1.0)
+            const SurfaceMesh& mesh = scene.Surfaces->GetSurface(hit.Surface);
+            const bool opaque = mesh.Material.Opacity >= 1.0;
+            // Behind the last peeled layer: left out, as on the GPU.
+            if (opaque || scene.TranslucentLayers == 0 || translucent < scene.TranslucentLayers)
             {
-              hits.push_back(hit);
+              glm::dvec3 term;
+              const glm::dvec3 color = ShadeSurface(scene, *scene.Surfaces, hit, ray,
+                mesh.ReceivesShadows ? sourceLookups : none,
+                mesh.ReceivesShadows ? meshOthers[hit.Surface] : none, receiverBias, &term);
+              const double alpha = std::clamp(mesh.Material.Opacity, 0.0, 1.0);
+              const glm::dvec3 shown = settings.Output == RenderOutput::ShadowTerm ? term : color;
+              fragments.push_back({ hit.T, glm::dvec4(alpha * shown, alpha), glm::dvec4(alpha * term, alpha), false });
+              translucent += opaque ? 0 : 1;
+            }
+            if (opaque)
+            {
               tEnd = hit.T;
               break;
             }
-            // Behind the last peeled layer: left out, as on the GPU.
-            if (scene.TranslucentLayers == 0 || translucent < scene.TranslucentLayers)
-            {
-              hits.push_back(hit);
-              ++translucent;
-            }
           }
-          glm::dvec4 front(0.0); // premultiplied, front to back
-          double from = -1.0;
-          for (size_t h = 0; h <= hits.size(); ++h)
-          {
-            const double to = h < hits.size() ? hits[h].T : tEnd;
-            if (!scene.Volumes.empty())
-            {
-              const glm::dvec4 rgba =
-                MarchRay(scene, scene.Volumes[0], prepared[0], ray, to, offset, settings, nullptr, from);
-              CompositeFrontToBack(front, rgba.a > 0.0 ? glm::dvec3(rgba) / rgba.a : glm::dvec3(0.0), rgba.a);
-            }
-            if (h < hits.size())
-            {
-              const SurfaceMaterial& material = scene.Surfaces->GetSurface(hits[h].Surface).Material;
-              const bool receives = scene.Surfaces->GetSurface(hits[h].Surface).ReceivesShadows;
-              const glm::dvec3 color = ShadeSurface(scene, *scene.Surfaces, hits[h], ray,
-                receives ? sourceLookups : none, receives ? meshOthers[hits[h].Surface] : none, receiverBias);
-              CompositeFrontToBack(front, color, std::clamp(material.Opacity, 0.0, 1.0));
-            }
-            from = to;
-          }
-          pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
-          // The other volumes are blended over in scene order, up to the first opaque mesh.
-          for (size_t v = 1; v < scene.Volumes.size(); ++v)
-          {
-            const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings);
-            pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
-          }
-          termPixel = pixel;
-        }
-        else
-        {
+          // Every volume's samples before it: the first's one by one, the others' one by one
+          // (exact) or in segments (the GPU twin).
+          std::vector<RaySample> samples;
           for (size_t v = 0; v < scene.Volumes.size(); ++v)
           {
-            glm::dvec4 term(0.0);
-            const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[v], prepared[v], ray,
-              std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
-            pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
-            termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
+            samples.clear();
+            MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings, nullptr, &samples);
+            if (v > 0 && scene.VolumeSegments > 0)
+            {
+              samples = Segments(samples, ray, *scene.Volumes[v].Grid, tEnd, scene.VolumeSegments,
+                settings.TerminationOpacity);
+            }
+            for (const RaySample& sample : samples)
+            {
+              fragments.push_back({ sample.T, sample.Color, sample.Term, v == 0 });
+            }
           }
+          // Stable: a mesh crossing and a sample at the same depth keep the crossing first.
+          std::stable_sort(fragments.begin(), fragments.end(),
+            [](const Fragment& a, const Fragment& b) { return a.T < b.T; });
+          glm::dvec4 front(0.0);
+          glm::dvec4 termFront(0.0);
+          bool terminated = false;
+          for (const Fragment& fragment : fragments)
+          {
+            // The first volume's march stops once the ray is nearly opaque (GPU twin).
+            terminated = terminated || (fragment.FirstVolume && front.a > settings.TerminationOpacity);
+            if (fragment.FirstVolume && terminated)
+            {
+              continue;
+            }
+            front += (1.0 - front.a) * fragment.Color;
+            termFront += (1.0 - termFront.a) * fragment.Term;
+          }
+          pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
+          termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;
+        }
+        else if (!scene.Volumes.empty())
+        {
+          glm::dvec4 term(0.0);
+          const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[0], prepared[0], ray,
+            std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
+          pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+          termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
         }
         image.Set(x, y, pixel);
         if (shadowTerm)

@@ -13,12 +13,12 @@
 // part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)), per colour
 // channel (coloured techniques give each channel its own V); ambient never is.
 //
-// Hybrid scenes: along a view ray, the meshes' crossings and the first volume's samples are
-// composited in depth order (an opaque mesh ends the ray), and the other volumes are blended
-// over that in scene order, up to the first opaque mesh (as vtkDeepShadowPass draws them:
-// only the first volume merges the translucent layers); a mesh point is Phong-lit with its interpolated
-// normal and colour, each light scaled by its visibility, looked up deepshadow::ReceiverOffset
-// towards the light.
+// Hybrid scenes and several volumes: along a view ray, every volume's samples and the meshes'
+// crossings are composited in depth order (an opaque mesh ends the ray): volumes that overlap
+// interleave sample by sample, and a translucent mesh inside a volume sits between the samples
+// around it. A mesh point is Phong-lit with its interpolated normal and colour, each light
+// scaled by its visibility, looked up deepshadow::ReceiverOffset towards the light.
+// (Scene::VolumeSegments > 0 reproduces the GPU instead, see there.)
 //
 // Several volumes: every volume with a shadow technique casts shadows onto the others and
 // onto the meshes. A light's visibility at a point is the product of every shadowing volume's
@@ -101,6 +101,23 @@ struct Scene
    * GridFrame::OverBox over a mesh's points) and interpolates it trilinearly.
    */
   int OtherVolumeShadowSize = 0;
+  /**
+   * 0: the samples of all volumes along a view ray interleave in depth order (exact). n > 0:
+   * the twin of vtkDeepShadowPass, where each volume after the first is cut, along each view
+   * ray, into n segments of equal length between its entry and its exit (or the first opaque
+   * mesh); a segment is composited on its own and takes its place among the first volume's
+   * samples and the meshes' crossings at its opacity-weighted mean depth. Volumes that do not
+   * overlap along a ray come out exact; where they do, the error shrinks as n grows.
+   */
+  int VolumeSegments = 0;
+};
+
+/** One sample of a volume along a view ray, premultiplied (colour x alpha, alpha). */
+struct RaySample
+{
+  double T = 0.0;
+  glm::dvec4 Color{ 0.0 };
+  glm::dvec4 Term{ 0.0 }; // the shadow term, composited as the colour is
 };
 
 /**
@@ -171,21 +188,22 @@ public:
   /**
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
    * first sample `offset` steps (in [0, 1)) past the entry; with `shadowTerm`, also the
-   * premultiplied shadow term along the same ray. Samples before `tFrom` are left out (the
-   * parts of a ray between mesh crossings).
+   * premultiplied shadow term along the same ray. With `samples`, every sample is also
+   * appended there and the march does not stop early (whoever composites them decides).
    */
   static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume,
     const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
-    const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr, double tFrom = -1.0);
+    const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr, std::vector<RaySample>* samples = nullptr);
 
   /**
    * Lit colour of a mesh point, as vtkDeepShadowPolyDataMapper's shader computes it.
    * `shadows`: the first shadowing volume's lookups, per light, or null; `others`: what the
-   * other volumes cast onto this mesh, per light, or null.
+   * other volumes cast onto this mesh, per light, or null. `term`: also the point's shadow
+   * term (see RenderOutput::ShadowTerm).
    */
   static glm::dvec3 ShadeSurface(const Scene& scene, const SurfaceSet& surfaces,
     const SurfaceHit& hit, const Ray& ray, const std::vector<const LightShadow*>& shadows,
-    const std::vector<const LightShadow*>& others, double receiverBias);
+    const std::vector<const LightShadow*>& others, double receiverBias, glm::dvec3* term = nullptr);
 };
 
 }
