@@ -208,6 +208,27 @@ inline vtkSmartPointer<vtkImageData> MakeShadowVolume(int n = 48)
   return image;
 }
 
+// A soft puff of smoke: 24^3 points, 3 units apart, centred at `centre`.
+inline vtkSmartPointer<vtkImageData> MakeSmokeVolume(const glm::dvec3& centre)
+{
+  const int n = 24;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(3.0, 3.0, 2.0);
+  image->SetOrigin(centre.x - 1.5 * (n - 1), centre.y - 1.5 * (n - 1), centre.z - (n - 1.0));
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = 2.0 * i / (n - 1) - 1.0, y = 2.0 * j / (n - 1) - 1.0, z = 2.0 * k / (n - 1) - 1.0;
+        const double r2 = 1.6 * x * x + y * y + 3.0 * z * z;
+        v[i + n * (j + n * k)] = static_cast<unsigned char>(std::lround(255.0 * std::exp(-3.0 * r2)));
+      }
+  return image;
+}
+
 /**
  * The scene the shadow tests share: MakeShadowVolume() with a coloured transfer function,
  * shaded, lit from above and slightly off axis, seen from the side at 160x160.

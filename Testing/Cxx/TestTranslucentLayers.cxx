@@ -133,9 +133,10 @@ int TestTranslucentLayers(int argc, char* argv[])
     second->SetPosition(60.0, -60.0, 0.0);
     renderer->AddVolume(second);
     window->Render();
-    ok = Check("two volumes: the first merges the layers, the second draws without them",
+    ok = Check("two volumes: the first merges the layers and the second's segments",
            pass->GetPeeledLayers() == 4 && HasFeature(scene.Mapper, "TranslucentLayers") &&
-             !HasFeature(secondMapper, "TranslucentLayers") && secondMapper->GetLastError().empty() &&
+             !HasFeature(secondMapper, "TranslucentLayers") && HasFeature(secondMapper, "VolumeSegments") &&
+             pass->GetMergedVolumes() == 1 && secondMapper->GetLastError().empty() &&
              scene.Mapper->GetLastError().empty()) && ok;
     renderer->RemoveVolume(second);
   }

@@ -20,6 +20,7 @@
 #include "vtkDeepShadowFeatureShadowGrid.h"
 #include "vtkDeepShadowFeatureShadowTerm.h"
 #include "vtkDeepShadowFeatureVolumeSampling.h"
+#include "vtkDeepShadowFeatureVolumeSegments.h"
 
 #include <sstream>
 #include <stdexcept>
@@ -99,10 +100,12 @@ std::string GlslConstantArray(const std::string& type, const std::string& name,
 namespace
 {
 // A sized feature: its source with `defines` at the top of its Dec part.
-ShaderFeature WithDefines(const char* name, std::string source, const std::string& defines)
+// `defines` at the start of the part that is spliced first.
+ShaderFeature WithDefines(const char* name, std::string source, const std::string& defines,
+  const std::string& part = "Dec")
 {
-  const std::string dec = "//@Dec\n";
-  source.insert(source.find(dec) + dec.size(), defines + "\n");
+  const std::string tag = "//@" + part + "\n";
+  source.insert(source.find(tag) + tag.size(), defines + "\n");
   return ShaderFeature(name, source);
 }
 }
@@ -112,14 +115,29 @@ ShaderFeature BoundShaderFeature(int leaves)
   return WithDefines("Bound", vtkDeepShadowFeatureBound, "#define BOUND_LEAVES " + std::to_string(leaves));
 }
 
-ShaderFeature TranslucentLayersShaderFeature(int layers)
+ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices)
 {
-  std::string defines = "#define TRANSLUCENT_LAYERS " + std::to_string(layers) + "\n#define LOAD_TRANSLUCENT_LAYERS";
+  std::string defines = "#define TRANSLUCENT_LAYERS " + std::to_string(layers) +
+    "\n#define SEGMENT_SLICES " + std::to_string(segmentSlices) + "\n#define LOAD_TRANSLUCENT_LAYERS";
   for (int k = 0; k < layers; ++k)
   {
     defines += " LOAD_LAYER(" + std::to_string(k) + ")";
   }
   return WithDefines("TranslucentLayers", vtkDeepShadowFeatureTranslucentLayers, defines);
+}
+
+ShaderFeature VolumeSegmentsShaderFeature(int segments)
+{
+  std::string outputs = "#define SEGMENT_OUTPUTS";
+  std::string writes = "#define WRITE_VOLUME_SEGMENTS";
+  for (int k = 0; k < segments; ++k)
+  {
+    const std::string n = std::to_string(k);
+    outputs += " layout(location = " + n + ") out uvec4 segmentOut" + n + ";";
+    writes += " segmentOut" + n + " = segmentTexel(" + n + ", rayOrigin, rayDirection);";
+  }
+  return WithDefines("VolumeSegments", vtkDeepShadowFeatureVolumeSegments,
+    "#define VOLUME_SEGMENTS " + std::to_string(segments) + "\n" + outputs + "\n" + writes, "Output");
 }
 
 std::string ComposeShader(const std::string& shaderTemplate, const std::set<std::string>& enabled,

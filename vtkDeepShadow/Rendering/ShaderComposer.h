@@ -36,8 +36,14 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 /** The Bound feature for a region of `leaves` leaves (BOUND_LEAVES defined in its Dec part). */
 ShaderFeature BoundShaderFeature(int leaves);
 
-/** The TranslucentLayers feature for `layers` peeled layers (Rendering/Translucency). */
-ShaderFeature TranslucentLayersShaderFeature(int layers);
+/**
+ * The TranslucentLayers feature for `layers` peeled layers and `segmentSlices` slices of
+ * other volumes' segments (Rendering/Translucency).
+ */
+ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices);
+
+/** The VolumeSegments feature: the march written as `segments` pieces (Rendering/Translucency). */
+ShaderFeature VolumeSegmentsShaderFeature(int segments);
 
 /**
  * Expands every tag of `shaderTemplate`; features not in `enabled` expand to nothing.

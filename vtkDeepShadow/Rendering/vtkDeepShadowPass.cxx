@@ -196,10 +196,11 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   }
   this->UpdateOtherVolumeShadows(renderer, shadowing, casters, meshes);
 
-  // Translucent meshes go into layers when a volume will merge them.
+  // Translucent meshes go into layers, and the volumes after the first into segments, when
+  // the first volume will merge them into its march.
+  const bool glWindow = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) != nullptr;
   std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
-  if (this->TranslucentLayers > 0 && !volumes.empty() &&
-    vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()))
+  if (this->TranslucentLayers > 0 && !volumes.empty() && glWindow)
   {
     for (const auto& entry : meshes)
     {
@@ -209,17 +210,28 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
       }
     }
   }
+  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> guests;
+  if (this->VolumeSegments > 0 && glWindow && volumes.size() > 1)
+  {
+    guests.assign(volumes.begin() + 1, volumes.end());
+  }
   this->PeeledLayers = 0;
   this->TranslucentLayersOverflowed = false;
-  if (peeled.empty())
+  this->MergedVolumes = 0;
+  if (peeled.empty() && guests.empty())
   {
     this->Superclass::Render(state);
   }
   else
   {
-    this->RenderWithLayers(state, volumes.front().second, peeled);
+    this->RenderMerged(state, volumes.front().second, guests, peeled);
   }
-  this->TranslucentLayerBytes = impl.Layers.GetBytes();
+  if (guests.empty())
+  {
+    impl.Layers.GetSegments().Release(renderer->GetRenderWindow());
+  }
+  this->VolumeSegmentBytes = impl.Layers.GetSegments().GetBytes();
+  this->TranslucentLayerBytes = impl.Layers.GetBytes() - this->VolumeSegmentBytes;
 
   // The source and the grids are set for this frame only.
   for (vtkDeepShadowPolyDataMapper* mapper : impl.Receivers)
@@ -328,7 +340,8 @@ void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
   impl.MeshGrids = std::move(meshGrids);
 }
 
-void vtkDeepShadowPass::RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+  const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& guests,
   const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled)
 {
   Internals& impl = *this->Impl;
@@ -339,34 +352,74 @@ void vtkDeepShadowPass::RenderWithLayers(const vtkRenderState* state, vtkDeepSha
 
   int width = 0, height = 0, x0 = 0, y0 = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  impl.Layers.Peel(window, x0, y0, width, height, this->TranslucentLayers,
-    [&](const deepshadow::PeelStep& step) {
-      for (const auto& [actor, mapper] : peeled)
-      {
-        mapper->SetPeelStep(&step);
-        actor->RenderTranslucentPolygonalGeometry(renderer);
-        mapper->SetPeelStep(nullptr);
-      }
-    });
-  this->PeeledLayers = impl.Layers.GetLayerCount();
-  this->TranslucentLayersOverflowed = impl.Layers.GetOverflowed();
+  if (peeled.empty())
+  {
+    impl.Layers.CaptureOpaque(window, x0, y0, width, height);
+  }
+  else
+  {
+    impl.Layers.Peel(window, x0, y0, width, height, this->TranslucentLayers,
+      [&](const deepshadow::PeelStep& step) {
+        for (const auto& [actor, mapper] : peeled)
+        {
+          mapper->SetPeelStep(&step);
+          actor->RenderTranslucentPolygonalGeometry(renderer);
+          mapper->SetPeelStep(nullptr);
+        }
+      });
+    this->PeeledLayers = impl.Layers.GetLayerCount();
+    this->TranslucentLayersOverflowed = impl.Layers.GetOverflowed();
+  }
+
+  // The other volumes, each into its slices of the segments.
+  deepshadow::VolumeSegments& segments = impl.Layers.GetSegments();
+  std::string error;
+  if (guests.empty() ||
+    !segments.Allocate(window, width, height, static_cast<int>(guests.size()), this->VolumeSegments, error))
+  {
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< error);
+    }
+    segments.Release(window);
+  }
+  else
+  {
+    for (size_t g = 0; g < guests.size(); ++g)
+    {
+      guests[g].second->SetVolumeSegments(&segments, static_cast<int>(g));
+      this->NumberOfRenderedProps += guests[g].first->RenderVolumetricGeometry(renderer);
+      guests[g].second->SetVolumeSegments(nullptr, 0);
+    }
+    this->MergedVolumes = static_cast<int>(guests.size());
+  }
   impl.Layers.Composite(window, x0, y0, width, height);
   this->NumberOfRenderedProps += static_cast<int>(peeled.size());
 
   // Other translucent props (not ours) as vtkDefaultPass draws them.
+  const auto isOneOf = [](vtkProp* prop, const auto& list) {
+    return std::any_of(list.begin(), list.end(), [prop](const auto& entry) { return entry.first == prop; });
+  };
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = state->GetPropArray()[i];
-    const bool isPeeled = std::any_of(
-      peeled.begin(), peeled.end(), [prop](const auto& entry) { return entry.first == prop; });
-    if (!isPeeled)
+    if (!isOneOf(prop, peeled))
     {
       this->NumberOfRenderedProps += prop->RenderTranslucentPolygonalGeometry(renderer);
     }
   }
 
+  // The merging volume, and volumes that are not ours, as vtkDefaultPass draws them; the
+  // merged ones are drawn already.
   merging->SetTranslucentLayers(&impl.Layers);
-  this->RenderVolumetricGeometry(state);
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    if (this->MergedVolumes == 0 || !isOneOf(prop, guests))
+    {
+      this->NumberOfRenderedProps += prop->RenderVolumetricGeometry(renderer);
+    }
+  }
   merging->SetTranslucentLayers(nullptr);
   this->RenderOverlay(state);
 }
@@ -387,4 +440,6 @@ void vtkDeepShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PeeledLayers: " << this->PeeledLayers << "\n";
   os << indent << "OtherVolumeShadowSize: " << this->OtherVolumeShadowSize << "\n";
   os << indent << "OtherVolumeShadowBuilds: " << this->OtherVolumeShadowBuilds << "\n";
+  os << indent << "VolumeSegments: " << this->VolumeSegments << "\n";
+  os << indent << "MergedVolumes: " << this->MergedVolumes << "\n";
 }

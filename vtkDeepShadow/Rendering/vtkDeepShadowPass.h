@@ -19,16 +19,20 @@
  * shadow structures are brought up to date before anything is drawn; then the props are
  * drawn as vtkDefaultPass draws them (opaque, translucent, volumes, overlay).
  *
- * Translucent meshes and the volume are composited in depth order along each view ray: the
- * translucent meshes are peeled into TranslucentLayers layers (depth peeling), and the first
- * visible volume merges them into its ray march at their depths, as the CPU reference does.
- * Pixels that volume does not cover get the layers by a full-screen pass. Fragments behind
- * the last layer are left out (GetTranslucentLayersOverflowed says when). With
- * TranslucentLayers 0, or with no volume, translucent meshes are blended as VTK blends them.
+ * Along each view ray, volumes and translucent meshes are composited in depth order: the
+ * translucent meshes are peeled into TranslucentLayers layers (depth peeling); each visible
+ * volume after the first is drawn into VolumeSegments segments (its march cut into pieces of
+ * equal length along the ray, each kept at its opacity-weighted mean depth); and the first
+ * visible volume merges layers and segments into its own march at their depths, as the CPU
+ * reference does (deepshadow::Scene::TranslucentLayers and VolumeSegments). Pixels that volume
+ * does not cover get the layers and segments by a full-screen pass. Volumes that do not
+ * overlap along a ray come out exact; where they do, they interleave at a segment's grain.
+ * Fragments behind the last layer are left out (GetTranslucentLayersOverflowed says when).
+ * With TranslucentLayers 0, or with no volume, translucent meshes are blended as VTK blends
+ * them; with VolumeSegments 0, volumes are blended in the renderer's order, as VTK does.
  *
- * Limits of this version: only the first volume merges the layers, and volumes are blended
- * over each other in the renderer's order (as VTK does), not interleaved along the view ray.
- * Mesh shadows reach the volumes after the first at the grid's resolution.
+ * Limit of this version: mesh shadows reach the volumes after the first at the grid's
+ * resolution.
  */
 #ifndef vtkDeepShadowPass_h
 #define vtkDeepShadowPass_h
@@ -80,6 +84,19 @@ public:
   vtkGetMacro(TranslucentLayersOverflowed, bool);
   /** GPU memory of the layers (and the opaque image copy they need), in bytes. */
   vtkGetMacro(TranslucentLayerBytes, long long);
+  ///@{
+  /**
+   * Segments each volume after the first is cut into along a view ray, to be merged into the
+   * first volume's march (default 8, at most 8; 0 turns the merging off). Each costs 16 bytes a
+   * pixel a volume.
+   */
+  vtkSetClampMacro(VolumeSegments, int, 0, 8);
+  vtkGetMacro(VolumeSegments, int);
+  ///@}
+  /** Volumes merged into the first volume's march in the last frame. */
+  vtkGetMacro(MergedVolumes, int);
+  /** GPU memory of the segments in the last frame, in bytes. */
+  vtkGetMacro(VolumeSegmentBytes, long long);
 
   ///@{
   /**
@@ -107,15 +124,21 @@ protected:
   int PeeledLayers = 0;
   bool TranslucentLayersOverflowed = false;
   long long TranslucentLayerBytes = 0;
+  int VolumeSegments = 8;
+  int MergedVolumes = 0;
+  long long VolumeSegmentBytes = 0;
   int OtherVolumeShadowSize = 64;
   int OtherVolumeShadowBuilds = 0;
   long long OtherVolumeShadowBytes = 0;
   std::string LastError;
 
-  /** Opaque, translucent (peeled and merged into the first volume), volumes, overlay. */
-  void RenderWithLayers(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+  /**
+   * Opaque; translucent meshes peeled and the other volumes drawn into segments; the first
+   * volume merging them; other volumes not ours; overlay.
+   */
+  void RenderMerged(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
+    const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& guests,
     const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled);
-
   /** Brings each receiver's grid of the other volumes' shadows up to date and hands it over. */
   void UpdateOtherVolumeShadows(vtkRenderer* renderer,
     const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& shadowing,

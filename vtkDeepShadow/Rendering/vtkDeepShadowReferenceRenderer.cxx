@@ -171,6 +171,7 @@ bool vtkDeepShadowReferenceRenderer::Render(
     scene.TranslucentLayers = this->GpuTwin ? pass->GetTranslucentLayers() : 0;
     // ... and stores what other volumes cast on grids of as many nodes.
     scene.OtherVolumeShadowSize = this->GpuTwin ? pass->GetOtherVolumeShadowSize() : 0;
+    scene.VolumeSegments = this->GpuTwin ? pass->GetVolumeSegments() : 0;
   }
   try
   {

@@ -177,6 +177,9 @@ public:
   const deepshadow::TranslucentLayers* Layers = nullptr;
   // vtkDeepShadowPass's grid of what the other volumes cast onto this one, for this frame.
   const deepshadow::OtherVolumeShadows* Others = nullptr;
+  // vtkDeepShadowPass's segments this volume is drawn into instead of the screen, this frame.
+  deepshadow::VolumeSegments* Segments = nullptr;
+  int SegmentGuest = 0;
 
   void Release(vtkWindow* window)
   {
@@ -217,6 +220,8 @@ public:
     const bool prepareOnly = this->PrepareOnly;
     const deepshadow::TranslucentLayers* layers = this->Layers;
     const deepshadow::OtherVolumeShadows* others = this->Others;
+    deepshadow::VolumeSegments* segments = this->Segments;
+    const int segmentGuest = this->SegmentGuest;
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
@@ -224,6 +229,8 @@ public:
     this->PrepareOnly = prepareOnly;
     this->Layers = layers;
     this->Others = others;
+    this->Segments = segments;
+    this->SegmentGuest = segmentGuest;
   }
 };
 
@@ -753,6 +760,12 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     features.insert("TranslucentLayers");
     runtime["TranslucentLayers"] = layers->GetShaderFeature();
   }
+  deepshadow::VolumeSegments* segments = layers ? nullptr : impl.Segments;
+  if (segments)
+  {
+    features.insert("VolumeSegments");
+    runtime["VolumeSegments"] = deepshadow::VolumeSegmentsShaderFeature(segments->GetSegments());
+  }
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features, runtime);
   if (source != impl.LastSource)
   {
@@ -792,9 +805,14 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   sink.Set("u_boxMax", glm::vec3(impl.Dims - 1));
   sink.Set("u_clipToWorld", glm::mat4(camera.GetInverseViewProjection()));
   sink.Set("u_indexToClip", glm::mat4(camera.GetViewProjection() * indexToWorld));
-  const float viewport[4] = { static_cast<float>(x0), static_cast<float>(y0),
-    static_cast<float>(width), static_cast<float>(height) };
+  // Segments are drawn into their own target, its viewport at (0, 0).
+  const float viewport[4] = { segments ? 0.0f : static_cast<float>(x0),
+    segments ? 0.0f : static_cast<float>(y0), static_cast<float>(width), static_cast<float>(height) };
   program->SetUniform4f("u_viewport", viewport);
+  if (segments)
+  {
+    sink.Set("u_worldToClip", glm::mat4(camera.GetViewProjection()));
+  }
   sink.Set("u_step", static_cast<float>(step));
   sink.Set("u_terminationOpacity", static_cast<float>(this->TerminationOpacity));
   if (this->Jitter)
@@ -862,9 +880,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglDepthMask depthMask(state);
     vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-    if (layers)
+    if (layers || segments)
     {
-      state->vtkglDisable(GL_BLEND); // the shader composited the opaque image itself
+      // The shader composited the opaque image itself, or writes segments, not colours.
+      state->vtkglDisable(GL_BLEND);
     }
     else
     {
@@ -879,8 +898,16 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     const bool mirrored = glm::determinant(glm::dmat3(indexToWorld)) < 0.0;
     glFrontFace(mirrored ? GL_CW : GL_CCW);
     glEnable(GL_DEPTH_CLAMP);
+    if (segments)
+    {
+      segments->Begin(window, impl.SegmentGuest);
+    }
     glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
-    this->LastPasses.emplace_back("ray-cast");
+    if (segments)
+    {
+      segments->End(window);
+    }
+    this->LastPasses.emplace_back(segments ? "ray-cast-segments" : "ray-cast");
     glDisable(GL_DEPTH_CLAMP);
     glFrontFace(GL_CCW);
     state->vtkglCullFace(GL_BACK);
@@ -926,6 +953,12 @@ void vtkDeepShadowVolumeMapper::SetOtherVolumeShadows(const deepshadow::OtherVol
 void vtkDeepShadowVolumeMapper::SetTranslucentLayers(const deepshadow::TranslucentLayers* layers)
 {
   this->Impl->Layers = layers;
+}
+
+void vtkDeepShadowVolumeMapper::SetVolumeSegments(deepshadow::VolumeSegments* segments, int guest)
+{
+  this->Impl->Segments = segments;
+  this->Impl->SegmentGuest = guest;
 }
 
 void vtkDeepShadowVolumeMapper::SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces)

@@ -44,6 +44,7 @@ namespace deepshadow
 class OtherVolumeShadows;
 class SurfaceSet;
 class TranslucentLayers;
+class VolumeSegments;
 struct ShadowContext;
 }
 class vtkOpenGLRenderWindow;
@@ -195,6 +196,13 @@ public:
    */
   void SetTranslucentLayers(const deepshadow::TranslucentLayers* layers);
 
+  /**
+   * Used by vtkDeepShadowPass for one frame: draw the volume, as guest `guest`, into
+   * `segments` (pieces along each view ray that the merging volume sorts in among its own
+   * samples; pass "ray-cast-segments") instead of onto the screen. Null: onto the screen.
+   */
+  void SetVolumeSegments(deepshadow::VolumeSegments* segments, int guest);
+
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
 
@@ -220,7 +228,7 @@ public:
   /**
    * The GPU passes the last frame ran, in order: "volume-upload", "transfer-table",
    * "occupancy", "bound-upload", "surface-upload" (each only when what it depends on changed), the technique's passes
-   * (vtkDeepShadowTechnique::GetLastPasses()) and "ray-cast".
+   * (vtkDeepShadowTechnique::GetLastPasses()) and "ray-cast" (or "ray-cast-segments").
    */
   const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
   /** Fraction of empty-space blocks that are skipped (0 when skipping is off). */

@@ -8,7 +8,10 @@
 // texture coordinate (i + 0.5) / Dims); t is world distance along the ray from the near
 // plane; samples sit at t0 + (k + offset) * u_step.
 
+//DeepShadow::VolumeSegments::Output
+#ifndef VOLUME_SEGMENT_OUTPUT
 layout(location = 0) out vec4 fragColor;
+#endif
 
 //DeepShadow::VolumeSampling::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
@@ -46,6 +49,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Feeler::Dec
 //DeepShadow::Lighting::Dec
 //DeepShadow::TranslucentLayers::Dec
+//DeepShadow::VolumeSegments::Dec
 
 void main()
 {
@@ -76,6 +80,7 @@ void main()
   vec4 accumulated = vec4(0.0);
   //DeepShadow::EmptySpace::Init
   //DeepShadow::Bound::Init
+  //DeepShadow::VolumeSegments::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -96,9 +101,11 @@ void main()
     }
     vec3 color = transfer.rgb;
     //DeepShadow::Lighting::Impl
+    //DeepShadow::VolumeSegments::Impl
     compositeFrontToBack(accumulated, color, transfer.a);
   }
   //DeepShadow::TranslucentLayers::Exit
+  //DeepShadow::VolumeSegments::Exit
   // Premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA), or replacing the pixel when the
   // translucent layers (and the opaque image behind them) are composited here.
   fragColor = accumulated;

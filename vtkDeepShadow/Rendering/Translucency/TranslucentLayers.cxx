@@ -110,9 +110,16 @@ void TranslucentLayers::Peel(vtkOpenGLRenderWindow* window, int x0, int y0, int 
   state->PopFramebufferBindings();
 }
 
+void TranslucentLayers::CaptureOpaque(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height)
+{
+  this->Opaque.Capture(window, x0, y0, width, height, true);
+  this->LayerCount = 0;
+  this->Overflowed = false;
+}
+
 ShaderFeature TranslucentLayers::GetShaderFeature() const
 {
-  return TranslucentLayersShaderFeature(this->LayerCount);
+  return TranslucentLayersShaderFeature(this->LayerCount, this->Segments.GetSlices());
 }
 
 void TranslucentLayers::Activate(UniformSink& sink) const
@@ -123,7 +130,14 @@ void TranslucentLayers::Activate(UniformSink& sink) const
     this->Layers[k]->Activate();
     units.push_back(this->Layers[k]->GetTextureUnit());
   }
-  sink.Set("u_layers", units);
+  if (!units.empty())
+  {
+    sink.Set("u_layers", units);
+  }
+  if (this->Segments.GetSlices() > 0)
+  {
+    this->Segments.Activate(sink);
+  }
   this->Opaque.GetColor()->Activate();
   sink.Set("u_opaqueColor", this->Opaque.GetColor()->GetTextureUnit());
 }
@@ -134,17 +148,22 @@ void TranslucentLayers::Deactivate() const
   {
     this->Layers[k]->Deactivate();
   }
+  if (this->Segments.GetSlices() > 0)
+  {
+    this->Segments.Deactivate();
+  }
   this->Opaque.GetColor()->Deactivate();
 }
 
 void TranslucentLayers::Composite(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height)
 {
-  if (!this->Quad || this->QuadLayers != this->LayerCount)
+  if (!this->Quad || this->QuadLayers != this->LayerCount || this->QuadSlices != this->Segments.GetSlices())
   {
     const std::string source = ComposeShader(
       vtkDeepShadowLayersFS, {}, { { "TranslucentLayers", this->GetShaderFeature() } });
     this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, source.c_str(), ""));
     this->QuadLayers = this->LayerCount;
+    this->QuadSlices = this->Segments.GetSlices();
   }
   if (!this->Quad->Program)
   {
@@ -170,7 +189,8 @@ void TranslucentLayers::Composite(vtkOpenGLRenderWindow* window, int x0, int y0,
 long long TranslucentLayers::GetBytes() const
 {
   const long long pixels = static_cast<long long>(this->Width) * this->Height;
-  return pixels * (8 * static_cast<long long>(this->Layers.size()) + 4) + this->Opaque.GetBytes();
+  return pixels * (8 * static_cast<long long>(this->Layers.size()) + 4) + this->Opaque.GetBytes() +
+    this->Segments.GetBytes();
 }
 
 void TranslucentLayers::Release(vtkWindow* window)
@@ -197,6 +217,7 @@ void TranslucentLayers::Release(vtkWindow* window)
     this->Quad.reset();
   }
   this->Opaque.Release(window);
+  this->Segments.Release(window);
   if (this->Query)
   {
     glDeleteQueries(1, &this->Query);

@@ -7,11 +7,14 @@
 // CPU reference (deepshadow::ReferenceRenderer) merges mesh crossings and volume samples.
 // Pixels no volume covers get the layers by a full-screen pass. Memory is bounded (8 bytes a
 // pixel a layer); fragments beyond the last layer are left out, and GetOverflowed says so.
+// The other volumes' segments (VolumeSegments) are merged the same way, sorted in among the
+// layers by depth.
 #ifndef vtkDeepShadowTranslucentLayers_h
 #define vtkDeepShadowTranslucentLayers_h
 
 #include "GL/FramebufferCopy.h"
 #include "ShaderComposer.h"
+#include "VolumeSegments.h"
 
 #include "vtkSmartPointer.h"
 
@@ -51,10 +54,16 @@ public:
   void Peel(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height, int layers,
     const DrawMeshes& draw);
 
-  /** Blends all layers over the bound framebuffer's viewport (premultiplied "over"). */
+  /** Instead of Peel when there is nothing to peel: the opaque image only, no layers. */
+  void CaptureOpaque(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height);
+
+  /** The other volumes' segments, merged with the layers (none unless allocated). */
+  VolumeSegments& GetSegments() { return this->Segments; }
+
+  /** Blends all layers (and segments) over the bound framebuffer's viewport (premultiplied "over"). */
   void Composite(vtkOpenGLRenderWindow* window, int x0, int y0, int width, int height);
 
-  /** The ray caster's feature: TRANSLUCENT_LAYERS layers and their loader. */
+  /** The ray caster's feature: the layers, the segments and their loader. */
   ShaderFeature GetShaderFeature() const;
   /** Binds the layers and the opaque colour for a program with the feature. */
   void Activate(UniformSink& sink) const;
@@ -76,6 +85,8 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadLayers = 0;
+  int QuadSlices = 0;
+  VolumeSegments Segments;
   int LayerCount = 0;
   int Width = 0;
   int Height = 0;
