@@ -22,5 +22,5 @@ for scene in hybrid-ground hybrid-glass hybrid-rod hybrid-smoke; do
   "$root/build/bin/deepshadow" render --scene "$scene" --technique dsm-color --frames 1 \
     --out "$root/out/hybrid/$scene.png" --json "$root/out/hybrid/$scene.json"
 done
-"$root/build/bin/deepshadow" report --quick --scenes hybrid-ground,hybrid-glass,hybrid-rod \
+"$root/build/bin/deepshadow" report --quick --scenes hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke \
   --out "$root/out/report-hybrid"

@@ -4,6 +4,8 @@
 
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowPass.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -67,26 +69,46 @@ void SceneBench::TurnLight()
 
 Image SceneBench::Capture(bool shadowTerm)
 {
-  vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
-  mapper->SetOutputMode(shadowTerm ? vtkDeepShadowVolumeMapper::OutputShadowTerm
-                                   : vtkDeepShadowVolumeMapper::OutputColor);
+  // Every mapper of the scene shows the same thing (the CPU reference renders one output).
+  const auto show = [this](bool term) {
+    for (vtkDeepShadowVolumeMapper* mapper : { this->Scene.Mapper.Get(), this->Scene.SecondMapper.Get() })
+    {
+      if (mapper)
+      {
+        mapper->SetOutputMode(term ? vtkDeepShadowVolumeMapper::OutputShadowTerm : vtkDeepShadowVolumeMapper::OutputColor);
+      }
+    }
+    for (vtkDeepShadowPolyDataMapper* mesh : this->Scene.Meshes)
+    {
+      mesh->SetOutputMode(term ? vtkDeepShadowPolyDataMapper::OutputShadowTerm : vtkDeepShadowPolyDataMapper::OutputColor);
+    }
+  };
+  show(shadowTerm);
   this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
   RenderFrame(this->Scene.Window);
   Image image = CaptureWindow(this->Scene.Window);
   this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
-  mapper->SetOutputModeToColor();
+  show(false);
   return image;
 }
 
-Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTerm)
+Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTerm,
+  vtkDeepShadowTechnique* second)
 {
   Measurement m;
   vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
+  vtkDeepShadowVolumeMapper* secondMapper = this->Scene.SecondMapper;
+  second = secondMapper ? second : nullptr;
   mapper->SetShadowTechnique(technique);
+  if (secondMapper)
+  {
+    secondMapper->SetShadowTechnique(second);
+  }
+  const auto builds = [&]() { return mapper->GetShadowBuilds() + (secondMapper ? secondMapper->GetShadowBuilds() : 0); };
   this->Restore();
   RenderFrame(this->Scene.Window); // warm-up: builds and compiles
   RequireDrawn(this->Scene);
-  const int builds = mapper->GetShadowBuilds();
+  const int buildsBefore = builds();
   std::vector<double> times;
   for (int f = 0; f < this->Settings.Frames; ++f)
   {
@@ -96,7 +118,7 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
   m.CameraMs = Median(times);
   m.CameraPasses = mapper->GetLastPasses();
   m.Features = mapper->GetShaderFeatures();
-  m.RebuiltForCamera = mapper->GetShadowBuilds() != builds;
+  m.RebuiltForCamera = builds() != buildsBefore;
   this->Restore();
   // Every light-moving frame rebuilds: the build time is the median of theirs.
   times.clear();
@@ -107,7 +129,7 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     times.push_back(RenderFrame(this->Scene.Window));
     if (technique)
     {
-      buildTimes.push_back(technique->GetLastBuildMilliseconds());
+      buildTimes.push_back(technique->GetLastBuildMilliseconds() + (second ? second->GetLastBuildMilliseconds() : 0.0));
     }
   }
   m.LightMs = Median(times);
@@ -120,7 +142,8 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
   }
   if (technique)
   {
-    m.ShadowBytes = technique->GetShadowBytes();
+    m.ShadowBytes = technique->GetShadowBytes() + (second ? second->GetShadowBytes() : 0) +
+      (this->Scene.Pass ? this->Scene.Pass->GetOtherVolumeShadowBytes() : 0);
   }
   if (auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(technique))
   {
@@ -130,6 +153,10 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     m.EpsilonMax = dsm->GetEpsilonMax();
   }
   mapper->SetShadowTechnique(nullptr);
+  if (secondMapper)
+  {
+    secondMapper->SetShadowTechnique(nullptr);
+  }
   return m;
 }
 
@@ -144,6 +171,12 @@ const GroundTruth& SceneBench::Truth(bool colored)
   vtkNew<vtkDeepShadowRayTechnique> model; // says only grey or coloured
   model->SetColored(colored);
   mapper->SetShadowTechnique(model);
+  vtkNew<vtkDeepShadowRayTechnique> secondModel; // a second volume casts and receives too
+  secondModel->SetColored(colored);
+  if (this->Scene.SecondMapper)
+  {
+    this->Scene.SecondMapper->SetShadowTechnique(secondModel);
+  }
   this->Restore();
   this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
   RenderFrame(this->Scene.Window); // lights and clipping as the GPU frames have them
@@ -158,6 +191,10 @@ const GroundTruth& SceneBench::Truth(bool colored)
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
   mapper->SetShadowTechnique(nullptr);
+  if (this->Scene.SecondMapper)
+  {
+    this->Scene.SecondMapper->SetShadowTechnique(nullptr);
+  }
   this->HaveTruth[colored ? 1 : 0] = true;
   return truth;
 }

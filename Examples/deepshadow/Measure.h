@@ -4,7 +4,8 @@
 // - the build time (median over the light-moving frames) and the shadow memory;
 // - the image and its shadow term (vtkDeepShadowVolumeMapper::OutputShadowTerm) at the error
 //   size, from the start view, to compare with the ground truth: the CPU reference with
-//   translucent shadow rays at a quarter step (coloured for coloured techniques).
+//   translucent shadow rays at a quarter step (coloured for coloured techniques). Meshes show
+//   their shadow term too (vtkDeepShadowPolyDataMapper::OutputShadowTerm).
 #ifndef deepshadow_tool_Measure_h
 #define deepshadow_tool_Measure_h
 
@@ -66,8 +67,14 @@ public:
   /** Builds scene `name` with `options`' sizes (throws UsageError for an unknown scene). */
   SceneBench(const Options& options, const std::string& name);
 
-  /** Measures `technique` (null: unshadowed); `shadowTerm` also captures the shadow term. */
-  Measurement Measure(vtkDeepShadowTechnique* technique, bool shadowTerm);
+  /**
+   * Measures `technique` (null: unshadowed); `shadowTerm` also captures the shadow term. A
+   * scene with a second volume (hybrid-smoke) gives it `second`, a technique of the same
+   * kind: builds, times and memory are then both techniques' together (and the grids that
+   * carry each volume's shadows to the other).
+   */
+  Measurement Measure(vtkDeepShadowTechnique* technique, bool shadowTerm,
+    vtkDeepShadowTechnique* second = nullptr);
 
   /** The ground truth, grey or coloured, computed once per kind. */
   const GroundTruth& Truth(bool colored);

@@ -355,6 +355,9 @@ SCENE (default: --scene box):
   --translucent-layers N  layers the translucent meshes are peeled into, to be composited at
                           their depths inside the volume (0 to 8, default 4; 0: VTK's order,
                           translucent meshes first and the volume over them)
+  --volume-segments N     pieces a second volume (hybrid-smoke's smoke) is cut into along each
+                          view ray, to be composited at their depths inside the first (0 to 8,
+                          default 8; 0: VTK's order, the second volume over the first)
 
 VIEW:
   --size WxH              image size (default 512x512)
@@ -546,6 +549,10 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--ground")
     {
       o.Ground = true;
+    }
+    else if (key == "--volume-segments")
+    {
+      o.VolumeSegments = ParseInteger(key, next(), 0, 8);
     }
     else if (key == "--translucent-layers")
     {

@@ -61,6 +61,7 @@ struct Options
   std::vector<MeshSpec> Meshes;        // --mesh, repeatable: meshes that cast and receive
   bool Ground = false;                 // --ground: a ground plane under the volume
   int TranslucentLayers = 4;           // --translucent-layers: peeled layers merged into the volume
+  int VolumeSegments = 8;              // --volume-segments: a second volume's pieces merged into the first
   bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
   int Width = 512;
   int Height = 512;

@@ -307,6 +307,7 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
   }
   vtkNew<vtkDeepShadowPass> pass;
   pass->SetTranslucentLayers(options.TranslucentLayers);
+  pass->SetVolumeSegments(options.VolumeSegments);
   setup.Renderer->SetPass(pass);
   setup.Pass = pass;
   for (const auto& mesh : meshes)

@@ -1,4 +1,5 @@
-// The shadow-term output (vtkDeepShadowVolumeMapper::OutputShadowTerm), which the report uses
+// The shadow-term output (vtkDeepShadowVolumeMapper and vtkDeepShadowPolyDataMapper::
+// OutputShadowTerm), which the report uses
 // to measure a technique's error in the light-attenuation term alone:
 // - without a technique it is the volume's coverage in grey (every sample's term is 1);
 // - with one, it is never brighter than that (shadows only take light away) and darker under
@@ -12,7 +13,13 @@
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowPass.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowStochasticShadowMapTechnique.h"
+
+#include "vtkActor.h"
+#include "vtkPlaneSource.h"
+#include "vtkProperty.h"
 
 #include <algorithm>
 
@@ -77,5 +84,29 @@ int TestShadowTermOutput(int, char*[])
            "), floor under the ball " + std::to_string(shadowed) + " of " + std::to_string(lit),
            brighter <= 1.0 / 255.0 && shadowed < 0.8 * lit) && ok;
   }
+
+  // Meshes have a shadow term too (vtkDeepShadowPolyDataMapper::OutputShadowTerm): a ground
+  // under the volume, white where the light reaches it, darker in the volume's shadow.
+  vtkNew<vtkDeepShadowPass> pass;
+  scene.Renderer->SetPass(pass);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-110.0, -110.0, -52.0);
+  plane->SetPoint1(110.0, -110.0, -52.0);
+  plane->SetPoint2(-110.0, 110.0, -52.0);
+  vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
+  groundMapper->SetInputConnection(plane->GetOutputPort());
+  groundMapper->SetOutputModeToShadowTerm();
+  vtkNew<vtkActor> ground;
+  ground->SetMapper(groundMapper);
+  ground->GetProperty()->SetColor(0.8, 0.6, 0.4); // not seen in the shadow term
+  scene.Renderer->AddActor(ground);
+  scene.Renderer->ResetCameraClippingRange();
+  deepshadow::Image withGround;
+  ok = scene.MatchesTwin("rays, with a ground mesh", rays, 2.0 / 255.0, 12.0 / 255.0, 0.01, withGround) && ok;
+  // The ground's corners (bottom left and right of the picture) are in the open: white.
+  const glm::dvec3 open = withGround.At(2, 2);
+  ok = Check("the ground's term: white in the open (" + std::to_string(open.x) + "), grey, composed",
+         open.x > 254.0 / 255.0 && std::abs(open.x - open.z) <= 1.0 / 255.0 &&
+           HasFeature(groundMapper->GetShaderFeatures(), "ShadowTerm")) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -163,6 +163,12 @@ grep -q '"casting_meshes": 2' glass.json || { echo "FAILED: glass.json lacks its
 expect 0 "the smoke + cup + head scene (two volumes)" -- "$tool" render --scene hybrid-smoke --scale 0.5 --size 64x64 --technique dsm --frames 2 --out smoke.png --json smoke.json
 grep -q '"volumes": 2' smoke.json && grep -q '"other_volume_shadow_builds": 4' smoke.json ||
   { echo "FAILED: smoke.json lacks its 2 volumes and their 4 grids (head, smoke, ground, cup), built once"; failures=$((failures + 1)); }
+grep -q '"merged_volumes": 1' smoke.json && grep -q '"volume_segment_bytes": 524288' smoke.json ||
+  { echo "FAILED: smoke.json: the smoke is not merged into the head's march in 8 segments (16 B x 64 x 64 x 8)"; failures=$((failures + 1)); }
+expect 0 "the smoke blended over the head (--volume-segments 0)" -- "$tool" render --scene hybrid-smoke --scale 0.5 --size 64x64 --technique dsm --frames 1 --volume-segments 0 --out blended.png --json blended.json
+grep -q '"merged_volumes": 0' blended.json ||
+  { echo "FAILED: --volume-segments 0 still merges"; failures=$((failures + 1)); }
+expect 2 "--volume-segments out of range" -- "$tool" render --scene hybrid-smoke --volume-segments 9
 expect 0 "--mesh with opacity, colour, transform and --ground" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique rays --frames 1 --mesh small.obj --mesh-opacity 0.4 --mesh-color 1,0.2,0.2 --mesh-transform 0,0,30,0.5 --ground --out meshes.png --json meshes.json
 grep -q '"meshes": 2' meshes.json || { echo "FAILED: meshes.json lacks the mesh and the ground"; failures=$((failures + 1)); }
 expect 0 "an open mesh (meshes need not be closed)" -- "$tool" render --scene box --scale 0.5 --size 64x64 --technique shadowmap --frames 1 --mesh open.obj --out open.png

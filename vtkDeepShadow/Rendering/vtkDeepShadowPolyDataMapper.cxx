@@ -317,6 +317,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   {
     features.insert("Peel");
   }
+  if (this->OutputMode == OutputShadowTerm)
+  {
+    features.insert("ShadowTerm");
+  }
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features, runtime);
   this->ShaderFeatures.assign(features.begin(), features.end());
   if (technique)
@@ -455,5 +459,6 @@ void vtkDeepShadowPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CastShadows: " << this->CastShadows << "\n";
   os << indent << "ReceiveShadows: " << this->ReceiveShadows << "\n";
   os << indent << "ShadowBias: " << this->ShadowBias << " (0 = automatic)\n";
+  os << indent << "OutputMode: " << (this->OutputMode == OutputShadowTerm ? "ShadowTerm" : "Color") << "\n";
   os << indent << "GeometryUploads: " << this->GeometryUploads << "\n";
 }

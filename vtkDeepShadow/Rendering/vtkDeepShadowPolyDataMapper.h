@@ -67,6 +67,24 @@ public:
   vtkGetMacro(ShadowBias, double);
   ///@}
 
+  ///@{
+  /**
+   * What the mesh shows: its lit colour (OutputColor, the default), or the shadow term alone
+   * (OutputShadowTerm): the product, over the lights that reach it, of 1 - ShadowAttenuation
+   * * (1 - visibility), with the mesh's opacity; 1 (white) where nothing shadows it. As
+   * vtkDeepShadowVolumeMapper's output modes; give every mapper of a scene the same one.
+   */
+  enum OutputModes
+  {
+    OutputColor = 0,
+    OutputShadowTerm = 1
+  };
+  vtkSetClampMacro(OutputMode, int, OutputColor, OutputShadowTerm);
+  vtkGetMacro(OutputMode, int);
+  void SetOutputModeToColor() { this->SetOutputMode(OutputColor); }
+  void SetOutputModeToShadowTerm() { this->SetOutputMode(OutputShadowTerm); }
+  ///@}
+
   /** The triangles as the scene's shadows see them: world coordinates (the actor's matrix). */
   bool GetSurfaceMesh(vtkActor* actor, deepshadow::SurfaceMesh& mesh, std::string& error);
 
@@ -97,6 +115,7 @@ protected:
   bool CastShadows = true;
   bool ReceiveShadows = true;
   double ShadowBias = 0.0;
+  int OutputMode = OutputColor;
   int GeometryUploads = 0;
   int ShaderCompositions = 0;
   std::vector<std::string> ShaderFeatures;
