@@ -5,10 +5,12 @@
 
 #include "Image.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
@@ -18,6 +20,8 @@
 #include "vtkObject.h"
 #include "vtkLight.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyData.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -296,6 +300,19 @@ struct ShadowScene
     }
     gpu = Grab(this->Window);
     return WithinTolerance(name, gpu, Reference(this->Renderer, true), maxRMSE, threshold, maxFraction);
+  }
+
+  /** A ground mesh under the volume (z = -52, 220 units square) drawn by `mapper` for `actor`. */
+  void AddGround(vtkDeepShadowPolyDataMapper* mapper, vtkActor* actor)
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-110.0, -110.0, -52.0);
+    plane->SetPoint1(110.0, -110.0, -52.0);
+    plane->SetPoint2(-110.0, 110.0, -52.0);
+    plane->Update();
+    mapper->SetInputData(plane->GetOutput());
+    actor->SetMapper(mapper);
+    this->Renderer->AddActor(actor);
   }
 
   /** Mean colour of the floor in the ball's shadow (left of centre, lower quarter). */

@@ -18,7 +18,6 @@
 #include "vtkDeepShadowStochasticShadowMapTechnique.h"
 
 #include "vtkActor.h"
-#include "vtkPlaneSource.h"
 #include "vtkProperty.h"
 
 #include <algorithm>
@@ -89,17 +88,11 @@ int TestShadowTermOutput(int, char*[])
   // under the volume, white where the light reaches it, darker in the volume's shadow.
   vtkNew<vtkDeepShadowPass> pass;
   scene.Renderer->SetPass(pass);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-110.0, -110.0, -52.0);
-  plane->SetPoint1(110.0, -110.0, -52.0);
-  plane->SetPoint2(-110.0, 110.0, -52.0);
   vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
-  groundMapper->SetInputConnection(plane->GetOutputPort());
   groundMapper->SetOutputModeToShadowTerm();
   vtkNew<vtkActor> ground;
-  ground->SetMapper(groundMapper);
+  scene.AddGround(groundMapper, ground);
   ground->GetProperty()->SetColor(0.8, 0.6, 0.4); // not seen in the shadow term
-  scene.Renderer->AddActor(ground);
   scene.Renderer->ResetCameraClippingRange();
   deepshadow::Image withGround;
   ok = scene.MatchesTwin("rays, with a ground mesh", rays, 2.0 / 255.0, 12.0 / 255.0, 0.01, withGround) && ok;

@@ -13,7 +13,6 @@
 #include "vtkDeepShadowRayTechnique.h"
 
 #include "vtkActor.h"
-#include "vtkPlaneSource.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 
@@ -57,16 +56,10 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   scene.Mapper->SetSampleDistance(1.0);
   smokeMapper->SetSampleDistance(1.0);
 
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-110.0, -110.0, -52.0);
-  plane->SetPoint1(110.0, -110.0, -52.0);
-  plane->SetPoint2(-110.0, 110.0, -52.0);
   vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
-  groundMapper->SetInputConnection(plane->GetOutputPort());
   vtkNew<vtkActor> ground;
-  ground->SetMapper(groundMapper);
+  scene.AddGround(groundMapper, ground);
   ground->GetProperty()->SetColor(0.85, 0.85, 0.8);
-  renderer->AddActor(ground);
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, -3.0, 1.2);
