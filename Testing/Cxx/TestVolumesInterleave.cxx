@@ -82,6 +82,21 @@ int TestVolumesInterleave(int argc, char* argv[])
            smokeMapper->GetLastPasses().back() == "ray-cast-segments") && ok;
   const double mergedError = deepshadow::Compare(merged, exact).RMSE;
 
+  // A merged volume that draws nothing (bounded by an empty region) leaves no segments of
+  // an earlier frame behind: the picture is the one without it.
+  vtkNew<vtkPolyData> nothing;
+  smokeMapper->AddBound(nothing);
+  window->Render();
+  const deepshadow::Image boundedAway = Grab(window);
+  smokeMapper->RemoveAllBounds();
+  smoke->VisibilityOff();
+  window->Render();
+  const deepshadow::Image withoutSmoke = Grab(window);
+  smoke->VisibilityOn();
+  ok = Check("a merged volume that draws nothing leaves nothing behind",
+         deepshadow::Compare(boundedAway, withoutSmoke).MaxAbs <= 1.0 / 255.0 &&
+           deepshadow::Compare(boundedAway, merged).MaxAbs > 0.1) && ok;
+
   // In the other order the smoke merges the volume's segments (the dense ball is then cut
   // into pieces, so the picture is near the exact one, not equal to the first).
   renderer->RemoveVolume(scene.Volume);

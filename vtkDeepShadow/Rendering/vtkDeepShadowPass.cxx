@@ -33,6 +33,7 @@ public:
   std::vector<vtkDeepShadowPolyDataMapper*> Receivers;
   std::vector<vtkDeepShadowVolumeMapper*> VolumeReceivers;
   deepshadow::TranslucentLayers Layers;
+  std::string SegmentError; // the last one said (once per change)
 
   // What the other volumes cast, per receiver: volumes by mapper, meshes by actor (with the
   // grid's frame over the mesh's points, found again only when the mesh changed).
@@ -377,14 +378,17 @@ void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowV
   if (guests.empty() ||
     !segments.Allocate(window, width, height, static_cast<int>(guests.size()), this->VolumeSegments, error))
   {
-    if (!error.empty())
+    if (error != impl.SegmentError && !error.empty())
     {
-      vtkErrorMacro(<< error);
+      vtkErrorMacro(<< error); // once, until it changes
     }
+    impl.SegmentError = error;
     segments.Release(window);
   }
   else
   {
+    impl.SegmentError.clear();
+    segments.Clear(window); // a guest not drawn this frame (bad input) leaves no old picture
     for (size_t g = 0; g < guests.size(); ++g)
     {
       guests[g].second->SetVolumeSegments(&segments, static_cast<int>(g));

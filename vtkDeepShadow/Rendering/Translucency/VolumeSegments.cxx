@@ -90,6 +90,15 @@ void VolumeSegments::End(vtkOpenGLRenderWindow* window)
   state->PopFramebufferBindings();
 }
 
+void VolumeSegments::Clear(vtkOpenGLRenderWindow* window)
+{
+  for (int g = 0; g < this->Guests; ++g)
+  {
+    this->Begin(window, g);
+    this->End(window);
+  }
+}
+
 void VolumeSegments::Activate(UniformSink& sink) const
 {
   this->Texture->Activate();

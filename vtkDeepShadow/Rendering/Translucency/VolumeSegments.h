@@ -49,6 +49,8 @@ public:
    */
   void Begin(vtkOpenGLRenderWindow* window, int guest);
   void End(vtkOpenGLRenderWindow* window);
+  /** Empties every guest's slices (a guest that draws nothing leaves nothing behind). */
+  void Clear(vtkOpenGLRenderWindow* window);
 
   int GetSegments() const { return this->Segments; }
   /** Slices the merging shader reads: guests x segments (0 when nothing is allocated). */
