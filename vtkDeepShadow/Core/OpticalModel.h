@@ -42,6 +42,12 @@ inline void CompositeFrontToBack(glm::dvec4& accumulated, const glm::dvec3& colo
   accumulated.a += weight;
 }
 
+/** Front-to-back "over" of something already premultiplied (colour x alpha, alpha). */
+inline void CompositeFrontToBack(glm::dvec4& accumulated, const glm::dvec4& premultiplied)
+{
+  accumulated += (1.0 - accumulated.a) * premultiplied;
+}
+
 /** Surface-like material of a volume (vtkVolumeProperty's ambient/diffuse/specular). */
 struct Material
 {

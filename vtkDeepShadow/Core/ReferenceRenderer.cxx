@@ -17,46 +17,48 @@ namespace deepshadow
 
 namespace
 {
-// A mesh crossing or a volume's sample (or segment) along a view ray, premultiplied.
+// A mesh crossing, or a volume's sample (or segment), along a view ray.
 struct Fragment
 {
-  double T;
-  glm::dvec4 Color;
-  glm::dvec4 Term;
+  RaySample Sample;
   bool FirstVolume;
 };
 
-// Scene::VolumeSegments: a volume's samples along `ray` grouped into `count` segments of equal
-// length between its entry and its exit (or `tEnd`), each composited on its own and placed at
-// its opacity-weighted mean depth; as the GPU's march, the samples stop once the volume alone
-// is nearly opaque. Empty segments are left out.
-std::vector<RaySample> Segments(const std::vector<RaySample>& samples, const Ray& ray,
-  const VolumeGrid& grid, double tEnd, int count, double termination)
+// Where a view ray marches a volume: from its entry (or the ray's start) to its exit or
+// `tLimit`; false if it misses the box.
+bool MarchInterval(const Ray& ray, const VolumeGrid& grid, double tLimit, double& t0, double& t1)
 {
   double tEnter = 0.0, tExit = 0.0;
-  std::vector<RaySample> segments(static_cast<size_t>(count));
-  std::vector<double> weightedT(segments.size(), 0.0);
-  if (samples.empty() ||
-    !IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
+  if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
+  {
+    return false;
+  }
+  t0 = std::max(tEnter, 0.0);
+  t1 = std::min(tExit, tLimit);
+  return true;
+}
+
+// Scene::VolumeSegments: a volume's samples along `ray` (as MarchRay gives them, up to
+// `tEnd`) grouped into `count` segments of equal length over its march interval, each
+// composited on its own and placed at its opacity-weighted mean depth. Empty segments are
+// left out.
+std::vector<RaySample> Segments(
+  const std::vector<RaySample>& samples, const Ray& ray, const VolumeGrid& grid, double tEnd, int count)
+{
+  double t0 = 0.0, t1 = 0.0;
+  if (samples.empty() || !MarchInterval(ray, grid, tEnd, t0, t1))
   {
     return {};
   }
-  const double t0 = std::max(tEnter, 0.0);
-  const double length = std::min(tExit, tEnd) - t0;
-  double alpha = 0.0;
+  std::vector<RaySample> segments(static_cast<size_t>(count));
+  std::vector<double> weightedT(segments.size(), 0.0);
   for (const RaySample& sample : samples)
   {
-    if (alpha > termination)
-    {
-      break;
-    }
-    const int s = std::clamp(static_cast<int>((sample.T - t0) / length * count), 0, count - 1);
+    const int s = std::clamp(static_cast<int>((sample.T - t0) / (t1 - t0) * count), 0, count - 1);
     RaySample& segment = segments[static_cast<size_t>(s)];
-    const double weight = (1.0 - segment.Color.a) * sample.Color.a;
-    weightedT[static_cast<size_t>(s)] += weight * sample.T;
-    segment.Color += (1.0 - segment.Color.a) * sample.Color;
-    segment.Term += (1.0 - segment.Term.a) * sample.Term;
-    alpha += (1.0 - alpha) * sample.Color.a;
+    weightedT[static_cast<size_t>(s)] += (1.0 - segment.Color.a) * sample.Color.a * sample.T;
+    CompositeFrontToBack(segment.Color, sample.Color);
+    CompositeFrontToBack(segment.Term, sample.Term);
   }
   std::vector<RaySample> kept;
   for (size_t s = 0; s < segments.size(); ++s)
@@ -160,14 +162,11 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   const bool wantTerm = termOnly || shadowTerm || samples;
   const bool lit = volume.Shade || shadowed || termOnly;
   const VolumeGrid& grid = *volume.Grid;
-  double tEnter = 0.0, tExit = 0.0;
-  if (!IntersectBox(ray, grid.GetWorldToIndex(), glm::dvec3(0.0), glm::dvec3(grid.GetDims() - 1),
-        tEnter, tExit))
+  double t0 = 0.0, t1 = 0.0;
+  if (!MarchInterval(ray, grid, tLimit, t0, t1))
   {
     return glm::dvec4(0.0);
   }
-  const double t0 = std::max(tEnter, 0.0);
-  const double t1 = std::min(tExit, tLimit);
   const double dt = settings.SampleDistance;
   const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(ray.Origin, 1.0));
   const glm::dvec3 indexDirection =
@@ -184,7 +183,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
-    if (!(t < t1) || (!samples && accumulated.a > settings.TerminationOpacity))
+    if (!(t < t1) || accumulated.a > settings.TerminationOpacity)
     {
       break;
     }
@@ -472,7 +471,7 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
                 mesh.ReceivesShadows ? meshOthers[hit.Surface] : none, receiverBias, &term);
               const double alpha = std::clamp(mesh.Material.Opacity, 0.0, 1.0);
               const glm::dvec3 shown = settings.Output == RenderOutput::ShadowTerm ? term : color;
-              fragments.push_back({ hit.T, glm::dvec4(alpha * shown, alpha), glm::dvec4(alpha * term, alpha), false });
+              fragments.push_back({ { hit.T, glm::dvec4(alpha * shown, alpha), glm::dvec4(alpha * term, alpha) }, false });
               translucent += opaque ? 0 : 1;
             }
             if (opaque)
@@ -490,30 +489,30 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
             MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings, nullptr, &samples);
             if (v > 0 && scene.VolumeSegments > 0)
             {
-              samples = Segments(samples, ray, *scene.Volumes[v].Grid, tEnd, scene.VolumeSegments,
-                settings.TerminationOpacity);
+              samples = Segments(samples, ray, *scene.Volumes[v].Grid, tEnd, scene.VolumeSegments);
             }
             for (const RaySample& sample : samples)
             {
-              fragments.push_back({ sample.T, sample.Color, sample.Term, v == 0 });
+              fragments.push_back({ sample, v == 0 });
             }
           }
           // Stable: a mesh crossing and a sample at the same depth keep the crossing first.
           std::stable_sort(fragments.begin(), fragments.end(),
-            [](const Fragment& a, const Fragment& b) { return a.T < b.T; });
+            [](const Fragment& a, const Fragment& b) { return a.Sample.T < b.Sample.T; });
           glm::dvec4 front(0.0);
           glm::dvec4 termFront(0.0);
           bool terminated = false;
           for (const Fragment& fragment : fragments)
           {
-            // The first volume's march stops once the ray is nearly opaque (GPU twin).
+            // The first volume's march stops once the ray, all it merged included, is nearly
+            // opaque (GPU twin); each volume's own march stopped in MarchRay already.
             terminated = terminated || (fragment.FirstVolume && front.a > settings.TerminationOpacity);
             if (fragment.FirstVolume && terminated)
             {
               continue;
             }
-            front += (1.0 - front.a) * fragment.Color;
-            termFront += (1.0 - termFront.a) * fragment.Term;
+            CompositeFrontToBack(front, fragment.Sample.Color);
+            CompositeFrontToBack(termFront, fragment.Sample.Term);
           }
           pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
           termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;

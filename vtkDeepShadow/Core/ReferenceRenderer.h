@@ -189,7 +189,7 @@ public:
    * Premultiplied RGBA of one volume along `ray` up to world distance `tLimit`, with the
    * first sample `offset` steps (in [0, 1)) past the entry; with `shadowTerm`, also the
    * premultiplied shadow term along the same ray. With `samples`, every sample is also
-   * appended there and the march does not stop early (whoever composites them decides).
+   * appended there, premultiplied, to be composited in depth order with others.
    */
   static glm::dvec4 MarchRay(const Scene& scene, const VolumeInstance& volume,
     const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
