@@ -402,7 +402,8 @@ int RunReport(const Options& options)
       row.Parameters = colon == std::string::npos ? "defaults" : spec.substr(colon + 1);
       std::replace(row.Parameters.begin(), row.Parameters.end(), ':', ' ');
       auto technique = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec));
-      auto second = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec)); // a second volume's
+      auto second = bench.Setup().SecondMapper ? MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec))
+                                               : nullptr; // a second volume's
       row.Colored = technique && technique->GetParameters().IsColored();
       row.M = bench.Measure(technique, true, second);
       row.Baseline = baseline;

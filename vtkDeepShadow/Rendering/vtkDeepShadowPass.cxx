@@ -232,7 +232,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     impl.Layers.GetSegments().Release(renderer->GetRenderWindow());
   }
   this->VolumeSegmentBytes = impl.Layers.GetSegments().GetBytes();
-  this->TranslucentLayerBytes = impl.Layers.GetBytes() - this->VolumeSegmentBytes;
+  this->TranslucentLayerBytes = impl.Layers.GetBytes();
 
   // The source and the grids are set for this frame only.
   for (vtkDeepShadowPolyDataMapper* mapper : impl.Receivers)
@@ -375,17 +375,17 @@ void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowV
   // The other volumes, each into its slices of the segments.
   deepshadow::VolumeSegments& segments = impl.Layers.GetSegments();
   std::string error;
-  if (guests.empty() ||
+  if (!guests.empty() &&
     !segments.Allocate(window, width, height, static_cast<int>(guests.size()), this->VolumeSegments, error))
   {
-    if (error != impl.SegmentError && !error.empty())
+    if (error != impl.SegmentError)
     {
-      vtkErrorMacro(<< error); // once, until it changes
+      vtkErrorMacro(<< error); // once, until it changes; the guests are blended instead
     }
     impl.SegmentError = error;
     segments.Release(window);
   }
-  else
+  else if (!guests.empty())
   {
     impl.SegmentError.clear();
     segments.Clear(window); // a guest not drawn this frame (bad input) leaves no old picture

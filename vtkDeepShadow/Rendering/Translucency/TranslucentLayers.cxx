@@ -189,8 +189,7 @@ void TranslucentLayers::Composite(vtkOpenGLRenderWindow* window, int x0, int y0,
 long long TranslucentLayers::GetBytes() const
 {
   const long long pixels = static_cast<long long>(this->Width) * this->Height;
-  return pixels * (8 * static_cast<long long>(this->Layers.size()) + 4) + this->Opaque.GetBytes() +
-    this->Segments.GetBytes();
+  return pixels * (8 * static_cast<long long>(this->Layers.size()) + 4) + this->Opaque.GetBytes();
 }
 
 void TranslucentLayers::Release(vtkWindow* window)

@@ -75,10 +75,6 @@ void VolumeSegments::Begin(vtkOpenGLRenderWindow* window, int guest)
     buffers.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k));
   }
   glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  for (int k = 0; k < this->Segments; ++k)
-  {
-    glClearBufferuiv(GL_COLOR, k, EmptySegmentTexel);
-  }
   state->vtkglViewport(0, 0, this->Width, this->Height);
 }
 
@@ -95,6 +91,10 @@ void VolumeSegments::Clear(vtkOpenGLRenderWindow* window)
   for (int g = 0; g < this->Guests; ++g)
   {
     this->Begin(window, g);
+    for (int k = 0; k < this->Segments; ++k)
+    {
+      glClearBufferuiv(GL_COLOR, k, EmptySegmentTexel);
+    }
     this->End(window);
   }
 }

@@ -30,9 +30,6 @@ class UniformSink;
 class VolumeSegments
 {
 public:
-  /** At most this many pieces per guest: the colour attachments every GL 3.3 has. */
-  static constexpr int MaxSegments = 8;
-
   VolumeSegments();
   ~VolumeSegments();
 
@@ -44,12 +41,13 @@ public:
     std::string& error);
 
   /**
-   * Makes guest `guest`'s slices the draw target, cleared to empty, over the viewport at
-   * (0, 0); End() restores the framebuffer and viewport before.
+   * Makes guest `guest`'s slices the draw target (at most 8 pieces: the colour attachments
+   * every GL 3.3 has), over the viewport at (0, 0); End() restores the framebuffer and
+   * viewport before.
    */
   void Begin(vtkOpenGLRenderWindow* window, int guest);
   void End(vtkOpenGLRenderWindow* window);
-  /** Empties every guest's slices (a guest that draws nothing leaves nothing behind). */
+  /** Empties every guest's slices, once a frame (a guest that draws nothing leaves nothing). */
   void Clear(vtkOpenGLRenderWindow* window);
 
   int GetSegments() const { return this->Segments; }
