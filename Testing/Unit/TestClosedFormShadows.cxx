@@ -17,6 +17,7 @@
 #include "../Common/ClosedForm.h"
 
 #include "LightSpace.h"
+#include "ReferenceRenderer.h"
 #include "Shadows.h"
 #include "SurfaceSet.h"
 #include "ShadowGrid.h"
@@ -139,13 +140,29 @@ Light Positional(const glm::dvec3& position, const glm::dvec3& focal, double con
 }
 
 // The ground under the ball on the far side of a light at 45 degrees in the x-z plane: an
-// opaque white square at z = -30 that casts shadows too (as vtkDeepShadowPolyDataMapper's
-// meshes do by default), facing the light.
+// opaque box [-58, -2] x [-28, 28] x [-31, -30] that casts shadows too (as
+// vtkDeepShadowPolyDataMapper's meshes do by default), with one smooth normal per corner
+// (what the mapper computes for a box that has none: the shading normal of its top face
+// tilts towards its edges, its plane does not).
+constexpr double GroundTop = -30.0;
 SurfaceMesh Ground()
 {
   SurfaceMesh mesh;
-  mesh.Points = { { -58.0, -28.0, -30.0 }, { -2.0, -28.0, -30.0 }, { -2.0, 28.0, -30.0 }, { -58.0, 28.0, -30.0 } };
-  mesh.Triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+  for (int c = 0; c < 8; ++c)
+  {
+    const glm::dvec3 corner((c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0);
+    mesh.Points.emplace_back(corner.x > 0.0 ? -2.0 : -58.0, corner.y > 0.0 ? 28.0 : -28.0,
+      corner.z > 0.0 ? GroundTop : GroundTop - 1.0);
+    mesh.Normals.push_back(glm::normalize(corner));
+  }
+  // Outward, counter-clockwise seen from outside: -z, +z, -y, +y, -x, +x.
+  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
+    { 1, 3, 7, 5 } };
+  for (const auto& q : faces)
+  {
+    mesh.Triangles.push_back({ q[0], q[1], q[2] });
+    mesh.Triangles.push_back({ q[0], q[2], q[3] });
+  }
   mesh.Material.Opacity = 1.0;
   return mesh;
 }
@@ -242,12 +259,30 @@ glm::dvec3 Spread(const Body& body, const Light& light, bool colored, const glm:
   return spread;
 }
 
-/** A point where a technique is asked for the light, and whether a mesh receives there. */
+/** A point where a technique is asked for the light: a volume sample, or a mesh's point. */
 struct Receiver
 {
   glm::dvec3 Position;
-  glm::dvec3 Normal{ 0.0 }; // zero: a volume sample
+  const SurfaceSet* Mesh = nullptr; // a mesh of it, seen from above, receives at Position
 };
+
+/**
+ * What the CPU reference shows at a mesh receiver of `light` with only this shadow: its
+ * shadow term, as ReferenceRenderer::ShadeSurface computes it (the lookup towards the light,
+ * the triangle's plane) for the mesh point seen from straight above.
+ */
+glm::dvec3 MeshShadowTerm(const SurfaceSet& mesh, const glm::dvec3& position, const LightShadow& shadow,
+  const Light& light, double feelerStep)
+{
+  const Ray ray{ position + glm::dvec3(0.0, 0.0, 5.0), glm::dvec3(0.0, 0.0, -1.0) };
+  const SurfaceHit hit = mesh.NextHit(ray.Origin, ray.Direction, 0.0);
+  EXPECT_TRUE(hit.Found && std::abs(hit.T - 5.0) < 1e-9);
+  Scene scene;
+  scene.Lights = { light };
+  glm::dvec3 term(1.0);
+  ReferenceRenderer::ShadeSurface(scene, mesh, hit, ray, { &shadow }, {}, DefaultReceiverBias(feelerStep), &term);
+  return term;
+}
 
 struct Outcome
 {
@@ -270,14 +305,11 @@ Outcome CheckAgainstClosedForm(const std::string& what, const Body& body, const 
   const double sigma = body.Sigma();
   for (const Receiver& receiver : receivers)
   {
-    glm::dvec3 at = receiver.Position;
+    const glm::dvec3 at = receiver.Position;
     const glm::dvec3 toLight = light.At(at).ToLight;
-    const bool mesh = receiver.Normal != glm::dvec3(0.0);
-    if (mesh)
-    {
-      at += ReceiverOffset(DefaultReceiverBias(step), receiver.Normal, toLight) * toLight;
-    }
-    const glm::dvec3 got = shadow.Visibility(at);
+    const bool mesh = receiver.Mesh != nullptr;
+    const glm::dvec3 got =
+      mesh ? MeshShadowTerm(*receiver.Mesh, at, shadow, light, step) : shadow.Visibility(at);
     const bool colored = parameters.IsColored();
     const glm::dvec3 exact = body.Exact(at, light, colored);
     const double length = body.Path(at, toLight, DistanceToLight(light, at));
@@ -347,13 +379,13 @@ Outcome CheckAgainstClosedForm(const std::string& what, const Body& body, const 
   return outcome;
 }
 
-// Receivers on the ground under the ball: a 4-unit lattice over the square, normal +z.
-std::vector<Receiver> GroundReceivers()
+// Receivers on the ground's top face under the ball: a 4-unit lattice.
+std::vector<Receiver> GroundReceivers(const SurfaceSet& ground)
 {
   std::vector<Receiver> receivers;
   for (double x = -54.0; x <= -6.0; x += 4.0)
     for (double y = -24.0; y <= 24.0; y += 4.0)
-      receivers.push_back({ { x, y, -30.0 }, { 0.0, 0.0, 1.0 } });
+      receivers.push_back({ { x, y, GroundTop }, &ground });
   return receivers;
 }
 
@@ -378,7 +410,7 @@ void CheckBallOnGround(const std::string& name, const glm::dvec3& color = glm::d
   parameters.Cached = false;
   const auto shadow = MakeLightShadow(parameters, body.Caster, BallLight, ViewStep);
   const Outcome outcome =
-    CheckAgainstClosedForm(name + " ball on a ground", body, parameters, *shadow, BallLight, GroundReceivers());
+    CheckAgainstClosedForm(name + " ball on a ground", body, parameters, *shadow, BallLight, GroundReceivers(surfaces));
   EXPECT_EQ(outcome.Failed, 0);
   EXPECT_GT(outcome.Checked, 200);
 }
@@ -493,6 +525,10 @@ const glm::dvec3 Orange{ 1.0, 0.6, 0.2 };
 // Grey techniques on a mesh receiver: the ground under a translucent ball.
 TEST(ClosedFormShadows, RaysOnAGroundUnderABall) { CheckBallOnGround("rays"); }
 TEST(ClosedFormShadows, DeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("dsm"); }
+// CSSM's offsets reach 7 texels: on a receiver that slopes away from the light, they must
+// compare the receiver plane's depth there, not the point's (else the ground's own crossing
+// in the texels towards the light shadows it: 30 % darker, and the ball's shadow lost).
+TEST(ClosedFormShadows, StochasticShadowMapOnAGroundUnderABall) { CheckBallOnGround("cssm"); }
 
 // The caster's own samples: a slab lit at 30 degrees, T = (1 - a)^(depth / cos 30).
 TEST(ClosedFormShadows, RaysInsideASlab) { CheckSlabSelfShadow("rays"); }
@@ -530,6 +566,7 @@ TEST(ClosedFormShadows, ColouredRaysAndDeepShadowMapsOnAGround)
   CheckBallOnGround("rays-color", Orange);
   CheckBallOnGround("dsm-color", Orange);
 }
+TEST(ClosedFormShadows, ColouredStochasticShadowMapOnAGround) { CheckBallOnGround("cssm", Orange); }
 TEST(ClosedFormShadows, ColouredPointLightInAMedium)
 {
   for (const char* name : { "rays-color", "dsm-color", "cssm" })

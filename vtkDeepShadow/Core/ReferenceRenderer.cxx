@@ -307,7 +307,9 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
     {
       const double offset = ReceiverOffset(receiverBias, normal, sample.ToLight);
       const glm::dvec3 at = position + offset * sample.ToLight;
-      glm::dvec3 visibility = own ? own->Visibility(at) : glm::dvec3(1.0);
+      // Neighbouring texels are compared on the triangle's own plane (its shading normal may
+      // be smoothed across edges: MeshNormal.glsl's g_faceNormal).
+      glm::dvec3 visibility = own ? own->SurfaceVisibility(at, surfaces.FaceNormal(hit)) : glm::dvec3(1.0);
       if (other)
       {
         visibility *= other->Visibility(at);

@@ -153,6 +153,17 @@ public:
   virtual ~LightShadow() = default;
   /** Visibility of the light from world point p, per colour channel, in [0, 1]. */
   virtual glm::dvec3 Visibility(const glm::dvec3& p) const = 0;
+  /**
+   * The same at a point of a receiving surface with unit normal `normal`. Lookups that read
+   * neighbouring texels compare each at the depth of the receiver's plane there (a surface
+   * that slopes away from the light is deeper at the texels beyond), so that a surface that
+   * casts does not shadow itself through them; the rest ask Visibility().
+   */
+  virtual glm::dvec3 SurfaceVisibility(const glm::dvec3& p, const glm::dvec3& normal) const
+  {
+    (void)normal;
+    return this->Visibility(p);
+  }
   /** Memory of the structure (0 for techniques without one). */
   virtual size_t Bytes() const { return 0; }
 };

@@ -52,7 +52,7 @@ void main()
     lightDistance = length(d);
     toLight = lightDistance > 0.0 ? d / lightDistance : vec3(0.0, 0.0, 1.0);
   }
-  vec3 visibility = lightVisibility(u_slot, world, toLight, lightDistance);
+  vec3 visibility = lightVisibility(u_slot, world, toLight, lightDistance, vec3(0.0));
 #ifdef OTHER_VOLUMES
   if (u_firstCaster == 0)
   {

@@ -23,6 +23,7 @@ uniform float u_opacity;      // the actor's
 
 void main()
 {
+  //DeepShadow::MeshNormal::Face
   //DeepShadow::Peel::Init
   vec3 toViewer = u_parallel != 0 ? -u_viewDirection : normalize(u_cameraPosition - v_position);
   vec3 color = lightSample(v_color.rgb, vec3(0.0), v_position, toViewer);

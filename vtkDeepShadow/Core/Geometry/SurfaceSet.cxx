@@ -144,18 +144,24 @@ bool SurfaceSet::Occludes(const glm::dvec3& origin, const glm::dvec3& direction,
 glm::dvec3 SurfaceSet::Normal(const SurfaceHit& hit) const
 {
   const SurfaceMesh& mesh = this->Meshes[static_cast<size_t>(hit.Surface)];
+  if (mesh.Normals.empty())
+  {
+    return this->FaceNormal(hit);
+  }
   const glm::ivec3 tri = mesh.Triangles[static_cast<size_t>(hit.Triangle)];
-  glm::dvec3 n;
-  if (!mesh.Normals.empty())
-  {
-    n = (1.0 - hit.U - hit.V) * mesh.Normals[static_cast<size_t>(tri.x)] +
-      hit.U * mesh.Normals[static_cast<size_t>(tri.y)] + hit.V * mesh.Normals[static_cast<size_t>(tri.z)];
-  }
-  else
-  {
-    const glm::dvec3& a = mesh.Points[static_cast<size_t>(tri.x)];
-    n = glm::cross(mesh.Points[static_cast<size_t>(tri.y)] - a, mesh.Points[static_cast<size_t>(tri.z)] - a);
-  }
+  const glm::dvec3 n = (1.0 - hit.U - hit.V) * mesh.Normals[static_cast<size_t>(tri.x)] +
+    hit.U * mesh.Normals[static_cast<size_t>(tri.y)] + hit.V * mesh.Normals[static_cast<size_t>(tri.z)];
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : glm::dvec3(0.0);
+}
+
+glm::dvec3 SurfaceSet::FaceNormal(const SurfaceHit& hit) const
+{
+  const SurfaceMesh& mesh = this->Meshes[static_cast<size_t>(hit.Surface)];
+  const glm::ivec3 tri = mesh.Triangles[static_cast<size_t>(hit.Triangle)];
+  const glm::dvec3& a = mesh.Points[static_cast<size_t>(tri.x)];
+  const glm::dvec3 n =
+    glm::cross(mesh.Points[static_cast<size_t>(tri.y)] - a, mesh.Points[static_cast<size_t>(tri.z)] - a);
   const double length = glm::length(n);
   return length > 0.0 ? n / length : glm::dvec3(0.0);
 }

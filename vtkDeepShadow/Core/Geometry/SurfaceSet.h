@@ -113,6 +113,8 @@ public:
 
   /** Unit normal at a hit as the mesh orients it (point normals interpolated, else the face's). */
   glm::dvec3 Normal(const SurfaceHit& hit) const;
+  /** Unit normal of the hit triangle's plane (zero for a degenerate one). */
+  glm::dvec3 FaceNormal(const SurfaceHit& hit) const;
   /** Colour at a hit (per-point colours interpolated, else the material's). */
   glm::dvec3 Color(const SurfaceHit& hit) const;
 

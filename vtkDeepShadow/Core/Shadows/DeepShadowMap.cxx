@@ -302,9 +302,9 @@ size_t DeepShadowMap::Bytes() const
   return this->TexelCount() * this->Layers * sizeof(float) * (this->Channels == 3 ? 4 : 2);
 }
 
-glm::dvec3 DeepShadowMap::MapVisibility(int face, double x, double y, double depth) const
+glm::dvec3 DeepShadowMap::MapVisibility(const MapPoint& point) const
 {
-  return this->Bilinear(face, x, y, [&](size_t texel) {
+  return this->Bilinear(point, [&](size_t texel, double depth) {
     return EvaluateVisibility(&this->Nodes[texel * this->Layers], this->Layers, depth);
   });
 }

@@ -132,7 +132,7 @@ public:
   const DeepShadowMapStatistics& GetStatistics() const { return this->Statistics; }
 
 protected:
-  glm::dvec3 MapVisibility(int face, double x, double y, double depth) const override;
+  glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
   int Channels;

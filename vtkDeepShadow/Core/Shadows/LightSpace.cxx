@@ -274,30 +274,77 @@ void LightSpaceShadow::ForEachTexel(int threads,
   }
 }
 
+bool LightSpaceShadow::Locate(int face, const glm::dvec3& p, MapPoint& point) const
+{
+  double u = 0.0, v = 0.0;
+  point.Face = face;
+  if (!this->Faces[face].Project(p, u, v, point.Depth))
+  {
+    return false;
+  }
+  point.X = 0.5 * (u + 1.0) * this->Size - 0.5;
+  point.Y = 0.5 * (v + 1.0) * this->Size - 0.5;
+  return true;
+}
+
 glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
 {
-  const int face = ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin);
-  double u = 0.0, v = 0.0, depth = 0.0;
-  if (!this->Faces[face].Project(p, u, v, depth))
+  MapPoint point;
+  if (!this->Locate(ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin), p, point))
   {
     return glm::dvec3(1.0);
   }
-  return this->MapVisibility(
-    face, 0.5 * (u + 1.0) * this->Size - 0.5, 0.5 * (v + 1.0) * this->Size - 0.5, depth);
+  return this->MapVisibility(point);
+}
+
+glm::dvec3 LightSpaceShadow::SurfaceVisibility(const glm::dvec3& p, const glm::dvec3& normal) const
+{
+  MapPoint point;
+  if (!this->Locate(ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin), p, point))
+  {
+    return glm::dvec3(1.0);
+  }
+  // Two steps of a texel's width along the receiver's plane, located on the same face: the
+  // plane's depth changes linearly across the map (locally, for a perspective face).
+  const ShadowMapFace& face = this->Faces[point.Face];
+  const double z = face.Perspective ? glm::dot(p - face.Origin, face.Forward) : 1.0;
+  const double texel = 2.0 * z * face.Extent / this->Size;
+  const glm::dvec3 n = glm::normalize(normal);
+  const glm::dvec3 e1 =
+    glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+  const glm::dvec3 e2 = glm::cross(n, e1);
+  MapPoint a, b;
+  if (this->Locate(point.Face, p + texel * e1, a) && this->Locate(point.Face, p + texel * e2, b))
+  {
+    const glm::dvec3 d1(a.X - point.X, a.Y - point.Y, a.Depth - point.Depth);
+    const glm::dvec3 d2(b.X - point.X, b.Y - point.Y, b.Depth - point.Depth);
+    const double det = d1.x * d2.y - d1.y * d2.x;
+    if (std::abs(det) > 1e-12)
+    {
+      // depth = Slope . (x, y) along both steps.
+      point.Slope = glm::dvec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+      const double steepest = MaxReceiverSlope * texel, length = glm::length(point.Slope);
+      if (length > steepest)
+      {
+        point.Slope *= steepest / length;
+      }
+    }
+  }
+  return this->MapVisibility(point);
 }
 
 glm::dvec3 LightSpaceShadow::Bilinear(
-  int face, double x, double y, const std::function<glm::dvec3(size_t texel)>& value) const
+  const MapPoint& point, const std::function<glm::dvec3(size_t texel, double depth)>& value) const
 {
   // Texels clamp to the edge, so coordinates beyond [-1, Size] change nothing; clamped, far
   // (or NaN, from a degenerate face) coordinates cannot overflow the int conversion.
-  x = std::isnan(x) ? 0.0 : std::clamp(x, -1.0, static_cast<double>(this->Size));
-  y = std::isnan(y) ? 0.0 : std::clamp(y, -1.0, static_cast<double>(this->Size));
+  const double x = std::isnan(point.X) ? 0.0 : std::clamp(point.X, -1.0, static_cast<double>(this->Size));
+  const double y = std::isnan(point.Y) ? 0.0 : std::clamp(point.Y, -1.0, static_cast<double>(this->Size));
   const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
   const double fx = x - i, fy = y - j;
-  return (1.0 - fx) * (1.0 - fy) * value(this->Texel(face, i, j)) +
-    fx * (1.0 - fy) * value(this->Texel(face, i + 1, j)) +
-    (1.0 - fx) * fy * value(this->Texel(face, i, j + 1)) + fx * fy * value(this->Texel(face, i + 1, j + 1));
+  auto at = [&](int ti, int tj) { return value(this->Texel(point.Face, ti, tj), point.DepthAt(ti, tj)); };
+  return (1.0 - fx) * (1.0 - fy) * at(i, j) + fx * (1.0 - fy) * at(i + 1, j) + (1.0 - fx) * fy * at(i, j + 1) +
+    fx * fy * at(i + 1, j + 1);
 }
 
 size_t LightSpaceShadow::Texel(int face, int x, int y) const

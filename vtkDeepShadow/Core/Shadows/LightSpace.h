@@ -88,6 +88,32 @@ VTKDEEPSHADOWCORE_EXPORT void MarchTexelRay(const ShadowCaster& caster, const gl
   const std::function<bool(double t, int surface)>& visitSurface = nullptr);
 
 /**
+ * Where a lookup falls on a light's faces: the face, the continuous texel position (texel
+ * centres at integers), the point's depth, and for a point on a receiving surface the depth
+ * change of its plane per texel along x and y (zero for a volume sample).
+ */
+struct MapPoint
+{
+  int Face = 0;
+  double X = 0.0, Y = 0.0;
+  double Depth = 0.0;
+  glm::dvec2 Slope{ 0.0 };
+
+  /** The depth to compare with texel (i, j)'s: the receiver plane's there. */
+  double DepthAt(double i, double j) const
+  {
+    return this->Depth + this->Slope.x * (i - this->X) + this->Slope.y * (j - this->Y);
+  }
+};
+
+/**
+ * The steepest receiver plane a lookup follows, in depth per texel width: 80 degrees from
+ * the light (beyond, the plane extends too far to stand for the surface, and its diffuse
+ * light is below cos 80 = 0.17 anyway).
+ */
+constexpr double MaxReceiverSlope = 5.67;
+
+/**
  * The common part of light-space techniques: the faces of one light, MapSize^2 texels per
  * face, and where a world point falls. Subclasses fill their texels in their constructor
  * with ForEachTexel and answer Visibility() from them.
@@ -97,6 +123,8 @@ class VTKDEEPSHADOWCORE_EXPORT LightSpaceShadow : public LightShadow
 public:
   /** Locates p on the faces (lit where no face sees it) and asks MapVisibility(). */
   glm::dvec3 Visibility(const glm::dvec3& p) const final;
+  /** The same with the receiver plane's slope (MapPoint::Slope). */
+  glm::dvec3 SurfaceVisibility(const glm::dvec3& p, const glm::dvec3& normal) const final;
   const std::vector<ShadowMapFace>& GetFaces() const { return this->Faces; }
   int GetSize() const { return this->Size; }
 
@@ -108,23 +136,25 @@ protected:
   void ForEachTexel(int threads,
     const std::function<void(int, int, int, const glm::dvec3&, const glm::dvec3&)>& build) const;
 
-  /**
-   * The visibility at continuous texel position (x, y) of a face (texel centres at integers)
-   * and `depth`: the technique's lookup.
-   */
-  virtual glm::dvec3 MapVisibility(int face, double x, double y, double depth) const = 0;
+  /** The technique's lookup at a point of the map. */
+  virtual glm::dvec3 MapVisibility(const MapPoint& point) const = 0;
 
   /**
-   * value(texel) blended bilinearly over the four texels around (x, y) of a face (texel
-   * indices as Texel() gives them).
+   * value(texel, depth) blended bilinearly over the four texels around the point (texel
+   * indices as Texel() gives them; depth: MapPoint::DepthAt their centre).
    */
-  glm::dvec3 Bilinear(int face, double x, double y,
-    const std::function<glm::dvec3(size_t texel)>& value) const;
+  glm::dvec3 Bilinear(const MapPoint& point,
+    const std::function<glm::dvec3(size_t texel, double depth)>& value) const;
 
   /** Index of texel (x, y) of a face, clamped to the face's edge. */
   size_t Texel(int face, int x, int y) const;
   size_t TexelCount() const;
 
+private:
+  /** p on face `face`: its texel position and depth; false if it is behind the face. */
+  bool Locate(int face, const glm::dvec3& p, MapPoint& point) const;
+
+protected:
   ShadowParameters Parameters;
   ShadowCaster Caster;
   int Size;

@@ -96,9 +96,9 @@ OpacityLevelsShadow::OpacityLevelsShadow(const ShadowParameters& parameters,
   });
 }
 
-glm::dvec3 OpacityLevelsShadow::MapVisibility(int face, double x, double y, double depth) const
+glm::dvec3 OpacityLevelsShadow::MapVisibility(const MapPoint& point) const
 {
-  return 1.0 - this->Bilinear(face, x, y, [&](size_t texel) {
+  return 1.0 - this->Bilinear(point, [&](size_t texel, double depth) {
     return glm::dvec3(EvaluateOpacityLevels(this->Texels[texel], this->Parameters.Levels, depth));
   });
 }

@@ -46,7 +46,7 @@ public:
   size_t Bytes() const override { return this->Texels.size() * 4 * sizeof(float); }
 
 protected:
-  glm::dvec3 MapVisibility(int face, double x, double y, double depth) const override;
+  glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
   std::vector<OpacityLevelsTexel> Texels;

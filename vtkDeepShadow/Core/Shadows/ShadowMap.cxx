@@ -27,13 +27,14 @@ const std::vector<glm::dvec2>& PoissonDisc()
   return disc;
 }
 
-double FilterShadowMap(
-  const float* depths, int size, double x, double y, double depth, ShadowFilter filter)
+double FilterShadowMap(const float* depths, int size, double x, double y, double depth,
+  ShadowFilter filter, const glm::dvec2& slope)
 {
   auto lit = [&](int i, int j) {
+    const double planeDepth = depth + slope.x * (i - x) + slope.y * (j - y);
     i = std::clamp(i, 0, size - 1);
     j = std::clamp(j, 0, size - 1);
-    return depth <= static_cast<double>(depths[static_cast<size_t>(j) * size + i]) ? 1.0 : 0.0;
+    return planeDepth <= static_cast<double>(depths[static_cast<size_t>(j) * size + i]) ? 1.0 : 0.0;
   };
   const int nx = static_cast<int>(std::floor(x + 0.5));
   const int ny = static_cast<int>(std::floor(y + 0.5));
@@ -103,10 +104,10 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
   });
 }
 
-glm::dvec3 ShadowMapShadow::MapVisibility(int f, double x, double y, double depth) const
+glm::dvec3 ShadowMapShadow::MapVisibility(const MapPoint& point) const
 {
-  return glm::dvec3(FilterShadowMap(&this->Depths[this->Texel(f, 0, 0)], this->Size, x, y,
-    depth - this->Parameters.Bias * this->Step, this->Parameters.Filter));
+  return glm::dvec3(FilterShadowMap(&this->Depths[this->Texel(point.Face, 0, 0)], this->Size, point.X,
+    point.Y, point.Depth - this->Parameters.Bias * this->Step, this->Parameters.Filter, point.Slope));
 }
 
 }

@@ -20,10 +20,12 @@ VTKDEEPSHADOWCORE_EXPORT const std::vector<glm::dvec2>& PoissonDisc();
 
 /**
  * Percentage-closer filtering of depth comparisons on a size x size map at continuous texel
- * position (x, y) (texel centres at integers): the twin of the GLSL lookup.
+ * position (x, y) (texel centres at integers): the twin of the GLSL lookup. Each texel is
+ * compared with `depth` plus `slope` times its offset from (x, y) (a receiver's plane,
+ * MapPoint::Slope).
  */
 VTKDEEPSHADOWCORE_EXPORT double FilterShadowMap(const float* depths, int size, double x,
-  double y, double depth, ShadowFilter filter);
+  double y, double depth, ShadowFilter filter, const glm::dvec2& slope = glm::dvec2(0.0));
 
 class VTKDEEPSHADOWCORE_EXPORT ShadowMapShadow : public LightSpaceShadow
 {
@@ -33,7 +35,7 @@ public:
   size_t Bytes() const override { return this->Depths.size() * sizeof(float); }
 
 protected:
-  glm::dvec3 MapVisibility(int face, double x, double y, double depth) const override;
+  glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
   std::vector<float> Depths; // per face, size x size; NoHit where no sample is above

@@ -98,14 +98,15 @@ StochasticShadowMap::StochasticShadowMap(const ShadowParameters& parameters,
   });
 }
 
-glm::dvec3 StochasticShadowMap::MapVisibility(int f, double x, double y, double depth) const
+glm::dvec3 StochasticShadowMap::MapVisibility(const MapPoint& point) const
 {
-  const int nx = static_cast<int>(std::floor(x + 0.5)), ny = static_cast<int>(std::floor(y + 0.5));
+  const int nx = static_cast<int>(std::floor(point.X + 0.5)), ny = static_cast<int>(std::floor(point.Y + 0.5));
   const auto& offsets = StochasticOffsets(this->Parameters.Offsets);
   glm::dvec3 lit(0.0);
   for (const glm::ivec2& o : offsets)
   {
-    const size_t texel = this->Texel(f, nx + o.x, ny + o.y);
+    const size_t texel = this->Texel(point.Face, nx + o.x, ny + o.y);
+    const double depth = point.DepthAt(nx + o.x, ny + o.y);
     for (int photon = 0; photon < this->Photons; ++photon)
     {
       const std::array<float, 3>& stop = this->Stops[texel * this->Photons + photon];

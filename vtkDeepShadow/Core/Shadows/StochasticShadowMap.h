@@ -10,7 +10,8 @@
 // reproducible and the GPU draws the same numbers.
 //
 // Lookup: the fraction of tests, over the m offsets of the nearest texel and the photons,
-// whose stored depth lies beyond the point: an unbiased estimate of the coloured
+// whose stored depth lies beyond the point (on a receiving surface, beyond its plane at that
+// texel: MapPoint::DepthAt): an unbiased estimate of the coloured
 // transmittance prod (1 - rho_i) over the segments before the point (TestStochastic checks
 // it). GLSL twins: Shaders/Shadows/StochasticShadowMapBuild.glsl and
 // Shaders/Shadows/StochasticShadowMap.glsl.
@@ -63,7 +64,7 @@ public:
   size_t Bytes() const override { return this->Stops.size() * 4 * sizeof(float); }
 
 protected:
-  glm::dvec3 MapVisibility(int face, double x, double y, double depth) const override;
+  glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
   int Photons;

@@ -194,7 +194,8 @@ protected:
   virtual long long GetStructureBytes() const { return 0; }
   /**
    * GLSL defining vec3 lightVisibility(int slot, vec3 position, vec3 toLight,
-   * float lightDistance) and its uniforms (parts //@Dec), for the ray caster and the cache.
+   * float lightDistance, vec3 receiverNormal) and its uniforms (parts //@Dec), for the ray
+   * caster and the cache (receiverNormal: a mesh point's normal, zero for volume samples).
    */
   virtual std::string GetLookupSource() const = 0;
   virtual bool LookupNeedsFeeler() const { return false; }

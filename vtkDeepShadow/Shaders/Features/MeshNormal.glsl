@@ -5,6 +5,15 @@
 //@Dec
 in vec3 v_normal;
 uniform float u_receiverOffset; // world distance at normal incidence
+// The triangle's own plane (its shading normal may be smoothed across edges): shadow lookups
+// compare neighbouring texels there (deepshadow::SurfaceSet::FaceNormal). Derivatives are
+// taken in main(), in uniform control flow; zero where the triangle is seen edge-on.
+vec3 g_faceNormal;
+//@Face
+  {
+    vec3 across = cross(dFdx(v_position), dFdy(v_position));
+    g_faceNormal = dot(across, across) > 0.0 ? normalize(across) : vec3(0.0);
+  }
 //@Normal
   vec3 normal = normalize(v_normal);
 //@ShadowOffset
@@ -13,4 +22,5 @@ uniform float u_receiverOffset; // world distance at normal incidence
         float offset = u_receiverOffset / max(abs(dot(normal, toLight)), 0.25);
         shadowPosition += offset * toLight;
         shadowDistance -= offset;
+        shadowNormal = g_faceNormal;
       }

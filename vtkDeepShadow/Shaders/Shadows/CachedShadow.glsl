@@ -7,7 +7,7 @@ uniform vec3 u_shadowDims;
 uniform float u_shadowSlabs;      // shadowed lights the texture has room for
 uniform mat4 u_shadowWorldToNode; // deepshadow::GridFrame
 
-vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
+vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance, vec3 receiverNormal)
 {
   vec4 stored = gridVisibility(u_shadowVolume, u_shadowWorldToNode, u_shadowDims, u_shadowSlabs, slot, position);
   return ShadowCacheColored ? stored.rgb : vec3(stored.r); // set by the technique

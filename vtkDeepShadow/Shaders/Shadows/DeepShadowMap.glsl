@@ -41,10 +41,15 @@ vec3 dsmTexel(int layer, ivec2 texel, float depth)
   return mix(dsmValue(a), dsmValue(b), (depth - a.r) / (b.r - a.r));
 }
 
-vec3 mapVisibility(int layer, vec2 xy, float depth)
+vec3 dsmAt(int layer, ivec2 texel, vec2 xy, float depth, vec2 slope)
+{
+  return dsmTexel(layer, texel, lightSpaceDepthAt(vec2(texel), xy, depth, slope));
+}
+
+vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
   ivec2 i0;
   vec4 w = lightSpaceBilinear(xy, i0);
-  return w.x * dsmTexel(layer, i0, depth) + w.y * dsmTexel(layer, i0 + ivec2(1, 0), depth) +
-    w.z * dsmTexel(layer, i0 + ivec2(0, 1), depth) + w.w * dsmTexel(layer, i0 + ivec2(1, 1), depth);
+  return w.x * dsmAt(layer, i0, xy, depth, slope) + w.y * dsmAt(layer, i0 + ivec2(1, 0), xy, depth, slope) +
+    w.z * dsmAt(layer, i0 + ivec2(0, 1), xy, depth, slope) + w.w * dsmAt(layer, i0 + ivec2(1, 1), xy, depth, slope);
 }

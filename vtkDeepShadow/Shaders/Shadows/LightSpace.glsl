@@ -1,8 +1,8 @@
 // Common part of the light-space lookups (shadow map, deep shadow map, opacity levels,
 // CSSM): where a world point falls on the faces of a light, then the technique's
 // mapVisibility() there (ShadowMapFace::Project, ShadowMapFaceFor and
-// LightSpaceShadow::Visibility in Core/Shadows/LightSpace.cxx are the CPU twins). Depths
-// are linear, from the face's near boundary.
+// LightSpaceShadow::Visibility / SurfaceVisibility in Core/Shadows/LightSpace.cxx are the CPU
+// twins). Depths are linear, from the face's near boundary.
 //@Dec
 const int MaxShadowLights = 4;
 uniform sampler2DArray u_shadowMap;   // layer ((slot * faces per light) + face) * layers per face + k
@@ -32,10 +32,77 @@ vec4 lightSpaceBilinear(vec2 xy, out ivec2 i0)
 }
 
 // The technique's lookup at texel position xy (texel centres at integers) of the face whose
-// texels start at `layer`, for a point at `depth`.
-vec3 mapVisibility(int layer, vec2 xy, float depth);
+// texels start at `layer`, for a point at `depth`; on a receiving surface, `slope` is its
+// plane's depth change per texel (MapPoint::Slope), and texel t is compared at
+// lightSpaceDepthAt(t).
+vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope);
 
-vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
+float lightSpaceDepthAt(vec2 texel, vec2 xy, float depth, vec2 slope)
+{
+  return depth + dot(slope, texel - xy);
+}
+
+// deepshadow::MaxReceiverSlope: the steepest receiver plane followed, in texel widths.
+const float MaxReceiverSlope = 5.67;
+
+// Texel position and depth of point d (relative to the face's origin) on a face; false
+// behind it.
+bool lightSpaceLocate(int slot, vec3 d, vec3 forward, vec3 right, vec3 up, out vec3 at)
+{
+  float z = dot(d, forward);
+  float u, v;
+  if (u_shadowPerspective[slot] != 0)
+  {
+    if (z <= 0.0)
+    {
+      return false;
+    }
+    u = dot(d, right) / (z * u_shadowExtent[slot]);
+    v = dot(d, up) / (z * u_shadowExtent[slot]);
+    at.z = length(d) - u_shadowNear[slot];
+  }
+  else
+  {
+    if (z < 0.0)
+    {
+      return false;
+    }
+    u = dot(d, right) / u_shadowExtent[slot];
+    v = dot(d, up) / u_shadowExtent[slot];
+    at.z = z;
+  }
+  at.xy = 0.5 * (vec2(u, v) + 1.0) * u_shadowSize - 0.5;
+  return true;
+}
+
+// deepshadow::LightSpaceShadow::SurfaceVisibility: the receiver plane's depth per texel, from
+// two steps of a texel's width along it located on the same face.
+vec2 lightSpaceReceiverSlope(int slot, vec3 d, vec3 forward, vec3 right, vec3 up, vec3 at, vec3 normal)
+{
+  float z = u_shadowPerspective[slot] != 0 ? dot(d, forward) : 1.0;
+  float texel = 2.0 * z * u_shadowExtent[slot] / u_shadowSize;
+  vec3 e1 = normalize(cross(normal, abs(normal.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 e2 = cross(normal, e1);
+  vec3 a, b;
+  if (!lightSpaceLocate(slot, d + texel * e1, forward, right, up, a) ||
+    !lightSpaceLocate(slot, d + texel * e2, forward, right, up, b))
+  {
+    return vec2(0.0);
+  }
+  vec3 d1 = a - at, d2 = b - at;
+  float det = d1.x * d2.y - d1.y * d2.x;
+  if (!(abs(det) > 1e-12))
+  {
+    return vec2(0.0);
+  }
+  vec2 slope = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+  float steepest = MaxReceiverSlope * texel;
+  float length2 = dot(slope, slope);
+  return length2 > steepest * steepest ? slope * (steepest / sqrt(length2)) : slope;
+}
+
+// receiverNormal: a mesh point's unit normal, or zero for a volume sample.
+vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance, vec3 receiverNormal)
 {
   vec3 d = position - u_shadowOrigin[slot];
   vec3 forward = u_shadowForward[slot], right = u_shadowRight[slot], up = u_shadowUp[slot];
@@ -63,28 +130,13 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
     right = normalize(cross(forward, helper));
     up = cross(right, forward);
   }
-  float z = dot(d, forward);
-  float u, v, depth;
-  if (u_shadowPerspective[slot] != 0)
+  vec3 at;
+  if (!lightSpaceLocate(slot, d, forward, right, up, at))
   {
-    if (z <= 0.0)
-    {
-      return vec3(1.0);
-    }
-    u = dot(d, right) / (z * u_shadowExtent[slot]);
-    v = dot(d, up) / (z * u_shadowExtent[slot]);
-    depth = length(d) - u_shadowNear[slot];
+    return vec3(1.0);
   }
-  else
-  {
-    if (z < 0.0)
-    {
-      return vec3(1.0);
-    }
-    u = dot(d, right) / u_shadowExtent[slot];
-    v = dot(d, up) / u_shadowExtent[slot];
-    depth = z;
-  }
-  vec2 xy = 0.5 * (vec2(u, v) + 1.0) * u_shadowSize - 0.5;
-  return mapVisibility((slot * u_shadowFacesPerLight + face) * u_shadowLayersPerFace, xy, depth);
+  vec2 slope = receiverNormal != vec3(0.0)
+    ? lightSpaceReceiverSlope(slot, d, forward, right, up, at, receiverNormal)
+    : vec2(0.0);
+  return mapVisibility((slot * u_shadowFacesPerLight + face) * u_shadowLayersPerFace, at.xy, at.z, slope);
 }

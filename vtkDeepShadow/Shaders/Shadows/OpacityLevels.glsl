@@ -5,8 +5,9 @@
 //@Dec
 uniform vec3 u_levels;
 
-float levelsOpacity(int layer, ivec2 texel, float depth)
+float levelsOpacity(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
+  float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
   vec4 t = texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0);
   float opacity;
   if (depth < t.x)
@@ -28,10 +29,12 @@ float levelsOpacity(int layer, ivec2 texel, float depth)
   return min(opacity, t.w);
 }
 
-vec3 mapVisibility(int layer, vec2 xy, float depth)
+vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
   ivec2 i0;
   vec4 w = lightSpaceBilinear(xy, i0);
-  return vec3(1.0 - w.x * levelsOpacity(layer, i0, depth) - w.y * levelsOpacity(layer, i0 + ivec2(1, 0), depth) -
-    w.z * levelsOpacity(layer, i0 + ivec2(0, 1), depth) - w.w * levelsOpacity(layer, i0 + ivec2(1, 1), depth));
+  return vec3(1.0 - w.x * levelsOpacity(layer, i0, xy, depth, slope) -
+    w.y * levelsOpacity(layer, i0 + ivec2(1, 0), xy, depth, slope) -
+    w.z * levelsOpacity(layer, i0 + ivec2(0, 1), xy, depth, slope) -
+    w.w * levelsOpacity(layer, i0 + ivec2(1, 1), xy, depth, slope));
 }

@@ -3,7 +3,7 @@
 //@Dec
 uniform int u_shadowOpaque;
 
-vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
+vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance, vec3 receiverNormal)
 {
   return feelerTowardsLight(position, toLight, lightDistance, u_shadowOpaque != 0);
 }

@@ -1,5 +1,6 @@
 // Feature Shadow, common part: every technique's lookup defines
-//   vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance)
+//   vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
+//     vec3 receiverNormal)
 // (the light's visibility per colour channel), and this scales the light's contribution by
 // 1 - attenuation (1 - visibility), as deepshadow::ReferenceRenderer::MarchRay does. What
 // other volumes cast (OtherVolumeShadows) multiplies the visibility first: light crosses
@@ -11,12 +12,13 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
     {
       vec3 shadowPosition = position;
       float shadowDistance = lightDistance;
+      vec3 shadowNormal = vec3(0.0); // a volume sample
       //DeepShadow::MeshNormal::ShadowOffset
       bool shadowed = u_shadowSlot[i] >= 0;
       vec3 visibility = vec3(1.0);
       if (shadowed)
       {
-        visibility = lightVisibility(u_shadowSlot[i], shadowPosition, toLight, shadowDistance);
+        visibility = lightVisibility(u_shadowSlot[i], shadowPosition, toLight, shadowDistance, shadowNormal);
       }
       //DeepShadow::OtherVolumeShadows::Impl
       if (shadowed)

@@ -4,28 +4,29 @@
 //@Dec
 uniform float u_shadowBias; // world units
 
-float shadowLit(int layer, ivec2 texel, float depth)
+float shadowLit(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
+  float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
   return depth <= texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0).r ? 1.0 : 0.0;
 }
 
-float filteredShadow(int layer, vec2 xy, float depth)
+float filteredShadow(int layer, vec2 xy, float depth, vec2 slope)
 {
   ivec2 nearest = ivec2(floor(xy + 0.5));
 #if SHADOW_FILTER == 0
-  return shadowLit(layer, nearest, depth);
+  return shadowLit(layer, nearest, xy, depth, slope);
 #elif SHADOW_FILTER == 1
   ivec2 i0;
   vec4 w = lightSpaceBilinear(xy, i0);
-  return w.x * shadowLit(layer, i0, depth) + w.y * shadowLit(layer, i0 + ivec2(1, 0), depth) +
-    w.z * shadowLit(layer, i0 + ivec2(0, 1), depth) + w.w * shadowLit(layer, i0 + ivec2(1, 1), depth);
+  return w.x * shadowLit(layer, i0, xy, depth, slope) + w.y * shadowLit(layer, i0 + ivec2(1, 0), xy, depth, slope) +
+    w.z * shadowLit(layer, i0 + ivec2(0, 1), xy, depth, slope) + w.w * shadowLit(layer, i0 + ivec2(1, 1), xy, depth, slope);
 #elif SHADOW_FILTER == 2
   float sum = 0.0;
   for (int dj = -1; dj <= 1; ++dj)
   {
     for (int di = -1; di <= 1; ++di)
     {
-      sum += shadowLit(layer, nearest + ivec2(di, dj), depth);
+      sum += shadowLit(layer, nearest + ivec2(di, dj), xy, depth, slope);
     }
   }
   return sum / 9.0;
@@ -33,13 +34,13 @@ float filteredShadow(int layer, vec2 xy, float depth)
   float sum = 0.0;
   for (int k = 0; k < POISSON_TAPS; ++k)
   {
-    sum += shadowLit(layer, ivec2(floor(xy + POISSON_DISC[k] + 0.5)), depth);
+    sum += shadowLit(layer, ivec2(floor(xy + POISSON_DISC[k] + 0.5)), xy, depth, slope);
   }
   return sum / float(POISSON_TAPS);
 #endif
 }
 
-vec3 mapVisibility(int layer, vec2 xy, float depth)
+vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
-  return vec3(filteredShadow(layer, xy, depth - u_shadowBias));
+  return vec3(filteredShadow(layer, xy, depth - u_shadowBias, slope));
 }
