@@ -156,7 +156,7 @@ int TestShadowRebuilds(int, char*[])
   vtkNew<vtkDeepShadowOpacityLevelsTechnique> levels;
   vtkNew<vtkDeepShadowStochasticShadowMapTechnique> cssm;
   dsmColor->ColoredOn();
-  const char* lookups[] = { "filteredShadow", "dsmTexel", "levelsOpacity", "CSSM_OFFSET",
+  const char* lookups[] = { "filteredShadow", "dsmTexel", "levelsVisibility", "CSSM_OFFSET",
     "u_shadowVolume", "feelerTowardsLight" };
   const struct
   {
@@ -168,7 +168,7 @@ int TestShadowRebuilds(int, char*[])
   } techniques[] = {
     { dsm, "dsmTexel", false, [&] { dsm->SetEpsilon(0.05); }, nullptr },
     { dsmColor, "dsmTexel", true, [&] { dsmColor->SetLayers(4); }, nullptr },
-    { levels, "levelsOpacity", false, [&] { levels->SetLevels(0.2, 0.5, 0.8); }, nullptr },
+    { levels, "levelsVisibility", false, [&] { levels->SetLevels(0.2, 0.5, 0.8); }, nullptr },
     { cssm, "CSSM_OFFSET", true, [&] { cssm->SetSeed(3); }, [&] { cssm->SetOffsets(21); } },
   };
   double move = 0.0;

@@ -529,6 +529,10 @@ TEST(ClosedFormShadows, DeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("d
 // compare the receiver plane's depth there, not the point's (else the ground's own crossing
 // in the texels towards the light shadows it: 30 % darker, and the ball's shadow lost).
 TEST(ClosedFormShadows, StochasticShadowMapOnAGroundUnderABall) { CheckBallOnGround("cssm"); }
+// Three opacity levels interpolate smoothly between their depths: a mesh's step must not be
+// one of them (the ground's own step made the levels run from the ball to the ground, and
+// the ground under the ball read 1 - 0.9 instead of the ball's transmittance).
+TEST(ClosedFormShadows, OpacityLevelsOnAGroundUnderABall) { CheckBallOnGround("dsm3"); }
 
 // The caster's own samples: a slab lit at 30 degrees, T = (1 - a)^(depth / cos 30).
 TEST(ClosedFormShadows, RaysInsideASlab) { CheckSlabSelfShadow("rays"); }

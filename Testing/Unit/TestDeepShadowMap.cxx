@@ -400,6 +400,40 @@ TEST(OpacityLevels, MapsShadowBehindTheSlab)
   EXPECT_EQ(map->Bytes(), 32u * 32 * 16);
 }
 
+TEST(OpacityLevels, MeshStepsKeepTheMostOpaqueWhereItIs)
+{
+  // No step: 1 everywhere.
+  EXPECT_EQ(EvaluateSurfaceSteps(SurfaceStepsBuilder().Finish(), 1e30), 1.0);
+  // A glass's two faces (0.6 each) and an opaque ground: the back face folds into the front,
+  // the ground keeps its depth, so the ground itself reads the glass's 0.36.
+  SurfaceStepsBuilder glass;
+  glass.Add(10.0, 0.6);
+  glass.Add(11.0, 0.6);
+  glass.Add(30.0, 0.0);
+  const SurfaceSteps steps = glass.Finish();
+  EXPECT_EQ(EvaluateSurfaceSteps(steps, 9.0), 1.0);
+  EXPECT_NEAR(EvaluateSurfaceSteps(steps, 10.5), 0.36, 1e-6); // inside the glass: 0.6 exact
+  EXPECT_NEAR(EvaluateSurfaceSteps(steps, 29.0), 0.36, 1e-6);
+  EXPECT_EQ(EvaluateSurfaceSteps(steps, 30.0), 0.0);
+  EXPECT_EQ(glass.Transmittance(), 0.0);
+  // Two glasses (0.6 and 0.8 a face) over an opaque ground: the ground reads all four faces.
+  SurfaceStepsBuilder two;
+  for (const auto& [depth, transmission] : { std::pair{ 1.0, 0.6 }, { 2.0, 0.6 }, { 5.0, 0.8 }, { 6.0, 0.8 }, { 9.0, 0.0 } })
+  {
+    two.Add(depth, transmission);
+  }
+  EXPECT_NEAR(EvaluateSurfaceSteps(two.Finish(), 8.9), 0.6 * 0.6 * 0.8 * 0.8, 1e-6);
+  EXPECT_EQ(EvaluateSurfaceSteps(two.Finish(), 9.0), 0.0);
+  EXPECT_EQ(EvaluateSurfaceSteps(two.Finish(), 0.5), 1.0);
+  // An opaque mesh first: nothing after it matters, and its depth stays exact.
+  SurfaceStepsBuilder rod;
+  rod.Add(4.0, 0.0);
+  rod.Add(6.0, 0.0);
+  rod.Add(8.0, 0.5);
+  EXPECT_EQ(EvaluateSurfaceSteps(rod.Finish(), 3.9), 1.0);
+  EXPECT_EQ(EvaluateSurfaceSteps(rod.Finish(), 4.0), 0.0);
+}
+
 TEST(ShadowParameters, UnusableParametersAreRefusedWithAReason)
 {
   const Slab slab(0.3, glm::dvec3(1.0));

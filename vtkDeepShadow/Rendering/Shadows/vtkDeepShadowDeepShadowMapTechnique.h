@@ -73,7 +73,7 @@ protected:
 
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
-  int GetLayersPerFace() const override { return this->Layers; }
+  int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Layers; }
   bool DefersTexels() const override { return true; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;

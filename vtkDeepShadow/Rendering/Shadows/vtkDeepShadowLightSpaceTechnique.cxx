@@ -103,7 +103,7 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
     facesPerLight = std::max(facesPerLight, static_cast<int>(maps.Faces[slot].size()));
   }
   const unsigned int format = this->GetTexelFormat();
-  const int layersPerFace = this->GetLayersPerFace();
+  const int layersPerFace = this->GetLayersPerFace(context);
   const bool sameShape = maps.Texture && maps.Size == this->MapSize && maps.Format == format &&
     maps.LayersPerFace == layersPerFace;
   // Grow only: fewer shadow-casting lights keep the others' maps.

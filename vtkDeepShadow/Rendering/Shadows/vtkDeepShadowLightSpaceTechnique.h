@@ -45,8 +45,8 @@ protected:
 
   /** GL internal format of its texels (GL_R32F, GL_RG32F or GL_RGBA32F). */
   virtual unsigned int GetTexelFormat() const = 0;
-  /** Layers per face (deep shadow map nodes, stochastic photons). */
-  virtual int GetLayersPerFace() const { return 1; }
+  /** Layers per face (deep shadow map nodes, stochastic photons, opacity levels' mesh steps). */
+  virtual int GetLayersPerFace(const deepshadow::ShadowContext&) const { return 1; }
   /** Its build: the parts Dec and Texel of vtkDeepShadowLightSpaceCS.glsl's runtime Build. */
   virtual std::string GetBuildSource() const = 0;
   /** Its lookup, over Shadows/LightSpace.glsl. */

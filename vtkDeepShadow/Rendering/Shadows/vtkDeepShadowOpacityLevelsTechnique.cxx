@@ -47,6 +47,11 @@ unsigned int vtkDeepShadowOpacityLevelsTechnique::GetTexelFormat() const
   return GL_RGBA32F;
 }
 
+int vtkDeepShadowOpacityLevelsTechnique::GetLayersPerFace(const deepshadow::ShadowContext& context) const
+{
+  return context.Surfaces ? 2 : 1;
+}
+
 std::string vtkDeepShadowOpacityLevelsTechnique::GetBuildSource() const
 {
   return vtkDeepShadowOpacityLevelsBuild;

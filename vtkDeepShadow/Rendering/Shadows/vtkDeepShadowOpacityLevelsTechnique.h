@@ -8,7 +8,11 @@
  * 90 % by default) and the maximum opacity reached. The lookup follows the paper: 0 before
  * the first depth, a smoothstep in depth from one level to the next, the maximum from the
  * last depth on (never above it); bilinear across the four nearest texels. Grey only.
- * Memory: 16 bytes per texel. deepshadow::OpacityLevelsShadow is the CPU twin.
+ * Casting meshes (vtkDeepShadowPass) are steps, not volumes: the levels hold the volume
+ * alone, and the meshes' crossings go into a second texel as at most two steps (see
+ * deepshadow::SurfaceSteps); the visibility is the product of both.
+ * Memory: 16 bytes per texel, 32 with casting meshes. deepshadow::OpacityLevelsShadow is
+ * the CPU twin.
  */
 #ifndef vtkDeepShadowOpacityLevelsTechnique_h
 #define vtkDeepShadowOpacityLevelsTechnique_h
@@ -41,6 +45,8 @@ protected:
 
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
+  /** The levels, and with casting meshes their steps in a second texel. */
+  int GetLayersPerFace(const deepshadow::ShadowContext& context) const override;
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;

@@ -56,7 +56,7 @@ protected:
   std::vector<double> GetStructureKey() const override;
   std::vector<double> GetLookupKey() const override;
   unsigned int GetTexelFormat() const override;
-  int GetLayersPerFace() const override { return this->Photons; }
+  int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Photons; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;

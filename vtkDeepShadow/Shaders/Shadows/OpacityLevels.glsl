@@ -1,14 +1,16 @@
-// Lookup of "dsm3": 0 before the first level's depth, smoothstep in depth from level to
-// level, the maximum opacity after the last, never above it; bilinear across the four
-// nearest texels (EvaluateOpacityLevels and OpacityLevelsShadow::Visibility in
-// Core/Shadows/OpacityLevels.cxx are the CPU twins).
+// Lookup of "dsm3": the volume's opacity is 0 before the first level's depth, smoothstep in
+// depth from level to level, the maximum opacity after the last, never above it; with
+// casting meshes (a second layer) times their steps' visibility; bilinear across the four
+// nearest texels (EvaluateOpacityLevels, EvaluateSurfaceSteps and
+// OpacityLevelsShadow::MapVisibility in Core/Shadows/OpacityLevels.cxx are the CPU twins).
 //@Dec
 uniform vec3 u_levels;
 
-float levelsOpacity(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
+float levelsVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
-  vec4 t = texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0);
+  texel = lightSpaceClamp(texel);
+  vec4 t = texelFetch(u_shadowMap, ivec3(texel, layer), 0);
   float opacity;
   if (depth < t.x)
   {
@@ -26,15 +28,21 @@ float levelsOpacity(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slop
   {
     opacity = t.w;
   }
-  return min(opacity, t.w);
+  float visibility = 1.0 - min(opacity, t.w);
+  if (u_shadowLayersPerFace > 1)
+  {
+    vec4 steps = texelFetch(u_shadowMap, ivec3(texel, layer + 1), 0);
+    visibility *= depth < steps.x ? 1.0 : depth < steps.z ? steps.y : steps.w;
+  }
+  return visibility;
 }
 
 vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
   ivec2 i0;
   vec4 w = lightSpaceBilinear(xy, i0);
-  return vec3(1.0 - w.x * levelsOpacity(layer, i0, xy, depth, slope) -
-    w.y * levelsOpacity(layer, i0 + ivec2(1, 0), xy, depth, slope) -
-    w.z * levelsOpacity(layer, i0 + ivec2(0, 1), xy, depth, slope) -
-    w.w * levelsOpacity(layer, i0 + ivec2(1, 1), xy, depth, slope));
+  return vec3(w.x * levelsVisibility(layer, i0, xy, depth, slope) +
+    w.y * levelsVisibility(layer, i0 + ivec2(1, 0), xy, depth, slope) +
+    w.z * levelsVisibility(layer, i0 + ivec2(0, 1), xy, depth, slope) +
+    w.w * levelsVisibility(layer, i0 + ivec2(1, 1), xy, depth, slope));
 }
