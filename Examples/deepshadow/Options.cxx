@@ -166,11 +166,11 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   if (key == "--threshold-on")
   {
     const std::string mode = next();
-    if (mode != "opacity" && mode != "scalar")
+    if (mode != "accumulated" && mode != "opacity" && mode != "scalar")
     {
-      throw UsageError("--threshold-on must be opacity or scalar, got '" + mode + "'");
+      throw UsageError("--threshold-on must be accumulated, opacity or scalar, got '" + mode + "'");
     }
-    o.ThresholdOnScalar = mode == "scalar";
+    o.ThresholdOn = mode;
     return true;
   }
   if (key == "--shadow-step-factor")
@@ -375,9 +375,11 @@ RENDERING:
                           shadow map), dsm-color, dsm3 (opacity levels), cssm (coloured
                           stochastic shadow map); NAME-cached caches any of them in a 3D
                           shadow volume (e.g. dsm-cached)
-  --shadow-threshold T    opaque occluder threshold in [0, 1] (default 0.5): opacity, or
-                          the normalized scalar with --threshold-on scalar
-  --threshold-on opacity|scalar
+  --shadow-threshold T    rays-opaque, shadowmap: occluder threshold in [0, 1] (default 0.5)
+  --threshold-on accumulated|opacity|scalar
+                          what the threshold is compared with: the opacity accumulated
+                          along the light ray (default: a translucent body's hard shadow),
+                          each sample's opacity, or each sample's normalized scalar
   --shadow-step-factor F  feeler / light-ray step as a factor of the sample distance (default 1)
   --shadow-volume-size N  *-cached: shadow volume nodes along the longest axis (default
                           128 for rays, 64 for the map techniques)

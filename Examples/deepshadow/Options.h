@@ -75,7 +75,7 @@ struct Options
   std::string Technique = "none";
   // The technique's parameters: unset ones keep the technique's own defaults.
   std::optional<double> ShadowThreshold;
-  bool ThresholdOnScalar = false;
+  std::string ThresholdOn = "accumulated"; // accumulated | opacity | scalar
   std::optional<double> ShadowStepFactor;
   std::optional<int> ShadowVolumeSize;
   std::optional<int> ShadowMapSize;

@@ -170,8 +170,9 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
   {
     technique->SetThreshold(*options.ShadowThreshold);
   }
-  technique->SetThresholdMode(options.ThresholdOnScalar ? vtkDeepShadowTechnique::ScalarThreshold
-                                                        : vtkDeepShadowTechnique::OpacityThreshold);
+  technique->SetThresholdMode(options.ThresholdOn == "scalar" ? vtkDeepShadowTechnique::ScalarThreshold
+      : options.ThresholdOn == "opacity"                     ? vtkDeepShadowTechnique::OpacityThreshold
+                                                             : vtkDeepShadowTechnique::AccumulatedThreshold);
   if (options.ShadowStepFactor)
   {
     technique->SetStepFactor(*options.ShadowStepFactor);

@@ -208,14 +208,21 @@ struct Stage
     return Grab(this->Window);
   }
   // The GPU picture of `technique` against its CPU twin within the stated tolerance.
-  bool MatchesTwin(const std::string& name, const Technique& technique, bool binary = false)
+  /**
+   * `flips`: whole pixels a binary technique may flip between float and double where a
+   * shadow's edge falls on its threshold; each adds its weight (1 / pixels) to the RMSE bound.
+   */
+  bool MatchesTwin(const std::string& name, const Technique& technique, bool binary = false, int flips = 0)
   {
     const Image gpu = this->Render(technique.Object);
     binary = binary || technique.Binary;
     const bool error = !this->Mapper->GetLastError().empty();
+    const double rmse = (binary ? 4.0 : 2.0) / 255.0;
+    const double pixels = static_cast<double>(gpu.Width) * gpu.Height;
     return Check(name + ": no mapper error", !error) &&
       deepshadow::testing::WithinTolerance(name.c_str(), gpu, deepshadow::testing::Reference(this->Renderer, true),
-        (binary ? 4.0 : 2.0) / 255.0, (binary ? 24.0 : 12.0) / 255.0, binary ? 0.03 : 0.01);
+        std::sqrt(rmse * rmse + (technique.Binary ? flips : 0) / pixels), (binary ? 24.0 : 12.0) / 255.0,
+        binary ? 0.03 : 0.01);
   }
 };
 }
@@ -498,7 +505,9 @@ int TestStiffCasesGPU(int, char*[])
       for (const Technique& t : EveryTechnique())
       {
         const std::string what = std::string(spacing == needle ? "needle 1:1000, " : "pancake 1000:1, ") + t.Name;
-        ok = stage.MatchesTwin(what, t, spacing == needle) && ok;
+        // Binary techniques on the needle accumulate ~20 samples of 250 units each to their
+        // threshold at the ball's edge: two edge pixels flip between float and double.
+        ok = stage.MatchesTwin(what, t, spacing == needle, spacing == needle ? 2 : 0) && ok;
         ok = Check(what + ": drawn", deepshadow::testing::CoveredFraction(Grab(stage.Window), stage.Background) > 0.2) && ok;
       }
     }

@@ -346,7 +346,12 @@ Outcome CheckAgainstClosedForm(const std::string& what, const Body& body, const 
       {
         // 0 where the accumulated opacity exceeds the threshold, 1 where it does not; only
         // where the closed form is on one side over the whole footprint.
-        const double opacity = 1.0 - exact[c], margin = tolerance + spread[c];
+        // A shadow map compares the point's depth less its bias: the closed form that far
+        // towards the light differs by as much as one more stretch of medium lets through.
+        const double bias = parameters.Kind == ShadowKind::ShadowMap
+          ? exact[c] * (std::exp(sigma * parameters.Bias * step) - 1.0)
+          : 0.0;
+        const double opacity = 1.0 - exact[c], margin = tolerance + spread[c] + bias;
         if (std::abs(opacity - parameters.Threshold) <= margin)
         {
           continue;
@@ -533,6 +538,8 @@ TEST(ClosedFormShadows, StochasticShadowMapOnAGroundUnderABall) { CheckBallOnGro
 // one of them (the ground's own step made the levels run from the ball to the ground, and
 // the ground under the ball read 1 - 0.9 instead of the ball's transmittance).
 TEST(ClosedFormShadows, OpacityLevelsOnAGroundUnderABall) { CheckBallOnGround("dsm3"); }
+TEST(ClosedFormShadows, ShadowMapOnAGroundUnderABall) { CheckBallOnGround("shadowmap"); }
+TEST(ClosedFormShadows, OpaqueRaysOnAGroundUnderABall) { CheckBallOnGround("rays-opaque"); }
 
 // The caster's own samples: a slab lit at 30 degrees, T = (1 - a)^(depth / cos 30).
 TEST(ClosedFormShadows, RaysInsideASlab) { CheckSlabSelfShadow("rays"); }
@@ -541,24 +548,29 @@ TEST(ClosedFormShadows, DeepShadowMapInsideASlab) { CheckSlabSelfShadow("dsm"); 
 TEST(ClosedFormShadows, CachedDeepShadowMapInsideASlab) { CheckSlabSelfShadow("dsm-cached"); }
 TEST(ClosedFormShadows, OpacityLevelsInsideASlab) { CheckSlabSelfShadow("dsm3"); }
 TEST(ClosedFormShadows, StochasticShadowMapInsideASlab) { CheckSlabSelfShadow("cssm"); }
+// Binary techniques: the hard shadow of a thick translucent body (every sample's opacity is
+// 0.06, far below the threshold 0.5; the accumulated opacity is not).
+TEST(ClosedFormShadows, ShadowMapInsideASlab) { CheckSlabSelfShadow("shadowmap"); }
+TEST(ClosedFormShadows, OpaqueRaysInsideASlab) { CheckSlabSelfShadow("rays-opaque"); }
 
 // What one volume casts onto another, through the receiver's grid.
 TEST(ClosedFormShadows, RaysOnASecondVolume) { CheckBallOnSecondVolume("rays"); }
 TEST(ClosedFormShadows, DeepShadowMapOnASecondVolume) { CheckBallOnSecondVolume("dsm"); }
 TEST(ClosedFormShadows, OpacityLevelsOnASecondVolume) { CheckBallOnSecondVolume("dsm3"); }
 TEST(ClosedFormShadows, StochasticShadowMapOnASecondVolume) { CheckBallOnSecondVolume("cssm"); }
+TEST(ClosedFormShadows, ShadowMapOnASecondVolume) { CheckBallOnSecondVolume("shadowmap"); }
 
 // Positional lights: inside the medium (cube faces), and a spot above it.
 TEST(ClosedFormShadows, PointLightInAMedium)
 {
-  for (const char* name : { "rays", "rays-cached", "dsm", "dsm-cached", "dsm3", "cssm" })
+  for (const char* name : { "rays", "rays-cached", "dsm", "dsm-cached", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     CheckMediumWithPositionalLight(name, false);
   }
 }
 TEST(ClosedFormShadows, SpotLightAboveAMedium)
 {
-  for (const char* name : { "rays", "dsm", "dsm3", "cssm" })
+  for (const char* name : { "rays", "dsm", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     CheckMediumWithPositionalLight(name, true);
   }

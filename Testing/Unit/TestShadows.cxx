@@ -52,6 +52,13 @@ TEST(Shadows, OpaqueFeelerIsBinaryAtTheThreshold)
   ShadowParameters p;
   p.Kind = ShadowKind::Rays;
   p.Opaque = true;
+  // By default on the accumulated opacity: the slab lets through 0.7^5 = 0.168 (1 - 0.832).
+  p.Threshold = 0.8;
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), glm::dvec3(0.0));
+  p.Threshold = 0.85;
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), glm::dvec3(1.0));
+  // Per sample: each has opacity 0.3 per unit.
+  p.Mode = ThresholdMode::Opacity;
   p.Threshold = 0.2;
   EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, p), glm::dvec3(0.0));
   p.Threshold = 0.4; // above the slab's opacity

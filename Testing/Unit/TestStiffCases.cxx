@@ -728,10 +728,13 @@ TEST(StiffCases, ShadowMapsHoldForNearFarRatiosOfAMillion)
   const Caster caster{ Grid(glm::ivec3(17), glm::dvec3(1.0 / 16), [](int i, int j, int k) {
     return glm::length(glm::dvec3(i, j, k) - 8.0) < 5.0 ? 1.0f : 0.0f;
   }), Medium(0.9, 0.5, 0.0) };
+  // Depth precision of a hard surface: the ball's first sample is the occluder.
   ShadowParameters map = Technique(ShadowKind::ShadowMap);
   map.MapSize = 128;
   map.Filter = ShadowFilter::None;
-  const ShadowParameters opaque = Technique(ShadowKind::Rays, false, false, true);
+  map.Mode = ThresholdMode::Opacity;
+  ShadowParameters opaque = Technique(ShadowKind::Rays, false, false, true);
+  opaque.Mode = ThresholdMode::Opacity;
   for (const Light& light : { Positional({ 0.5, 0.5, 1.0 + 1e-6 }), Positional({ 0.5, 0.5, 0.5 + 1e6 }) })
   {
     const double step = 1.0 / 64;

@@ -117,10 +117,16 @@ TEST(SurfaceShadows, FeelerMeetsSurfacesInsideAndOutsideTheVolume)
   // From below the box: the samples start at its entry, not at the point.
   EXPECT_NEAR(FeelerVisibility(scene.Caster, { 10, 10, -7 }, { 0, 0, 1 }, 1e300, 0.5, p).r,
     std::pow(0.7, 5.0) * 0.5 * 0.8, 1e-12);
-  // Opaque rays: a sheet whose opacity exceeds the threshold is a full occluder.
+  // Opaque rays, by default on the accumulated opacity (sheets included): 1 - 0.0672.
   ShadowParameters opaque;
   opaque.Kind = ShadowKind::Rays;
   opaque.Opaque = true;
+  opaque.Threshold = 0.9;
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, opaque), glm::dvec3(0.0));
+  opaque.Threshold = 0.95;
+  EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, opaque), glm::dvec3(1.0));
+  // Per sample: a sheet whose opacity exceeds the threshold is a full occluder.
+  opaque.Mode = ThresholdMode::Opacity;
   opaque.Threshold = 0.4; // above the slab's 0.3
   EXPECT_EQ(FeelerVisibility(scene.Caster, { 10, 10, 2 }, { 0, 0, 1 }, 1e300, 0.5, opaque), glm::dvec3(0.0));
   opaque.Threshold = 0.6;

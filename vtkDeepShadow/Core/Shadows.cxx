@@ -126,6 +126,31 @@ bool ShadowCaster::AboveThreshold(double scalar, double step, const ShadowParame
   return this->Transfer->Opacity.Evaluate(scalar) > parameters.Threshold;
 }
 
+bool OccluderTest::Sample(double scalar)
+{
+  if (this->Parameters.Mode == ThresholdMode::Accumulated)
+  {
+    return this->Transmission(1.0 - this->Caster.Sample(scalar, this->Step).a);
+  }
+  return this->Caster.AboveThreshold(scalar, this->Step, this->Parameters);
+}
+
+bool OccluderTest::Surface(int surface)
+{
+  const SurfaceMaterial& material = this->Caster.Surfaces->GetSurface(surface).Material;
+  if (this->Parameters.Mode == ThresholdMode::Accumulated)
+  {
+    return this->Transmission(SurfaceTransmission(material, false).r);
+  }
+  return material.Opacity > this->Parameters.Threshold;
+}
+
+bool OccluderTest::Transmission(double transmission)
+{
+  this->Transmittance *= transmission;
+  return 1.0 - this->Transmittance > this->Parameters.Threshold;
+}
+
 double DistanceToLight(const Light& light, const glm::dvec3& p)
 {
   return light.Positional ? glm::length(light.Position - p) : std::numeric_limits<double>::infinity();
@@ -135,11 +160,15 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   const glm::dvec3& toLight, double maxDistance, double step, const ShadowParameters& parameters)
 {
   glm::dvec3 transmittance(1.0);
+  OccluderTest occluder(caster, parameters, step);
   if (caster.Surfaces && !caster.Surfaces->Empty())
   {
     if (parameters.Opaque)
     {
-      if (caster.Surfaces->Occludes(from, toLight, 0.0, maxDistance, parameters.Threshold))
+      const bool blocked = parameters.Mode == ThresholdMode::Accumulated
+        ? occluder.Transmission(caster.Surfaces->Transmittance(from, toLight, 0.0, maxDistance, false).r)
+        : caster.Surfaces->Occludes(from, toLight, 0.0, maxDistance, parameters.Threshold);
+      if (blocked)
       {
         return glm::dvec3(0.0);
       }
@@ -201,7 +230,7 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
     const double scalar = grid.Sample(index, caster.Sampling);
     if (parameters.Opaque)
     {
-      if (caster.AboveThreshold(scalar, step, parameters))
+      if (occluder.Sample(scalar))
       {
         return glm::dvec3(0.0);
       }

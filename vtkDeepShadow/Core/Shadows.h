@@ -7,7 +7,8 @@
 //     its samples, alpha corrected for the feeler's step exactly as on the view ray; coloured,
 //     (1 - alpha (1 - c)) per channel with c the sample's colour (its transmission). With exact
 //     transfer functions, a fine step and no early termination this is the ground truth.
-//   - Rays, opaque ("B"): 0 as soon as a feeler sample exceeds the threshold, else 1.
+//   - Rays, opaque ("B"): 0 as soon as the feeler meets an occluder (OccluderTest: by default
+//     once its accumulated opacity exceeds the threshold), else 1.
 //   - Casting surfaces (ShadowCaster::Surfaces) are steps on every technique's light rays.
 //   - Light-space maps (Shadows/LightSpace.h), one file each in Shadows/: shadow map ("B"),
 //     deep shadow map (a visibility function per texel compressed within epsilon), opacity
@@ -56,10 +57,17 @@ enum class ShadowFilter
   Poisson  // 12 taps of a Poisson disc of radius 2 texels, equal weights
 };
 
+/** Where binary techniques (opaque rays, shadow maps) put an occluder along a light ray. */
 enum class ThresholdMode
 {
-  Opacity, // the transfer function's opacity (per unit distance) exceeds the threshold
-  Scalar   // the scalar, normalized to [0, 1] over the data range, exceeds it
+  /**
+   * Where the opacity accumulated along the light ray, 1 - transmittance (meshes included),
+   * first exceeds the threshold: a thick translucent body casts the hard shadow of its
+   * bulk, whatever opacity each of its samples has (the default).
+   */
+  Accumulated,
+  Opacity, // a sample whose transfer-function opacity (per unit distance) exceeds it
+  Scalar   // a sample whose scalar, normalized to [0, 1] over the data range, exceeds it
 };
 
 /** Everything a technique's result depends on besides the volume and the light. */
@@ -68,7 +76,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   ShadowKind Kind = ShadowKind::None;
   double StepFactor = 1.0;  // feeler (and light-ray) step / view step
   double Threshold = 0.5;   // opaque rays and shadow maps, in [0, 1]
-  ThresholdMode Mode = ThresholdMode::Opacity;
+  ThresholdMode Mode = ThresholdMode::Accumulated;
   /** One visibility per colour channel (rays, deep shadow maps; CSSM always is). */
   bool Colored = false;
   /** Evaluated once per node of a shadow volume over the box, then trilinear ("PP"). */
@@ -77,7 +85,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   int MapSize = 512;        // light-space maps: texels per side
 
   // Rays.
-  bool Opaque = false;      // binary at the first sample above the threshold
+  bool Opaque = false;      // binary: blocked at the first occluder (see ThresholdMode)
   /** Stop a feeler once its transmittance is below ShadowTerminationTransmittance. */
   bool EarlyTermination = true;
 
@@ -142,8 +150,34 @@ struct ShadowCaster
 
   /** Colour (transmission) and opacity corrected for `step` at `scalar`. */
   glm::dvec4 Sample(double scalar, double step) const;
-  /** Whether the sample at `scalar` is an opaque occluder for `parameters`. */
+  /** Whether the sample at `scalar` is above a per-sample threshold (Opacity, Scalar modes). */
   bool AboveThreshold(double scalar, double step, const ShadowParameters& parameters) const;
+};
+
+/**
+ * The binary techniques' test along one light ray, in the ray's order: whether the light is
+ * blocked once a sample or a mesh crossing counts (ThresholdMode). The twin of the GLSL
+ * feeler's opaque branch and of ShadowMapBuild.glsl.
+ */
+class VTKDEEPSHADOWCORE_EXPORT OccluderTest
+{
+public:
+  OccluderTest(const ShadowCaster& caster, const ShadowParameters& parameters, double step)
+    : Caster(caster)
+    , Parameters(parameters)
+    , Step(step)
+  {
+  }
+  bool Sample(double scalar);
+  bool Surface(int surface);
+  /** Counts what meshes let through at once (grey), for a ray that meets them first. */
+  bool Transmission(double transmission);
+
+private:
+  const ShadowCaster& Caster;
+  const ShadowParameters& Parameters;
+  double Step;
+  double Transmittance = 1.0;
 };
 
 /** How much of one light reaches a point. */

@@ -83,10 +83,11 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
   const EmptySpaceMap* empty = parameters.Mode == ThresholdMode::Scalar ? nullptr : caster.Empty;
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
     float& depth = this->Depths[this->Texel(f, x, y)];
+    OccluderTest occluder(caster, parameters, step);
     MarchTexelRay(
       caster, origin, direction, step, empty,
       [&](long, double t, double scalar, bool skipped) {
-        if (!skipped && caster.AboveThreshold(scalar, step, parameters))
+        if (!skipped && occluder.Sample(scalar))
         {
           depth = static_cast<float>(t);
           return false;
@@ -94,7 +95,7 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
         return true;
       },
       [&](double t, int surface) {
-        if (caster.Surfaces->GetSurface(surface).Material.Opacity > parameters.Threshold)
+        if (occluder.Surface(surface))
         {
           depth = static_cast<float>(t);
           return false;

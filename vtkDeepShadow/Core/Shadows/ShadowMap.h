@@ -1,6 +1,7 @@
-// Shadow maps ("B" of Ropinski et al.), CPU twin: per texel the depth of the first sample
-// above the threshold; a point is lit where its depth minus the bias is not behind it,
-// percentage-closer filtered. GLSL twins: Shaders/Shadows/ShadowMap.glsl (lookup) and
+// Shadow maps ("B" of Ropinski et al.), CPU twin: per texel the depth of the first occluder
+// along its ray (OccluderTest: by default where the accumulated opacity first exceeds the
+// threshold; or the first sample above it); a point is lit where its depth minus the bias is
+// not behind it, percentage-closer filtered. GLSL twins: Shaders/Shadows/ShadowMap.glsl (lookup) and
 // Shaders/Shadows/ShadowMapBuild.glsl (build).
 #ifndef deepshadow_ShadowMap_h
 #define deepshadow_ShadowMap_h

@@ -126,7 +126,8 @@ void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parame
   parameters.StepFactor = this->StepFactor;
   parameters.Threshold = this->Threshold;
   parameters.Mode = this->ThresholdMode == ScalarThreshold ? deepshadow::ThresholdMode::Scalar
-                                                           : deepshadow::ThresholdMode::Opacity;
+    : this->ThresholdMode == OpacityThreshold              ? deepshadow::ThresholdMode::Opacity
+                                                           : deepshadow::ThresholdMode::Accumulated;
   parameters.Cached = this->Cached;
   parameters.VolumeSize = this->ShadowVolumeSize;
 }
@@ -438,16 +439,15 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
   deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) const
 {
   const double step = this->FeelerStep(context);
-  const bool onScalar = this->ThresholdMode == ScalarThreshold;
   const deepshadow::ShadowParameters parameters = this->GetParameters();
   sink.Set("u_feelerTable", this->Impl->FeelerTable->GetTextureUnit());
   sink.Set("u_feelerStep", static_cast<float>(step));
-  // Opacity thresholds are compared with the table's step-corrected opacity.
+  // Per-sample opacity thresholds are compared with the table's step-corrected opacity.
   sink.Set("u_feelerThreshold",
-    static_cast<float>(onScalar
-        ? this->Threshold
-        : deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)));
-  sink.Set("u_feelerThresholdOnScalar", onScalar ? 1 : 0);
+    static_cast<float>(parameters.Mode == deepshadow::ThresholdMode::Opacity
+        ? deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)
+        : this->Threshold));
+  sink.Set("u_feelerThresholdMode", static_cast<int>(parameters.Mode));
   sink.Set("u_scalarRange", glm::vec2(context.Range));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);
@@ -457,8 +457,8 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
   }
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
   // shadows are cast by another transfer function than the one the blocks were found for.
-  const bool opaqueOnScalar =
-    onScalar && (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
+  const bool opaqueOnScalar = parameters.Mode == deepshadow::ThresholdMode::Scalar &&
+    (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
   sink.Set("u_feelerSkipEmpty", context.Occupancy && this->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
 }
 
@@ -564,7 +564,10 @@ void vtkDeepShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Technique: " << this->GetName() << "\n";
   os << indent << "StepFactor: " << this->StepFactor << "\n";
   os << indent << "Threshold: " << this->Threshold
-     << (this->ThresholdMode == ScalarThreshold ? " (scalar)" : " (opacity)") << "\n";
+     << (this->ThresholdMode == ScalarThreshold ? " (scalar)"
+          : this->ThresholdMode == OpacityThreshold ? " (opacity)"
+                                                    : " (accumulated opacity)")
+     << "\n";
   os << indent << "Cached: " << this->Cached << " (" << this->ShadowVolumeSize << " nodes)\n";
   os << indent << "ShadowProperty: " << this->ShadowProperty << "\n";
   os << indent << "BuildCount: " << this->BuildCount << "\n";

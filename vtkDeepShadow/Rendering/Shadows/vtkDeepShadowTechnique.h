@@ -70,21 +70,29 @@ public:
 
   ///@{
   /**
-   * Where a sample becomes an opaque occluder (opaque rays, shadow maps): its opacity, or its
-   * scalar normalized to [0, 1] over the data range, exceeds this (default 0.5). Values
-   * outside [0, 1] are clamped with a warning.
+   * Where binary techniques (opaque rays, shadow maps) put an occluder along a light ray
+   * (default 0.5; values outside [0, 1] are clamped with a warning). ThresholdMode says what
+   * is compared with it:
+   * - AccumulatedThreshold (default): the opacity accumulated along the light ray,
+   *   1 - transmittance, casting meshes included. A thick translucent body (a CT volume with
+   *   a soft transfer function) casts the hard shadow of its bulk.
+   * - OpacityThreshold: each sample's transfer-function opacity (per unit distance), each
+   *   mesh's opacity: only samples denser than the threshold cast.
+   * - ScalarThreshold: each sample's scalar, normalized to [0, 1] over the data range.
    */
   void SetThreshold(double threshold);
   vtkGetMacro(Threshold, double);
   enum ThresholdModes
   {
     OpacityThreshold = 0,
-    ScalarThreshold = 1
+    ScalarThreshold = 1,
+    AccumulatedThreshold = 2
   };
-  vtkSetClampMacro(ThresholdMode, int, OpacityThreshold, ScalarThreshold);
+  vtkSetClampMacro(ThresholdMode, int, OpacityThreshold, AccumulatedThreshold);
   vtkGetMacro(ThresholdMode, int);
   void SetThresholdModeToOpacity() { this->SetThresholdMode(OpacityThreshold); }
   void SetThresholdModeToScalar() { this->SetThresholdMode(ScalarThreshold); }
+  void SetThresholdModeToAccumulated() { this->SetThresholdMode(AccumulatedThreshold); }
   ///@}
 
   ///@{
@@ -244,7 +252,7 @@ protected:
 
   double StepFactor = 1.0;
   double Threshold = 0.5;
-  int ThresholdMode = OpacityThreshold;
+  int ThresholdMode = AccumulatedThreshold;
   bool Cached = false;
   int ShadowVolumeSize = 128;
   vtkVolumeProperty* ShadowProperty = nullptr;

@@ -1,16 +1,20 @@
 // Feature Feeler: the march from a point towards a light through the volume (the shadow-ray
 // technique, per sample or per cache node; deepshadow::FeelerVisibility in Core/Shadows.cxx
-// is the CPU twin), and the sample lookups of the light-space builds. Samples sit at (j + 0.5) * u_feelerStep from the start; colour and opacity come
-// from u_feelerTable, opacity corrected for that step. Opaque: 0 at the first sample above
-// the threshold; translucent: the product of (1 - alpha), or per channel of
-// (1 - alpha (1 - colour)) when coloured (feature FeelerColored), stopped once below
-// u_feelerTermination (0: never).
+// is the CPU twin), and the sample lookups of the light-space builds. Samples sit at
+// (j + 0.5) * u_feelerStep from the start; colour and opacity come from u_feelerTable,
+// opacity corrected for that step. Opaque: 0 at the first occluder (deepshadow::OccluderTest:
+// where the accumulated opacity exceeds the threshold, or the first sample above it);
+// translucent: the product of (1 - alpha), or per channel of (1 - alpha (1 - colour)) when
+// coloured (feature FeelerColored), stopped once below u_feelerTermination (0: never).
 //@Dec
 //DeepShadow::FeelerColored::Dec
 uniform sampler2D u_feelerTable;   // RGBA table; alpha = opacity corrected for u_feelerStep
 uniform float u_feelerStep;        // world units
-uniform float u_feelerThreshold;   // corrected opacity, or normalized scalar
-uniform int u_feelerThresholdOnScalar;
+uniform float u_feelerThreshold;   // accumulated opacity, corrected opacity or normalized scalar
+uniform int u_feelerThresholdMode; // deepshadow::ThresholdMode
+const int ThresholdAccumulated = 0;
+const int ThresholdOpacity = 1;
+const int ThresholdScalar = 2;
 uniform vec2 u_scalarRange;
 uniform float u_feelerTermination; // transmittance at which translucent feelers stop
 uniform int u_feelerSkipEmpty;     // may skip empty blocks (see SetFeelerUniforms)
@@ -48,20 +52,41 @@ float feelerLargest(float transmittance)
 }
 #endif
 
-bool feelerAbove(float scalar)
+// deepshadow::OccluderTest: whether a light ray that has let through `transmittance` so far
+// is blocked once a sample or mesh crossing counts that lets through `transmission` (grey)
+// and is `above` a per-sample threshold on its own: the accumulated opacity decides in the
+// accumulated mode, `above` in the others.
+bool occluderCounts(float transmission, bool above, inout float transmittance)
 {
-  if (u_feelerThresholdOnScalar != 0)
+  if (u_feelerThresholdMode == ThresholdAccumulated)
+  {
+    transmittance *= transmission;
+    return 1.0 - transmittance > u_feelerThreshold;
+  }
+  return above;
+}
+
+bool feelerOccludes(float scalar, inout float transmittance)
+{
+  bool above;
+  if (u_feelerThresholdMode == ThresholdScalar)
   {
     float width = u_scalarRange.y > u_scalarRange.x ? u_scalarRange.y - u_scalarRange.x : 1.0;
-    return (scalar - u_scalarRange.x) / width > u_feelerThreshold;
+    above = (scalar - u_scalarRange.x) / width > u_feelerThreshold;
   }
-  return feelerAlpha(scalar) > u_feelerThreshold;
+  else
+  {
+    above = feelerAlpha(scalar) > u_feelerThreshold;
+  }
+  return occluderCounts(1.0 - feelerAlpha(scalar), above, transmittance);
 }
 
 // From voxel index `start` along index-space direction `indexDirection` (per world unit), the
 // samples at (j + 0.5) * u_feelerStep in [tStart, tEnd) (world distances). `opaque`: binary
-// visibility; else the transmittance.
-vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd, bool opaque)
+// visibility, the ray having let through `occluderTransmittance` before (what meshes let
+// through, for the accumulated threshold); else the transmittance.
+vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd, bool opaque,
+  float occluderTransmittance)
 {
   FeelerTransmittance transmittance = FeelerTransmittance(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
@@ -79,7 +104,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     float scalar = sampleScalar(sampleIndex);
     if (opaque)
     {
-      if (feelerAbove(scalar))
+      if (feelerOccludes(scalar, occluderTransmittance))
       {
         return vec3(0.0);
       }
@@ -105,5 +130,10 @@ vec3 feelerTowardsLight(vec3 position, vec3 toLight, float lightDistance, bool o
   //DeepShadow::Surfaces::Feeler
   vec2 box = boxInterval(start, indexDirection);
   float tEnd = min(box.y, lightDistance);
-  return vec3(surfaces) * feelerVisibility(start, indexDirection, box.x, tEnd, opaque);
+  if (opaque)
+  {
+    // Binary: meshes are part of the test (accumulated) or stopped it already.
+    return feelerVisibility(start, indexDirection, box.x, tEnd, true, feelerLargest(surfaces));
+  }
+  return vec3(surfaces) * feelerVisibility(start, indexDirection, box.x, tEnd, false, 1.0);
 }

@@ -23,7 +23,9 @@ float surfaceNextHit(vec3 origin, vec3 direction, float tAfter, out int surface)
   return t;
 }
 
-bool surfaceOccludes(int surface)
+// A mesh above the per-sample threshold (binary techniques; occluderCounts in Feeler.glsl
+// applies the threshold mode).
+bool surfaceAboveThreshold(int surface)
 {
   return 1.0 - u_surfaceTransmission[surface].a > u_surfaceThreshold;
 }
@@ -36,10 +38,12 @@ bool surfaceOccludes(int surface)
     {
       if (opaque)
       {
-        if (surfaceOccludes(surface))
+        float grey = feelerLargest(surfaces);
+        if (occluderCounts(u_surfaceTransmission[surface].a, surfaceAboveThreshold(surface), grey))
         {
           return vec3(0.0);
         }
+        surfaces = FeelerTransmittance(grey);
         continue;
       }
 #ifdef FEELER_COLORED
