@@ -227,26 +227,6 @@ struct Stage
 };
 }
 
-// BUG (reported): float volumes whose range is not a moderate float interval are drawn wrong:
-// the mapper uploads float scalars as they are (R32F) and maps them to the transfer table
-// with u_tableMap = (4095 / 4096 / (max - min), ...) as a float uniform, which overflows to
-// inf for a denormal range (1e-39: scale 1e39) and is itself denormal, so flushed to 0, for
-// +-FLT_MAX (scale 1.5e-39); llvmpipe also flushes denormal texels to 0. The CPU twin works
-// in double and is right. (vtkDeepShadowVolumeMapper.cxx, the float upload and
-// TransferTable::CoordinateMap; normalizing float data to [0, 1] before the upload, as the
-// 16-bit paths do, would fix both.) Set this to true once fixed.
-constexpr bool FloatRangesFixed = false;
-
-bool KnownBug(bool fixed, const std::string& what, bool good)
-{
-  if (!good && !fixed)
-  {
-    std::printf("%-60s KNOWN BUG (reported), not counted\n", what.c_str());
-    return true;
-  }
-  return good;
-}
-
 bool KnownLimit(const std::string& what, bool good)
 {
   if (!good)
@@ -665,7 +645,7 @@ int TestStiffCasesGPU(int, char*[])
       const bool twin = stage.MatchesTwin(std::string(kind.Name) + ", dsm", dsm);
       const bool same = deepshadow::testing::WithinTolerance((std::string(kind.Name) + " vs unsigned char").c_str(),
         Grab(stage.Window), expected, 2.0 / 255.0, 12.0 / 255.0, 0.01);
-      ok = (kind.Type == VTK_FLOAT ? KnownBug(FloatRangesFixed, kind.Name, twin && same) : twin && same) && ok;
+      ok = twin && same && ok;
     }
     auto broken = MakeVolume(dims, unit, VTK_FLOAT, [&](int i, int j, int k) { return 200.0 * shape(i, j, k); });
     auto* values = static_cast<float*>(broken->GetScalarPointer());

@@ -113,7 +113,8 @@ public:
   bool VolumeReplaceNonFinite = false;
   glm::ivec3 Dims{ 0 };
   glm::dvec2 Range{ 0.0 };
-  glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel value -> scalar
+  glm::dvec2 ScalarMap{ 1.0, 0.0 };    // texel value -> the shaders' scalar
+  glm::dvec2 ShaderScalar{ 1.0, 0.0 }; // data scalar -> the shaders' scalar (ShadowContext)
   double EffectiveStep = 0.0; // world sample distance of the last frame
   deepshadow::BlockRanges Blocks;
   std::string DataError;
@@ -516,8 +517,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
       vtkDataArray* scalars = input->GetPointData()->GetScalars();
       impl.Volume = NewTexture(window);
       std::vector<uint16_t> shifted;
+      std::vector<float> normalized;
       const void* texels = scalars->GetVoidPointer(0);
       int vtkType = scalars->GetDataType();
+      impl.ShaderScalar = { 1.0, 0.0 };
       switch (vtkType)
       {
         case VTK_UNSIGNED_CHAR:
@@ -543,11 +546,24 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
           impl.ScalarMap = { 65535.0, -32768.0 };
           break;
         }
-        default: // float: the checked (and, if asked, repaired) copy
-          texels = grid->GetScalars().data();
+        default:
+        {
+          // Float: the checked (and, if asked, repaired) copy, normalized to [0, 1] in double,
+          // so that a denormal range or one spanning +-FLT_MAX is mapped without overflow or
+          // flushing (the shaders' scalar is the normalized one: ShadowContext::ShaderScalar).
+          const double low = impl.Range.x, width = impl.Range.y > impl.Range.x ? impl.Range.y - impl.Range.x : 1.0;
+          const std::vector<float>& values = grid->GetScalars();
+          normalized.resize(values.size());
+          for (size_t i = 0; i < values.size(); ++i)
+          {
+            normalized[i] = static_cast<float>((static_cast<double>(values[i]) - low) / width);
+          }
+          texels = normalized.data();
           impl.Volume->SetInternalFormat(GL_R32F);
           impl.ScalarMap = { 1.0, 0.0 };
+          impl.ShaderScalar = { 1.0 / width, -low / width };
           break;
+        }
       }
       impl.Volume->Create3DFromRaw(static_cast<unsigned int>(impl.Dims.x), static_cast<unsigned int>(impl.Dims.y),
         static_cast<unsigned int>(impl.Dims.z), 1, vtkType, const_cast<void*>(texels));
@@ -662,6 +678,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   context.Dims = impl.Dims;
   context.Range = impl.Range;
   context.ScalarMap = impl.ScalarMap;
+  context.ShaderScalar = impl.ShaderScalar;
   context.TableMap = impl.Table.CoordinateMap();
   context.TableSize = this->TransferTableSize;
   context.Sampling = filter == vtkTextureObject::Nearest ? deepshadow::Interpolation::Nearest

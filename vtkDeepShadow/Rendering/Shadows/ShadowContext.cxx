@@ -136,11 +136,23 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   }
 }
 
+glm::dvec2 ShadowContext::ShaderTableMap() const
+{
+  // coordinate = scalar * TableMap.x + TableMap.y, scalar = (s - ShaderScalar.y) / ShaderScalar.x
+  const double scale = this->TableMap.x / this->ShaderScalar.x;
+  return { scale, this->TableMap.y - this->ShaderScalar.y * scale };
+}
+
+glm::dvec2 ShadowContext::ShaderRange() const
+{
+  return this->Range * this->ShaderScalar.x + this->ShaderScalar.y;
+}
+
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
 {
   sink.Set("u_volume", this->Volume->GetTextureUnit());
   sink.Set("u_scalarMap", glm::vec2(this->ScalarMap));
-  sink.Set("u_tableMap", glm::vec2(this->TableMap));
+  sink.Set("u_tableMap", glm::vec2(this->ShaderTableMap()));
   sink.Set("u_dims", glm::vec3(this->Dims));
   sink.Set("u_worldToIndex", glm::mat4(this->WorldToIndex));
   if (this->Occupancy)

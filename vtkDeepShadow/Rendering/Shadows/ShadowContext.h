@@ -89,8 +89,19 @@ struct ShadowContext
   float BlockSize = 8.0f;
   glm::ivec3 Dims{ 0 };
   glm::dvec2 Range{ 0.0, 1.0 };     // finite scalar range
-  glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel -> scalar
-  glm::dvec2 TableMap{ 1.0, 0.0 };  // scalar -> table coordinate (any table of TableSize)
+  glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel -> the shaders' scalar
+  /**
+   * Data scalar -> the shaders' scalar: the identity, or for float data Range onto [0, 1]
+   * (a float range may be denormal or span +-FLT_MAX, which float arithmetic cannot map to a
+   * table; the maps are composed here, in double).
+   */
+  glm::dvec2 ShaderScalar{ 1.0, 0.0 };
+  glm::dvec2 TableMap{ 1.0, 0.0 };  // data scalar -> table coordinate (any table of TableSize)
+
+  /** The shaders' scalar -> table coordinate (u_tableMap). */
+  glm::dvec2 ShaderTableMap() const;
+  /** Range in the shaders' scalar (u_scalarRange). */
+  glm::dvec2 ShaderRange() const;
   int TableSize = 4096;
   Interpolation Sampling = Interpolation::Linear;
   glm::dmat4 IndexToWorld{ 1.0 };

@@ -448,7 +448,7 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
         ? deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)
         : this->Threshold));
   sink.Set("u_feelerThresholdMode", static_cast<int>(parameters.Mode));
-  sink.Set("u_scalarRange", glm::vec2(context.Range));
+  sink.Set("u_scalarRange", glm::vec2(context.ShaderRange()));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);
   if (context.Surfaces)

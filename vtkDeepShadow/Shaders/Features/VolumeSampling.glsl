@@ -1,9 +1,10 @@
 // Feature VolumeSampling: the volume's scalars at a continuous voxel index, shared by the ray
 // caster and the shadow build passes (deepshadow::VolumeGrid::Sample is the CPU twin).
 //@Dec
-uniform sampler3D u_volume;  // scalars, normalized to [0, 1] by the texture format
+uniform sampler3D u_volume;  // scalars, in [0, 1] (8 and 16 bit formats, float data normalized)
 uniform vec2 u_scalarMap;    // scalar = texel * u_scalarMap.x + u_scalarMap.y
 uniform vec2 u_tableMap;     // table coordinate = scalar * u_tableMap.x + u_tableMap.y
+// (deepshadow::ShadowContext: for float data the shaders' scalar is the normalized one.)
 uniform vec3 u_dims;
 uniform mat4 u_worldToIndex;
 
