@@ -221,7 +221,7 @@ struct Stage
     const double pixels = static_cast<double>(gpu.Width) * gpu.Height;
     return Check(name + ": no mapper error", !error) &&
       deepshadow::testing::WithinTolerance(name.c_str(), gpu, deepshadow::testing::Reference(this->Renderer, true),
-        std::sqrt(rmse * rmse + (technique.Binary ? flips : 0) / pixels), (binary ? 24.0 : 12.0) / 255.0,
+        std::sqrt(rmse * rmse + (binary ? flips : 0) / pixels), (binary ? 24.0 : 12.0) / 255.0,
         binary ? 0.03 : 0.01);
   }
 };
@@ -452,9 +452,12 @@ int TestStiffCasesGPU(int, char*[])
   // needle (1, 1, 1000) seen end-on (parallel; sample distance 250: 32 samples), a dense ball
   // over a floor in each, the light oblique (pancake) or along the needle: the twin's picture.
   // The needle within the binary tolerance: a step of 250 units makes a sample's opacity,
-  // 1 - (1 - a)^250, a step function of the scalar, so a sample flips as on a threshold. (The
-  // maps lose the needle's shadows, as their twins do: TestStiffCases,
-  // LIMITATION_MapsLoseTheShadowOfANeedleSeenEndOn.)
+  // 1 - (1 - a)^250, a step function of the scalar, so a sample flips as on a threshold. The
+  // maps keep the needle's shadow (faces fitted to the box: TestStiffCases,
+  // MapsKeepTheShadowOfANeedleSeenEndOn). Camera and light both look along the needle from
+  // its top face: with equal steps, the light rays' samples would sit exactly at the view
+  // samples' depths, ties that float and double break either way; the light steps 0.96 of
+  // the view's here.
   {
     const int dims[3] = { 9, 9, 9 };
     const double pancake[3] = { 1000.0, 1000.0, 1.0 }, needle[3] = { 1.0, 1.0, 1000.0 };
@@ -484,9 +487,10 @@ int TestStiffCasesGPU(int, char*[])
       }
       for (const Technique& t : EveryTechnique())
       {
+        t.Object->SetStepFactor(spacing == needle ? 0.96 : 1.0);
         const std::string what = std::string(spacing == needle ? "needle 1:1000, " : "pancake 1000:1, ") + t.Name;
-        // Binary techniques on the needle accumulate ~20 samples of 250 units each to their
-        // threshold at the ball's edge: two edge pixels flip between float and double.
+        // Samples of 250 units are steps of the scalar (above): at the ball's edge two pixels
+        // flip between float and double.
         ok = stage.MatchesTwin(what, t, spacing == needle, spacing == needle ? 2 : 0) && ok;
         ok = Check(what + ": drawn", deepshadow::testing::CoveredFraction(Grab(stage.Window), stage.Background) > 0.2) && ok;
       }

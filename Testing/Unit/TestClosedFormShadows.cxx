@@ -223,10 +223,7 @@ double LookupRadius(const ShadowParameters& parameters, const std::vector<Shadow
 /** The faces the technique's light-space map gets for this caster and light (LightSpace.h). */
 std::vector<ShadowMapFace> FacesFor(const ShadowCaster& caster, const Light& light)
 {
-  glm::dvec3 centre;
-  double radius = 0.0;
-  CasterBoundingSphere(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces, centre, radius);
-  return ShadowMapFaces(light, centre, radius);
+  return ShadowMapFaces(light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
 }
 
 /**

@@ -95,6 +95,28 @@ void CasterBoundingSphere(const glm::dmat4& indexToWorld, const glm::ivec3& dims
   radius = merged;
 }
 
+CasterBounds CasterBoundsOf(const glm::dmat4& indexToWorld, const glm::ivec3& dims, const SurfaceSet* surfaces)
+{
+  CasterBounds bounds;
+  CasterBoundingSphere(indexToWorld, dims, surfaces, bounds.Centre, bounds.Radius);
+  const glm::dvec3 maxIndex = glm::dvec3(dims - 1);
+  for (int c = 0; c < 8; ++c)
+  {
+    const glm::dvec3 corner((c & 1) * maxIndex.x, ((c >> 1) & 1) * maxIndex.y, ((c >> 2) & 1) * maxIndex.z);
+    bounds.Corners.emplace_back(indexToWorld * glm::dvec4(corner, 1.0));
+  }
+  if (surfaces && !surfaces->Empty())
+  {
+    const TriangleBVH::Node& root = surfaces->GetHierarchy().GetNodes().front();
+    for (int c = 0; c < 8; ++c)
+    {
+      bounds.Corners.emplace_back((c & 1) ? root.Max.x : root.Min.x, (c & 2) ? root.Max.y : root.Min.y,
+        (c & 4) ? root.Max.z : root.Min.z);
+    }
+  }
+  return bounds;
+}
+
 namespace
 {
 ShadowMapFace MakeFace(bool perspective, const glm::dvec3& origin, const glm::dvec3& forward,
@@ -116,7 +138,13 @@ ShadowMapFace MakeFace(bool perspective, const glm::dvec3& origin, const glm::dv
 
 std::vector<ShadowMapFace> ShadowMapFaces(const Light& light, const glm::dvec3& centre, double radius)
 {
-  radius = std::max(radius, 1e-12);
+  return ShadowMapFaces(light, CasterBounds{ centre, radius, {} });
+}
+
+std::vector<ShadowMapFace> ShadowMapFaces(const Light& light, const CasterBounds& bounds)
+{
+  const glm::dvec3& centre = bounds.Centre;
+  const double radius = std::max(bounds.Radius, 1e-12);
   // 1% margins keep the volume's silhouette off the faces' edges.
   const double margin = 1.01 * radius;
   const glm::dvec3 toCentre = centre - light.Position;
@@ -125,12 +153,43 @@ std::vector<ShadowMapFace> ShadowMapFaces(const Light& light, const glm::dvec3& 
   {
     const glm::dvec3 toLight = light.Positional ? -toCentre / distance
                                                 : glm::normalize(light.Position - light.FocalPoint);
-    return { MakeFace(false, centre + margin * toLight, -toLight, margin, 0.0) };
+    ShadowMapFace face = MakeFace(false, centre + margin * toLight, -toLight, margin, 0.0);
+    if (!bounds.Corners.empty())
+    {
+      // Centred on the corners' projection, as wide as its wider side (never wider than the
+      // sphere's face): depths still start at the sphere's near plane.
+      glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+      for (const glm::dvec3& corner : bounds.Corners)
+      {
+        const glm::dvec2 uv(glm::dot(corner - centre, face.Right), glm::dot(corner - centre, face.Up));
+        lo = glm::min(lo, uv);
+        hi = glm::max(hi, uv);
+      }
+      const glm::dvec2 middle = 0.5 * (lo + hi);
+      face.Origin += middle.x * face.Right + middle.y * face.Up;
+      face.Extent = std::clamp(1.01 * 0.5 * std::max(hi.x - lo.x, hi.y - lo.y), 1e-9 * radius, margin);
+    }
+    return { face };
   }
   if (distance > 1.05 * radius)
   {
     const double halfAngle = std::asin(std::min(1.0, margin / distance));
-    return { MakeFace(true, light.Position, toCentre, std::tan(halfAngle), std::max(0.0, distance - margin)) };
+    ShadowMapFace face =
+      MakeFace(true, light.Position, toCentre, std::tan(halfAngle), std::max(0.0, distance - margin));
+    if (!bounds.Corners.empty())
+    {
+      // As wide as the corners' widest angle from the axis (all lie in front of the light,
+      // which is outside the sphere), never wider than the sphere's.
+      double widest = 0.0;
+      for (const glm::dvec3& corner : bounds.Corners)
+      {
+        const glm::dvec3 d = corner - light.Position;
+        const double z = glm::dot(d, face.Forward);
+        widest = std::max({ widest, std::abs(glm::dot(d, face.Right)) / z, std::abs(glm::dot(d, face.Up)) / z });
+      }
+      face.Extent = std::clamp(1.01 * widest, 1e-9, face.Extent);
+    }
+    return { face };
   }
   // The light is inside (or at) the bounding sphere: a cube of six 90-degree faces.
   std::vector<ShadowMapFace> cube;
@@ -248,10 +307,8 @@ LightSpaceShadow::LightSpaceShadow(
   , Size(std::max(1, parameters.MapSize))
   , Step(step)
 {
-  glm::dvec3 centre;
-  double radius = 0.0;
-  CasterBoundingSphere(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces, centre, radius);
-  this->Faces = ShadowMapFaces(light, centre, radius);
+  this->Faces = ShadowMapFaces(
+    light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
 }
 
 void LightSpaceShadow::ForEachTexel(int threads,

@@ -55,10 +55,27 @@ VTKDEEPSHADOWCORE_EXPORT void VolumeBoundingSphere(
   const glm::dmat4& indexToWorld, const glm::ivec3& dims, glm::dvec3& centre, double& radius);
 
 /**
- * The faces a light needs to see a bounding sphere (centre, radius): one orthographic face
- * for a directional light or a positional one beyond FarLightRadii, one perspective face for
- * a positional light outside the sphere, six (a cube: +x, -x, +y, -y, +z, -z) inside it.
+ * What a light's faces must see: the casters' bounding sphere (where depths start and which
+ * faces a light needs) and the corners of their boxes in world space (how wide a face is).
  */
+struct VTKDEEPSHADOWCORE_EXPORT CasterBounds
+{
+  glm::dvec3 Centre{ 0.0 };
+  double Radius = 0.0;
+  std::vector<glm::dvec3> Corners; // empty: the sphere alone
+};
+
+/**
+ * The faces a light needs to see the casters: one orthographic face for a directional light
+ * or a positional one beyond FarLightRadii, one perspective face for a positional light
+ * outside the bounding sphere, six (a cube: +x, -x, +y, -y, +z, -z) inside it. A face is
+ * fitted to the corners as the light sees them, 1 % wider (an orthographic face centred on
+ * their projection, a perspective one as wide as their widest angle from its axis), so that
+ * texels are not spent beside a long thin volume (a 1:1000 needle seen end-on covers its
+ * face instead of a thousandth of it); without corners, to the sphere.
+ */
+VTKDEEPSHADOWCORE_EXPORT std::vector<ShadowMapFace> ShadowMapFaces(const Light& light, const CasterBounds& bounds);
+/** The same for a bounding sphere (centre, radius) alone. */
 VTKDEEPSHADOWCORE_EXPORT std::vector<ShadowMapFace> ShadowMapFaces(
   const Light& light, const glm::dvec3& centre, double radius);
 
@@ -72,6 +89,10 @@ VTKDEEPSHADOWCORE_EXPORT int ShadowMapFaceFor(
  */
 VTKDEEPSHADOWCORE_EXPORT void CasterBoundingSphere(const glm::dmat4& indexToWorld,
   const glm::ivec3& dims, const SurfaceSet* surfaces, glm::dvec3& centre, double& radius);
+
+/** CasterBoundingSphere, and the corners of the volume's box and of the surfaces' box. */
+VTKDEEPSHADOWCORE_EXPORT CasterBounds CasterBoundsOf(
+  const glm::dmat4& indexToWorld, const glm::ivec3& dims, const SurfaceSet* surfaces);
 
 /**
  * Visits the samples of a texel's ray through the volume's box: sample j at depth

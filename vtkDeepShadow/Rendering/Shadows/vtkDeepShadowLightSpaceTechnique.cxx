@@ -91,15 +91,13 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
       " exceeds this GL's texture limit of " + std::to_string(maxSize);
     return false;
   }
-  glm::dvec3 centre;
-  double radius = 0.0;
-  deepshadow::CasterBoundingSphere(context.IndexToWorld, context.Dims, context.CastingSurfaces, centre, radius);
+  const deepshadow::CasterBounds bounds =
+    deepshadow::CasterBoundsOf(context.IndexToWorld, context.Dims, context.CastingSurfaces);
   maps.Faces.resize(static_cast<size_t>(slots.Count()));
   int facesPerLight = 1;
   for (int slot = 0; slot < slots.Count(); ++slot)
   {
-    maps.Faces[slot] = deepshadow::ShadowMapFaces(
-      context.Lights[static_cast<size_t>(slots.Light(slot))], centre, radius);
+    maps.Faces[slot] = deepshadow::ShadowMapFaces(context.Lights[static_cast<size_t>(slots.Light(slot))], bounds);
     facesPerLight = std::max(facesPerLight, static_cast<int>(maps.Faces[slot].size()));
   }
   const unsigned int format = this->GetTexelFormat();
