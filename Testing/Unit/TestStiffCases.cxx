@@ -44,6 +44,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -588,6 +589,43 @@ TEST(StiffCases, MapsKeepTheShadowOfANeedleSeenEndOn)
     ExpectVisibilityInUnitRange(v, NameOf(p));
     EXPECT_LE(v.r, DarkTolerance(p) + 1e-6) << NameOf(p);
   }
+}
+
+// A ray may take at most MaxRayIterations samples across a volume (llvmpipe's loop limit;
+// elsewhere hours of work): beyond, the reference refuses with one sentence naming the
+// smallest sample distance that fits, instead of marching for hours.
+TEST(StiffCases, RaysOfMoreSamplesThanARayMayTakeAreRefused)
+{
+  const glm::dmat4 sheared = glm::dmat4(glm::dvec4(2, 0, 0, 0), glm::dvec4(1, 1, 0, 0), glm::dvec4(0, 0, 3, 0), glm::dvec4(5, 6, 7, 1));
+  EXPECT_NEAR(LongestPath(glm::dmat4(1.0), glm::ivec3(11)), std::sqrt(300.0), 1e-12);
+  EXPECT_NEAR(LongestPathAlong(glm::dmat4(1.0), glm::ivec3(11), { 1.0, 0.0, 0.0 }), 10.0, 1e-12);
+  EXPECT_NEAR(LongestPathAlong(glm::dmat4(1.0), glm::ivec3(11), glm::normalize(glm::dvec3(1.0, 1.0, 0.0))),
+    std::sqrt(200.0), 1e-12);
+  // Along the sheared box's x edge (2 units a voxel, 10 voxels) and its longest diagonal.
+  EXPECT_NEAR(LongestPathAlong(sheared, glm::ivec3(11), { 1.0, 0.0, 0.0 }), 20.0, 1e-12);
+  EXPECT_NEAR(LongestPath(sheared, glm::ivec3(11)), glm::length(glm::dvec3(30.0, 10.0, 30.0)), 1e-12);
+  EXPECT_TRUE(CheckRaySamples(100.0, 100.0 / MaxRayIterations, "the sample distance").empty());
+  const std::string refused = CheckRaySamples(100.0, 1e-6, "the sample distance");
+  EXPECT_NE(refused.find("the sample distance 1e-06 takes up to 1e+08 samples"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("use at least 0.001525"), std::string::npos) << refused;
+  EXPECT_FALSE(CheckRaySamples(100.0, 0.01, "the sample distance", 20.0).empty()); // 10000 x 20
+
+  Scene scene;
+  scene.View = Camera(glm::dmat4(1.0), 4, 4);
+  VolumeInstance volume;
+  volume.Grid = Grid(glm::ivec3(9), glm::dvec3(1.0), [](int, int, int) { return 1.0f; });
+  volume.Transfer = Medium(0.5);
+  scene.Volumes.push_back(volume);
+  MarchSettings settings;
+  settings.SampleDistance = 1e-6;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THROW(ReferenceRenderer::Render(scene, settings, Threads), std::invalid_argument);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  // A shadow step (StepFactor x sample distance) is bounded alike.
+  settings.SampleDistance = 0.01;
+  scene.Volumes[0].Shadows = Technique(ShadowKind::Rays);
+  scene.Volumes[0].Shadows.StepFactor = 1e-5;
+  EXPECT_THROW(ReferenceRenderer::Render(scene, settings, Threads), std::invalid_argument);
 }
 
 // Lights at the extremes, every technique: grazing the top face, inside the volume (and a

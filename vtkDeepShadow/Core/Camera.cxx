@@ -25,6 +25,18 @@ glm::dvec3 Camera::Unproject(double x, double y, double z) const
   return glm::dvec3(world) / world.w;
 }
 
+bool Camera::Project(const glm::dvec3& p, double& x, double& y) const
+{
+  const glm::dvec4 clip = this->ViewProjection * glm::dvec4(p, 1.0);
+  if (!(clip.w > 0.0))
+  {
+    return false;
+  }
+  x = 0.5 * (clip.x / clip.w + 1.0) * this->Width;
+  y = 0.5 * (clip.y / clip.w + 1.0) * this->Height;
+  return true;
+}
+
 Ray Camera::RayThrough(double x, double y) const
 {
   const glm::dvec3 nearPoint = this->Unproject(x, y, 0.0);

@@ -36,6 +36,8 @@ public:
 
   /** World point of window position (x, y) at window depth z in [0, 1]. */
   glm::dvec3 Unproject(double x, double y, double z) const;
+  /** Window position (x, y) of world point p; false if p is not in front of the camera. */
+  bool Project(const glm::dvec3& p, double& x, double& y) const;
 
 private:
   glm::dmat4 ViewProjection{ 1.0 };

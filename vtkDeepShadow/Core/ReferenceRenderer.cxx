@@ -11,6 +11,7 @@
 #include <cmath>
 #include <optional>
 #include <limits>
+#include <stdexcept>
 
 namespace deepshadow
 {
@@ -333,6 +334,20 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
 Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
   Image* shadowTerm)
 {
+  for (const VolumeInstance& volume : scene.Volumes)
+  {
+    // Nothing that would take hours: the GPU's bound on samples a ray (MaxRayIterations).
+    const double longest = LongestPath(volume.Grid->GetIndexToWorld(), volume.Grid->GetDims());
+    std::string problem = CheckRaySamples(longest, settings.SampleDistance, "the sample distance");
+    if (problem.empty() && volume.Shadows.Kind != ShadowKind::None)
+    {
+      problem = CheckRaySamples(longest, volume.Shadows.StepFactor * settings.SampleDistance, "the shadow step");
+    }
+    if (!problem.empty())
+    {
+      throw std::invalid_argument(problem);
+    }
+  }
   const int width = scene.View.GetWidth();
   const int height = scene.View.GetHeight();
   Image image(width, height);

@@ -157,7 +157,9 @@ public:
   /**
    * Renders the scene; `threads` 0 uses DefaultThreadCount(). With `shadowTerm`, also its
    * shadow-term image (RenderOutput::ShadowTerm) from the same march: the visibilities,
-   * which cost the most, are evaluated once for both.
+   * which cost the most, are evaluated once for both. Throws std::invalid_argument when a
+   * sample distance (or a shadow step) would take more samples across a volume than a ray
+   * may (CheckRaySamples), as the GPU mapper refuses it.
    */
   static Image Render(const Scene& scene, const MarchSettings& settings, int threads = 0,
     Image* shadowTerm = nullptr);

@@ -1,5 +1,6 @@
 #include "VolumeGrid.h"
 
+#include <glm/common.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace deepshadow
 {
@@ -67,6 +69,56 @@ double DefaultSampleDistance(const glm::dmat4& indexToWorld)
     shortest = std::min(shortest, glm::length(glm::dvec3(indexToWorld[axis])));
   }
   return 0.5 * shortest;
+}
+
+double LongestPath(const glm::dmat4& indexToWorld, const glm::ivec3& dims)
+{
+  const glm::dvec3 extent = glm::dvec3(glm::max(dims - 1, glm::ivec3(0)));
+  double longest = 0.0;
+  for (int c = 0; c < 4; ++c)
+  {
+    // The four diagonals of the (possibly sheared) box.
+    const glm::dvec3 from((c & 1) * extent.x, ((c >> 1) & 1) * extent.y, 0.0);
+    const glm::dvec3 to(extent.x - from.x, extent.y - from.y, extent.z);
+    longest = std::max(longest, glm::length(glm::dvec3(indexToWorld * glm::dvec4(to - from, 0.0))));
+  }
+  return longest;
+}
+
+double LongestPathAlong(const glm::dmat4& indexToWorld, const glm::ivec3& dims, const glm::dvec3& direction)
+{
+  // In index space the box is axis-aligned: a chord spans at most its extent along each axis,
+  // and one through a corner does.
+  const glm::dvec3 perUnit = glm::abs(glm::dvec3(glm::inverse(indexToWorld) * glm::dvec4(direction, 0.0)));
+  double longest = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (perUnit[axis] > 0.0)
+    {
+      longest = std::min(longest, std::max(dims[axis] - 1, 0) / perUnit[axis]);
+    }
+  }
+  return std::isfinite(longest) ? longest : 0.0;
+}
+
+std::string CheckRaySamples(double longest, double step, const std::string& what, double iterationsPerSample)
+{
+  const double budget = std::floor(MaxRayIterations / std::max(iterationsPerSample, 1.0));
+  const double samples = std::ceil(longest / step);
+  if (step > 0.0 && samples <= budget)
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << what << " " << step << " takes up to " << samples << " samples across the volume ("
+          << longest << " long), more than the " << budget << " a ray may take";
+  if (iterationsPerSample > 1.0)
+  {
+    message << " with " << iterationsPerSample << " loop iterations a sample (" << MaxRayIterations
+            << " in all)";
+  }
+  message << "; use at least " << longest / budget;
+  return message.str();
 }
 
 VolumeGrid::VolumeGrid(

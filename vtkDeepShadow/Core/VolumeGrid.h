@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace deepshadow
@@ -48,6 +49,29 @@ VTKDEEPSHADOWCORE_EXPORT void ReplaceNonFinite(float* values, size_t count);
  * grid (index-to-world includes spacing, direction and the prop's transform).
  */
 VTKDEEPSHADOWCORE_EXPORT double DefaultSampleDistance(const glm::dmat4& indexToWorld);
+
+/**
+ * The most loop iterations a ray (a view ray, a feeler, a light ray) may take across a volume,
+ * with what each sample adds: llvmpipe ends every shader invocation's loops after 65535
+ * iterations in all, silently, and a GPU or the CPU reference would take hours beyond it.
+ * The same bound holds on every GL and on the CPU, so that pictures do not depend on where
+ * they are made.
+ */
+constexpr double MaxRayIterations = 65535.0;
+
+/** The longest path of any ray through the box [0, dims - 1] mapped by indexToWorld: its longest diagonal. */
+VTKDEEPSHADOWCORE_EXPORT double LongestPath(const glm::dmat4& indexToWorld, const glm::ivec3& dims);
+/** The longest path through that box of a ray along the unit world direction `direction`. */
+VTKDEEPSHADOWCORE_EXPORT double LongestPathAlong(
+  const glm::dmat4& indexToWorld, const glm::ivec3& dims, const glm::dvec3& direction);
+
+/**
+ * Empty if a ray of `step` (world units) along a path of `longest` takes at most
+ * MaxRayIterations / `iterationsPerSample` samples; else one sentence for the user naming
+ * `what` (e.g. "the sample distance"), the samples asked for and the smallest step that fits.
+ */
+VTKDEEPSHADOWCORE_EXPORT std::string CheckRaySamples(
+  double longest, double step, const std::string& what, double iterationsPerSample = 1.0);
 
 class VTKDEEPSHADOWCORE_EXPORT VolumeGrid
 {

@@ -212,7 +212,16 @@ bool vtkDeepShadowReferenceRenderer::Render(
       deepshadow::DefaultSampleDistance(scene.Volumes.front().Grid->GetIndexToWorld());
   }
   settings.SampleDistance = sampleDistance;
-  image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm);
+  try
+  {
+    image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    this->LastError = e.what();
+    vtkErrorMacro(<< this->LastError);
+    return false;
+  }
   return true;
 }
 

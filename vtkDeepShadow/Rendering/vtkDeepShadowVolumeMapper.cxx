@@ -46,6 +46,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <optional>
 #include <set>
@@ -74,6 +75,53 @@ void SetVector(vtkShaderProgram* program, const char* name, const glm::dvec3& v)
 {
   const float f[3] = { static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z) };
   program->SetUniform3f(name, f);
+}
+
+// deepshadow::CheckRaySamples for this frame: any view ray and feeler on every GL (the box's
+// diagonal, whatever the camera); on llvmpipe, whose loop limit counts the iterations of every
+// loop a ray's invocation runs, also this frame's view rays with what each sample's lighting
+// loop and fixed-size shadow lookups add.
+std::string CheckRaySamples(
+  const deepshadow::ShadowContext& context, vtkDeepShadowTechnique* technique, const deepshadow::Camera& camera)
+{
+  const double diagonal = deepshadow::LongestPath(context.IndexToWorld, context.Dims);
+  std::string problem = deepshadow::CheckRaySamples(diagonal, context.ViewStep, "the sample distance");
+  if (problem.empty() && technique)
+  {
+    problem = deepshadow::CheckRaySamples(
+      diagonal, technique->GetStepFactor() * context.ViewStep, "the shadow step (sample distance x StepFactor)");
+  }
+  const char* gl = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!problem.empty() || !gl || !std::strstr(gl, "llvmpipe"))
+  {
+    return problem;
+  }
+  double shadowed = 0.0;
+  for (const deepshadow::Light& light : context.Lights)
+  {
+    shadowed += light.ShadowAttenuation > 0.0 ? 1.0 : 0.0;
+  }
+  const double lookups = technique ? technique->GetLookupLoopIterations() : 0.0;
+  const double perSample = 1.0 + static_cast<double>(context.Lights.size()) + shadowed * lookups;
+  // The longest view path: along the camera's direction (parallel), or towards the box's
+  // corners and centre (perspective); the diagonal if none is in front of the camera.
+  const glm::dvec3 extent = glm::dvec3(context.Dims - 1);
+  double longest = 0.0;
+  bool seen = false;
+  for (int c = 0; c < 9; ++c)
+  {
+    const glm::dvec3 index = c < 8 ? glm::dvec3((c & 1) * extent.x, ((c >> 1) & 1) * extent.y, ((c >> 2) & 1) * extent.z)
+                                   : 0.5 * extent;
+    double x = 0.0, y = 0.0;
+    if (camera.Project(glm::dvec3(context.IndexToWorld * glm::dvec4(index, 1.0)), x, y))
+    {
+      const glm::dvec3 direction = camera.RayThrough(x, y).Direction;
+      longest = std::max(longest, deepshadow::LongestPathAlong(context.IndexToWorld, context.Dims, direction));
+      seen = true;
+    }
+  }
+  longest = seen ? longest : diagonal;
+  return deepshadow::CheckRaySamples(longest, context.ViewStep, "on llvmpipe, the sample distance", perSample);
 }
 
 // Visible props other than volumes that draw opaque geometry into the depth buffer.
@@ -696,6 +744,13 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (truncated)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
+  }
+  // A ray of more samples than a ray may take would be cut short (llvmpipe) or take hours.
+  const std::string tooFine = CheckRaySamples(context, technique, camera);
+  if (!tooFine.empty())
+  {
+    this->ReportError(tooFine);
+    return;
   }
   if (technique)
   {

@@ -77,6 +77,17 @@ std::string vtkDeepShadowDeepShadowMapTechnique::GetBuildSource() const
   return vtkDeepShadowDeepShadowMapBuild;
 }
 
+int vtkDeepShadowDeepShadowMapTechnique::LookupLoopIterations() const
+{
+  // A binary search over the nodes in each of the four bilinear texels.
+  int steps = 1;
+  for (int remaining = this->Layers; remaining > 1; remaining /= 2)
+  {
+    ++steps;
+  }
+  return 4 * steps;
+}
+
 std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const
 {
   return std::string("//@Dec\nconst bool DsmColored = ") + (this->Colored ? "true" : "false") +

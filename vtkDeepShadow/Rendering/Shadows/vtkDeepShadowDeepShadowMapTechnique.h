@@ -77,6 +77,7 @@ protected:
   bool DefersTexels() const override { return true; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
+  int LookupLoopIterations() const override;
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
   void BeginMapBuild() override;
   void EndMapBuild() override;

@@ -50,6 +50,12 @@ std::string vtkDeepShadowShadowMapTechnique::GetBuildSource() const
   return vtkDeepShadowShadowMapBuild;
 }
 
+int vtkDeepShadowShadowMapTechnique::LookupLoopIterations() const
+{
+  // 3x3: three rows of three (Shadows/ShadowMap.glsl); Poisson: one loop over its taps.
+  return this->Filter == PCF3x3 ? 12 : this->Filter == PoissonDisc ? static_cast<int>(deepshadow::PoissonDisc().size()) : 0;
+}
+
 std::string vtkDeepShadowShadowMapTechnique::GetMapLookupSource() const
 {
   // The filter and the Poisson disc come from Core, the CPU twin's tables.

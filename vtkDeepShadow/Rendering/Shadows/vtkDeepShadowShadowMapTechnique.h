@@ -54,6 +54,7 @@ protected:
   unsigned int GetTexelFormat() const override;
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
+  int LookupLoopIterations() const override;
   void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   double Bias = 2.0;

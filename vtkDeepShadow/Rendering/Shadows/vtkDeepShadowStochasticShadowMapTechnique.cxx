@@ -73,6 +73,11 @@ std::string vtkDeepShadowStochasticShadowMapTechnique::GetBuildSource() const
   return vtkDeepShadowStochasticShadowMapBuild;
 }
 
+int vtkDeepShadowStochasticShadowMapTechnique::LookupLoopIterations() const
+{
+  return this->Offsets * (1 + this->Photons); // offsets, and photons per offset
+}
+
 std::string vtkDeepShadowStochasticShadowMapTechnique::GetMapLookupSource() const
 {
   // The offsets come from Core, the CPU twin's table.

@@ -59,6 +59,7 @@ protected:
   int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Photons; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
+  int LookupLoopIterations() const override;
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   int Offsets = 13;

@@ -151,6 +151,13 @@ public:
    * cache's grid does not cover.
    */
   std::string GetShaderFeatureSource(bool direct = false) const;
+  /**
+   * Loop iterations its lookup takes per sample and shadowed light where that number is
+   * fixed (PCF taps, CSSM offsets and photons, deep shadow map searches); 0 for caches and
+   * feelers, whose loops vary with the scene. llvmpipe counts them against the loop budget
+   * of a view ray (deepshadow::MaxRayIterations).
+   */
+  int GetLookupLoopIterations() const { return this->Cached ? 0 : this->LookupLoopIterations(); }
   /** Whether the lookup also needs the Feeler feature. */
   bool NeedsFeeler(bool direct = false) const
   {
@@ -207,6 +214,8 @@ protected:
    */
   virtual std::string GetLookupSource() const = 0;
   virtual bool LookupNeedsFeeler() const { return false; }
+  /** See GetLookupLoopIterations(). */
+  virtual int LookupLoopIterations() const { return 0; }
   /** Binds what the lookup reads and sets its uniforms (ray caster or cache pass). */
   virtual void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) = 0;
   virtual void UnbindLookup() {}
