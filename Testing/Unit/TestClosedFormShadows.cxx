@@ -7,14 +7,11 @@
 // samples), a point light inside a uniform medium (cube faces) and a spot light above it
 // (a perspective face); grey and coloured media.
 //
-// Each comparison's tolerance is the sum of what the technique is allowed, each term with its
-// reason (Tolerance below): the march's sampling (a path covers whole samples), feeler
-// termination (1/512), the technique's own bound (epsilon for deep shadow maps, the
-// representation of three opacity levels, 4 standard errors of CSSM's estimate), and the
-// resolution of its lookup: the closed form's own variation over the texels (or cache nodes)
-// the lookup reads. Binary techniques are checked where the closed form is clearly on one
-// side of the threshold over that footprint.
-#include "../Common/ClosedForm.h"
+// Each answer is judged by closedform::Judge (Testing/Common/ClosedFormScenes.h, shared with
+// the GPU test): a tolerance summed from what the technique is allowed, each term with its
+// reason. Mesh receivers go through ReferenceRenderer::ShadeSurface, as the CPU reference
+// draws them.
+#include "../Common/ClosedFormScenes.h"
 
 #include "LightSpace.h"
 #include "ReferenceRenderer.h"
@@ -35,227 +32,10 @@
 
 using namespace deepshadow;
 namespace cf = deepshadow::closedform;
+using namespace deepshadow::closedform;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-constexpr double ViewStep = 0.5; // the default sample distance of a unit-spaced volume
-
-// A homogeneous body in a volume grid: a scalar field that is 1 inside and 0 outside, a
-// transfer function that steps from 0 to `Opacity` at 0.5, and the body's closed form. Its
-// colour is what it transmits of the light it stops (coloured techniques): a black body casts
-// the same shadow on grey and coloured techniques.
-struct Body
-{
-  std::shared_ptr<VolumeGrid> Grid;
-  TransferFunction Transfer;
-  ShadowCaster Caster;
-  double Opacity = 0.0;
-  glm::dvec3 Color{ 0.0 };
-  /** Length of the light ray from p (unit direction d, up to maxS) inside the body. */
-  std::function<double(const glm::dvec3& p, const glm::dvec3& d, double maxS)> Path;
-
-  Body(const glm::ivec3& dims, const glm::dvec3& origin, double opacity, const glm::dvec3& color,
-    const std::function<float(const glm::dvec3&)>& field)
-    : Opacity(opacity)
-    , Color(color)
-  {
-    std::vector<float> values(static_cast<size_t>(dims.x) * dims.y * dims.z);
-    for (int k = 0; k < dims.z; ++k)
-      for (int j = 0; j < dims.y; ++j)
-        for (int i = 0; i < dims.x; ++i)
-          values[i + dims.x * (j + static_cast<size_t>(dims.y) * k)] = field(origin + glm::dvec3(i, j, k));
-    this->Grid = std::make_shared<VolumeGrid>(dims, values, glm::translate(glm::dmat4(1.0), origin));
-    this->Transfer.Opacity = PiecewiseLinear({ { 0.0, 0.0 }, { 0.499, 0.0 }, { 0.5, opacity }, { 1.0, opacity } });
-    this->Transfer.Red = PiecewiseLinear({ { 0.0, color.r } });
-    this->Transfer.Green = PiecewiseLinear({ { 0.0, color.g } });
-    this->Transfer.Blue = PiecewiseLinear({ { 0.0, color.b } });
-    this->Transfer.OpacityUnitDistance = 1.0;
-    this->Caster.Grid = this->Grid.get();
-    this->Caster.Transfer = &this->Transfer;
-  }
-  // The caster points into the body: no copies.
-  Body(const Body&) = delete;
-  Body& operator=(const Body&) = delete;
-
-  double Sigma() const { return cf::Extinction(this->Opacity, 1.0); }
-
-  /** Closed form: what reaches p of `light`, per channel for `colored` techniques. */
-  glm::dvec3 Exact(const glm::dvec3& p, const Light& light, bool colored) const
-  {
-    const double length = this->Path(p, light.At(p).ToLight, DistanceToLight(light, p));
-    return cf::ColoredTransmittance(this->Opacity, 1.0, colored ? this->Color : glm::dvec3(0.0), length);
-  }
-};
-
-// A ball of radius 15 at the origin in a 48^3 grid of unit spacing.
-constexpr double BallRadius = 15.0;
-std::unique_ptr<Body> Ball(double opacity, const glm::dvec3& color = glm::dvec3(0.0))
-{
-  auto body = std::make_unique<Body>(glm::ivec3(48), glm::dvec3(-23.5), opacity, color,
-    [](const glm::dvec3& p) { return cf::BallField(p, glm::dvec3(0.0), BallRadius); });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return cf::SphereChord(glm::dvec3(0.0), BallRadius, p, d, maxS);
-  };
-  return body;
-}
-
-// A slab filling a 40^3 grid (world = index) between z = 7.5 and z = 31.5.
-std::unique_ptr<Body> Slab(double opacity)
-{
-  auto body = std::make_unique<Body>(glm::ivec3(40), glm::dvec3(0.0), opacity, glm::dvec3(0.0),
-    [](const glm::dvec3& p) { return (p.z >= 8.0 && p.z <= 31.0) ? 1.0f : 0.0f; });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return cf::BoxPath(glm::dvec3(0.0, 0.0, 7.5), glm::dvec3(39.0, 39.0, 31.5), p, d, maxS);
-  };
-  return body;
-}
-
-// A uniform medium filling a 41^3 grid (world = index): the box [0, 40]^3.
-std::unique_ptr<Body> Filled(double opacity, const glm::dvec3& color = glm::dvec3(0.0))
-{
-  auto body = std::make_unique<Body>(glm::ivec3(41), glm::dvec3(0.0), opacity, color, [](const glm::dvec3&) { return 1.0f; });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return cf::BoxPath(glm::dvec3(0.0), glm::dvec3(40.0), p, d, maxS);
-  };
-  return body;
-}
-
-Light Directional(const glm::dvec3& toLight)
-{
-  Light light;
-  light.Position = toLight;
-  light.FocalPoint = glm::dvec3(0.0);
-  return light;
-}
-
-Light Positional(const glm::dvec3& position, const glm::dvec3& focal, double coneAngle = 180.0)
-{
-  Light light;
-  light.Positional = true;
-  light.Position = position;
-  light.FocalPoint = focal;
-  light.ConeAngle = coneAngle;
-  return light;
-}
-
-// The ground under the ball on the far side of a light at 45 degrees in the x-z plane: an
-// opaque box [-58, -2] x [-28, 28] x [-31, -30] that casts shadows too (as
-// vtkDeepShadowPolyDataMapper's meshes do by default), with one smooth normal per corner
-// (what the mapper computes for a box that has none: the shading normal of its top face
-// tilts towards its edges, its plane does not).
-constexpr double GroundTop = -30.0;
-SurfaceMesh Ground()
-{
-  SurfaceMesh mesh;
-  for (int c = 0; c < 8; ++c)
-  {
-    const glm::dvec3 corner((c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0);
-    mesh.Points.emplace_back(corner.x > 0.0 ? -2.0 : -58.0, corner.y > 0.0 ? 28.0 : -28.0,
-      corner.z > 0.0 ? GroundTop : GroundTop - 1.0);
-    mesh.Normals.push_back(glm::normalize(corner));
-  }
-  // Outward, counter-clockwise seen from outside: -z, +z, -y, +y, -x, +x.
-  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
-    { 1, 3, 7, 5 } };
-  for (const auto& q : faces)
-  {
-    mesh.Triangles.push_back({ q[0], q[1], q[2] });
-    mesh.Triangles.push_back({ q[0], q[2], q[3] });
-  }
-  mesh.Material.Opacity = 1.0;
-  return mesh;
-}
-
-/** A technique by its short name (deepshadow --technique), at its defaults. */
-ShadowParameters Technique(std::string name)
-{
-  ShadowParameters p;
-  const std::string cached = "-cached";
-  if (name.size() > cached.size() && name.compare(name.size() - cached.size(), cached.size(), cached) == 0)
-  {
-    p.Cached = true;
-    name.resize(name.size() - cached.size());
-  }
-  p.Kind = name.rfind("rays", 0) == 0 ? ShadowKind::Rays
-    : name == "shadowmap"             ? ShadowKind::ShadowMap
-    : name == "dsm3"                  ? ShadowKind::OpacityLevels
-    : name == "cssm"                  ? ShadowKind::Stochastic
-                                      : ShadowKind::DeepShadowMap;
-  p.Opaque = name == "rays-opaque";
-  p.Colored = name == "rays-color" || name == "dsm-color";
-  return p;
-}
-
-bool IsBinary(const ShadowParameters& p)
-{
-  return p.Opaque || p.Kind == ShadowKind::ShadowMap;
-}
-
-/**
- * World radius of what a lookup at p reads around it, perpendicular to the light: the
- * texels a light-space technique filters (bilinear, PCF, CSSM's offsets), or nothing.
- */
-double LookupRadius(const ShadowParameters& parameters, const std::vector<ShadowMapFace>& faces,
-  const glm::dvec3& p)
-{
-  double texels = 0.0;
-  switch (parameters.Kind)
-  {
-    case ShadowKind::DeepShadowMap:
-    case ShadowKind::OpacityLevels:
-      texels = 1.5; // bilinear
-      break;
-    case ShadowKind::ShadowMap:
-      texels = 2.5; // PCF 3x3 around the nearest texel
-      break;
-    case ShadowKind::Stochastic:
-      texels = 7.5; // the farthest of the 13 offsets, and the nearest texel
-      break;
-    default:
-      return 0.0;
-  }
-  const ShadowMapFace& face = faces[ShadowMapFaceFor(faces, p - faces[0].Origin)];
-  const double z = face.Perspective ? glm::dot(p - face.Origin, face.Forward) : 1.0;
-  return texels * 2.0 * z * face.Extent / parameters.MapSize;
-}
-
-/** The faces the technique's light-space map gets for this caster and light (LightSpace.h). */
-std::vector<ShadowMapFace> FacesFor(const ShadowCaster& caster, const Light& light)
-{
-  return ShadowMapFaces(light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
-}
-
-/**
- * The closed form's spread around p: its largest difference from p's value over the points
- * within `radius` perpendicular to the light, and within `cell` in every direction (a cache
- * node's neighbourhood). What a lookup that blends those points may differ by.
- */
-glm::dvec3 Spread(const Body& body, const Light& light, bool colored, const glm::dvec3& p, double radius,
-  double cell)
-{
-  const glm::dvec3 centre = body.Exact(p, light, colored);
-  glm::dvec3 spread(0.0);
-  auto visit = [&](const glm::dvec3& q) {
-    spread = glm::max(spread, glm::abs(body.Exact(q, light, colored) - centre));
-  };
-  if (radius > 0.0)
-  {
-    const glm::dvec3 l = light.At(p).ToLight;
-    const glm::dvec3 e1 = glm::normalize(glm::cross(l, std::abs(l.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
-    const glm::dvec3 e2 = glm::cross(l, e1);
-    for (double r : { 0.5 * radius, radius })
-      for (int k = 0; k < 16; ++k)
-        visit(p + r * (std::cos(k * Pi / 8.0) * e1 + std::sin(k * Pi / 8.0) * e2));
-  }
-  if (cell > 0.0)
-  {
-    for (int k = 0; k < 27; ++k)
-      visit(p + cell * glm::dvec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1));
-  }
-  return spread;
-}
-
 /** A point where a technique is asked for the light: a volume sample, or a mesh's point. */
 struct Receiver
 {
@@ -297,82 +77,27 @@ Outcome CheckAgainstClosedForm(const std::string& what, const Body& body, const 
   const LightShadow& shadow, const Light& light, const std::vector<Receiver>& receivers, double cell = 0.0)
 {
   Outcome outcome;
-  const double step = parameters.StepFactor * ViewStep;
-  const std::vector<ShadowMapFace> faces = FacesFor(body.Caster, light);
-  const double sigma = body.Sigma();
   for (const Receiver& receiver : receivers)
   {
-    const glm::dvec3 at = receiver.Position;
-    const glm::dvec3 toLight = light.At(at).ToLight;
+    const glm::dvec3& at = receiver.Position;
     const bool mesh = receiver.Mesh != nullptr;
-    const glm::dvec3 got =
-      mesh ? MeshShadowTerm(*receiver.Mesh, at, shadow, light, step) : shadow.Visibility(at);
-    const bool colored = parameters.IsColored();
-    const glm::dvec3 exact = body.Exact(at, light, colored);
-    const double length = body.Path(at, toLight, DistanceToLight(light, at));
-    const glm::dvec3 spread = Spread(body, light, colored, at, LookupRadius(parameters, faces, at), cell);
+    const glm::dvec3 got = mesh
+      ? MeshShadowTerm(*receiver.Mesh, at, shadow, light, parameters.StepFactor * cf::ViewStep)
+      : shadow.Visibility(at);
+    const cf::Verdict verdict = cf::Judge(body, parameters, light, at, mesh, cell, got);
     for (int c = 0; c < 3; ++c)
     {
-      // Sampling: whole samples cover a path; a coloured medium's discrete model lies above
-      // the continuous one by the concavity of exp (ColoredStepError); feelers and light rays
-      // stop below 1/512.
-      const double color = colored ? body.Color[c] : 0.0;
-      double tolerance = cf::SamplingError(exact[c], sigma * (1.0 - color), step) +
-        cf::ColoredStepError(sigma, step, color, length) + ShadowTerminationTransmittance + 1e-9;
-      switch (parameters.Kind)
+      if (!verdict.Checked[c])
       {
-        case ShadowKind::DeepShadowMap:
-          tolerance += parameters.Epsilon; // |V' - V| <= epsilon at every sample depth
-          break;
-        case ShadowKind::OpacityLevels:
-          // Three levels joined by smoothsteps (paper 001) approximate an exponential
-          // opacity inside a medium within 0.1 (before 10 %, and between 50 and 90 %); past
-          // the medium the maximum opacity is exact.
-          tolerance += mesh ? 0.0 : 0.1;
-          break;
-        case ShadowKind::Stochastic:
-          // Unbiased: 4 standard errors of the mean of offsets x photons Bernoulli tests.
-          tolerance += 4.0 * std::sqrt(exact[c] * (1.0 - exact[c]) /
-                               (StochasticOffsets(parameters.Offsets).size() * parameters.Photons));
-          break;
-        default:
-          break;
-      }
-      const double error = std::abs(got[c] - exact[c]);
-      if (IsBinary(parameters))
-      {
-        // 0 where the accumulated opacity exceeds the threshold, 1 where it does not; only
-        // where the closed form is on one side over the whole footprint.
-        // A shadow map compares the point's depth less its bias: the closed form that far
-        // towards the light differs by as much as one more stretch of medium lets through.
-        const double bias = parameters.Kind == ShadowKind::ShadowMap
-          ? exact[c] * (std::exp(sigma * parameters.Bias * step) - 1.0)
-          : 0.0;
-        const double opacity = 1.0 - exact[c], margin = tolerance + spread[c] + bias;
-        if (std::abs(opacity - parameters.Threshold) <= margin)
-        {
-          continue;
-        }
-        const double expected = opacity > parameters.Threshold ? 0.0 : 1.0;
-        const double binaryError = std::abs(got[c] - expected);
-        outcome.MaxError = std::max(outcome.MaxError, binaryError);
-        ++outcome.Checked;
-        if (binaryError > 1e-9)
-        {
-          if (++outcome.Failed <= 3)
-            ADD_FAILURE() << what << " at (" << at.x << ", " << at.y << ", " << at.z << ") channel " << c
-                          << ": " << got[c] << ", expected " << expected << " (closed form T " << exact[c]
-                          << ", threshold " << parameters.Threshold << ")";
-        }
         continue;
       }
-      tolerance += spread[c];
-      outcome.MaxError = std::max(outcome.MaxError, error);
       ++outcome.Checked;
-      if (error > tolerance && ++outcome.Failed <= 3)
+      outcome.MaxError = std::max(outcome.MaxError, verdict.Error[c]);
+      if (!verdict.Good(c) && ++outcome.Failed <= 3)
       {
         ADD_FAILURE() << what << " at (" << at.x << ", " << at.y << ", " << at.z << ") channel " << c << ": "
-                      << got[c] << ", closed form " << exact[c] << ", error " << error << " > " << tolerance;
+                      << got[c] << ", expected " << verdict.Expected[c] << ", error " << verdict.Error[c]
+                      << " > " << verdict.Tolerance[c];
       }
     }
   }
