@@ -2,7 +2,8 @@
 // (Testing/Cxx/TestClosedFormShadowsGPU.cxx) tests: homogeneous bodies in volume grids with
 // their Beer-Lambert answers (ClosedForm.h), the techniques by name, and Judge(), which holds
 // one answer against the closed form within what the technique is allowed, each term with its
-// reason: the march's sampling (a path covers whole samples), feeler termination (1/512), the
+// reason: the march's sampling (a path covers whole samples), where the grid puts the body's
+// surface (trilinear interpolation of its field), feeler termination (1/512), the
 // technique's own bound (epsilon for deep shadow maps, the representation of three opacity
 // levels, 4 standard errors of CSSM's estimate), and the resolution of its lookup (the closed
 // form's own variation over the texels or cache nodes the lookup reads). Binary techniques are
@@ -24,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,8 +49,13 @@ struct Body
   ShadowCaster Caster;
   double Opacity = 0.0;
   glm::dvec3 Color{ 0.0 };
-  /** Length of the light ray from p (unit direction d, up to maxS) inside the body. */
-  std::function<double(const glm::dvec3& p, const glm::dvec3& d, double maxS)> Path;
+  /**
+   * Length of the light ray from p (unit direction d, up to maxS) inside the body, with its
+   * surface moved outwards by `grow`.
+   */
+  std::function<double(const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow)> Path;
+  /** How far from its closed-form surface the grid may put the body's (trilinear sampling). */
+  double SurfaceSlack = 0.0;
 
   Body(const glm::ivec3& dims, const glm::dvec3& origin, double opacity, const glm::dvec3& color,
     const std::function<float(const glm::dvec3&)>& field)
@@ -76,9 +83,9 @@ struct Body
   double Sigma() const { return Extinction(this->Opacity, 1.0); }
 
   /** Closed form: what reaches p of `light`, per channel for `colored` techniques. */
-  glm::dvec3 Exact(const glm::dvec3& p, const Light& light, bool colored) const
+  glm::dvec3 Exact(const glm::dvec3& p, const Light& light, bool colored, double grow = 0.0) const
   {
-    const double length = this->Path(p, light.At(p).ToLight, DistanceToLight(light, p));
+    const double length = this->Path(p, light.At(p).ToLight, DistanceToLight(light, p), grow);
     return ColoredTransmittance(this->Opacity, 1.0, colored ? this->Color : glm::dvec3(0.0), length);
   }
 };
@@ -89,9 +96,12 @@ inline std::unique_ptr<Body> Ball(double opacity, const glm::dvec3& color = glm:
 {
   auto body = std::make_unique<Body>(glm::ivec3(48), glm::dvec3(-23.5), opacity, color,
     [](const glm::dvec3& p) { return BallField(p, glm::dvec3(0.0), BallRadius); });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return SphereChord(glm::dvec3(0.0), BallRadius, p, d, maxS);
+  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow) {
+    return SphereChord(glm::dvec3(0.0), BallRadius + grow, p, d, maxS);
   };
+  // BallField's ramp of 4 units: trilinear interpolation bends the surface in by at most
+  // (1/8)(2/R) of it, plus the transfer function's step of 0.001 over the ramp's slope.
+  body->SurfaceSlack = 1.0 / (4.0 * BallRadius) + 0.004;
   return body;
 }
 
@@ -100,9 +110,10 @@ inline std::unique_ptr<Body> Slab(double opacity)
 {
   auto body = std::make_unique<Body>(glm::ivec3(40), glm::dvec3(0.0), opacity, glm::dvec3(0.0),
     [](const glm::dvec3& p) { return (p.z >= 8.0 && p.z <= 31.0) ? 1.0f : 0.0f; });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return BoxPath(glm::dvec3(0.0, 0.0, 7.5), glm::dvec3(39.0, 39.0, 31.5), p, d, maxS);
+  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow) {
+    return BoxPath(glm::dvec3(0.0, 0.0, 7.5 - grow), glm::dvec3(39.0, 39.0, 31.5 + grow), p, d, maxS);
   };
+  body->SurfaceSlack = 0.001; // linear across z: the transfer function's step alone
   return body;
 }
 
@@ -110,8 +121,8 @@ inline std::unique_ptr<Body> Slab(double opacity)
 inline std::unique_ptr<Body> Filled(double opacity, const glm::dvec3& color = glm::dvec3(0.0))
 {
   auto body = std::make_unique<Body>(glm::ivec3(41), glm::dvec3(0.0), opacity, color, [](const glm::dvec3&) { return 1.0f; });
-  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS) {
-    return BoxPath(glm::dvec3(0.0), glm::dvec3(40.0), p, d, maxS);
+  body->Path = [](const glm::dvec3& p, const glm::dvec3& d, double maxS, double) {
+    return BoxPath(glm::dvec3(0.0), glm::dvec3(40.0), p, d, maxS); // the box's own faces
   };
   return body;
 }
@@ -263,13 +274,14 @@ struct Verdict
 };
 
 /**
- * Holds `got`, a technique's answer for `light` at world point `at` (on a mesh, or a volume
- * sample), against the body's closed form. `cell`: node spacing of a grid the answer was
+ * Holds `got`, a technique's answer for `light` at world point `at` (where the technique was
+ * asked: a volume sample, or a mesh point moved towards the light by its lookup offset),
+ * against the body's closed form. `cell`: node spacing of a grid the answer was
  * interpolated from (a cache, another volume's grid), else 0; `extra`: what the renderer adds
  * besides (the GPU: float arithmetic and 8-bit pixels).
  */
 inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const Light& light,
-  const glm::dvec3& at, bool mesh, double cell, const glm::dvec3& got, double extra = 0.0)
+  const glm::dvec3& at, double cell, const glm::dvec3& got, double extra = 0.0)
 {
   Verdict verdict;
   const double step = parameters.StepFactor * ViewStep;
@@ -278,7 +290,10 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
   const glm::dvec3 toLight = light.At(at).ToLight;
   const bool colored = parameters.IsColored();
   const glm::dvec3 exact = body.Exact(at, light, colored);
-  const double length = body.Path(at, toLight, DistanceToLight(light, at));
+  const double length = body.Path(at, toLight, DistanceToLight(light, at), 0.0);
+  // Where the grid puts the surface: the closed form for the body grown or shrunk that much.
+  const glm::dvec3 surface = glm::max(glm::abs(body.Exact(at, light, colored, body.SurfaceSlack) - exact),
+    glm::abs(body.Exact(at, light, colored, -body.SurfaceSlack) - exact));
   const glm::dvec3 spread = Spread(body, light, colored, at, LookupRadius(parameters, faces, at), cell);
   for (int c = 0; c < 3; ++c)
   {
@@ -287,7 +302,7 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
     // stop below 1/512.
     const double color = colored ? body.Color[c] : 0.0;
     double tolerance = SamplingError(exact[c], sigma * (1.0 - color), step) +
-      ColoredStepError(sigma, step, color, length) + ShadowTerminationTransmittance + 1e-9;
+      ColoredStepError(sigma, step, color, length) + ShadowTerminationTransmittance + surface[c] + 1e-9;
     switch (parameters.Kind)
     {
       case ShadowKind::DeepShadowMap:
@@ -296,8 +311,8 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
       case ShadowKind::OpacityLevels:
         // Three levels joined by smoothsteps (paper 001) approximate an exponential opacity
         // inside a medium within 0.1 (before 10 %, and between 50 and 90 %); past the
-        // medium the maximum opacity is exact.
-        tolerance += mesh ? 0.0 : 0.1;
+        // medium (none of it beyond the point, away from the light) the maximum is exact.
+        tolerance += body.Path(at, -toLight, std::numeric_limits<double>::infinity(), 0.0) > 0.0 ? 0.1 : 0.0;
         break;
       case ShadowKind::Stochastic:
         // Unbiased: 4 standard errors of the mean of offsets x photons Bernoulli tests.

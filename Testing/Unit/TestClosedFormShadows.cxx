@@ -84,7 +84,7 @@ Outcome CheckAgainstClosedForm(const std::string& what, const Body& body, const 
     const glm::dvec3 got = mesh
       ? MeshShadowTerm(*receiver.Mesh, at, shadow, light, parameters.StepFactor * cf::ViewStep)
       : shadow.Visibility(at);
-    const cf::Verdict verdict = cf::Judge(body, parameters, light, at, mesh, cell, got);
+    const cf::Verdict verdict = cf::Judge(body, parameters, light, at, cell, got);
     for (int c = 0; c < 3; ++c)
     {
       if (!verdict.Checked[c])
