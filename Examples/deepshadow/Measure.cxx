@@ -19,6 +19,7 @@
 #include "vtkTransform.h"
 
 #include <chrono>
+#include <limits>
 
 namespace deepshadow
 {
@@ -115,7 +116,9 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     this->Orbit();
     times.push_back(RenderFrame(this->Scene.Window));
   }
-  m.CameraMs = Median(times);
+  // No timed frames (report --frames 0, errors only): not measured.
+  const double unmeasured = std::numeric_limits<double>::quiet_NaN();
+  m.CameraMs = times.empty() ? unmeasured : Median(times);
   m.CameraPasses = mapper->GetLastPasses();
   m.Features = mapper->GetShaderFeatures();
   m.RebuiltForCamera = builds() != buildsBefore;
@@ -132,7 +135,7 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
       buildTimes.push_back(technique->GetLastBuildMilliseconds() + (second ? second->GetLastBuildMilliseconds() : 0.0));
     }
   }
-  m.LightMs = Median(times);
+  m.LightMs = times.empty() ? unmeasured : Median(times);
   m.BuildMs = buildTimes.empty() ? 0.0 : Median(buildTimes);
   this->Restore();
   m.Picture = this->Capture(false);

@@ -403,7 +403,8 @@ OUTPUT:
   --json FILE             statistics as JSON: technique, width, height, frames, build_ms,
                           render_ms (median over frames after a warm-up, GL finished),
                           first_frame_ms, shadow_bytes, shadow_builds, and more
-  --frames N              timed frames after one warm-up frame (default 5)
+  --frames N              timed frames after one warm-up frame (default 5); report: 0
+                          measures errors only (the guard against no shadows, no timing)
   --verbose               also print VTK's own error and warning messages
 
 Exit codes: 0 success, 2 bad arguments or input (one line on stderr), 1 other failures.
@@ -658,7 +659,7 @@ Options Options::Parse(int argc, char* argv[])
     }
     else if (key == "--frames")
     {
-      o.Frames = ParseInteger(key, next(), 1, 100000);
+      o.Frames = ParseInteger(key, next(), 0, 100000);
     }
     else if (key == "--verbose")
     {
@@ -729,6 +730,10 @@ Options Options::Parse(int argc, char* argv[])
   if (o.Command == "all" || o.Command == "report")
   {
     o.OutDir = o.Out;
+  }
+  if (o.Frames == 0 && o.Command != "report")
+  {
+    throw UsageError("--frames 0 (errors only, no timing) is for report");
   }
   return o;
 }

@@ -50,6 +50,15 @@ const std::vector<std::string> FullSweep{ "rays", "rays:shadow-step-factor=0.5",
   "dsm-color-cached", "dsm3", "dsm3:shadow-map-size=256", "dsm3-cached", "cssm",
   "cssm:cssm-offsets=7", "cssm:cssm-offsets=21", "cssm:cssm-photons=4", "cssm-cached" };
 
+// The guard: a translucent technique (every one but opaque rays and shadow maps) at its
+// defaults must be at least as accurate as no shadows at all; its error is the image's RMSE
+// against the ground truth of its kind, grey or coloured.
+bool GuardedByNone(const std::string& technique, const std::string& parameters)
+{
+  return parameters == "defaults" && technique != "none" && technique.rfind("rays-opaque", 0) != 0 &&
+    technique.rfind("shadowmap", 0) != 0;
+}
+
 // One or two settings per technique: a first look in a few minutes.
 const std::vector<std::string> QuickSweep{ "rays", "rays-cached", "shadowmap", "dsm",
   "dsm:layers=2", "dsm-cached", "dsm-color", "dsm3", "cssm", "cssm-cached" };
@@ -67,6 +76,10 @@ struct Row
   ImageDifference ShadowError;
   bool ParetoCamera = false;
   bool ParetoLight = false;
+  /** The unshadowed picture's RMSE against the same ground truth (grey or coloured). */
+  double UnshadowedError = 0.0;
+  /** A translucent technique at its defaults less accurate than no shadows (a defect). */
+  bool WorseThanNone = false;
   std::string Slug; // file names of its pictures
 };
 
@@ -137,7 +150,7 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
          "unshadowed_ms,build_ms,render_ms,render_ratio,light_frame_ms,light_ratio,shadow_bytes,"
          "rmse,max_abs,shadow_rmse,shadow_max_abs,pareto_camera,pareto_light,dsm_nodes_avg,"
          "dsm_nodes_max,dsm_texels_overflowed,dsm_epsilon_max,rebuilt_when_camera_moved,"
-         "camera_frame_passes,shader_features\n";
+         "camera_frame_passes,shader_features,worse_than_none\n";
   for (const Row& r : rows)
   {
     csv << CsvField(r.Scene) << ',' << CsvField(r.Technique) << ',' << CsvField(r.Parameters) << ','
@@ -151,8 +164,8 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
         << (r.ParetoCamera ? 1 : 0) << ',' << (r.ParetoLight ? 1 : 0) << ','
         << Number(r.M.NodesAverage, "%.3f") << ',' << r.M.NodesMax << ',' << r.M.TexelsOverflowed
         << ',' << Number(r.M.EpsilonMax) << ',' << (r.M.RebuiltForCamera ? 1 : 0) << ','
-        << CsvField(Join(r.M.CameraPasses, " ")) << ',' << CsvField(Join(r.M.Features, " "))
-        << '\n';
+        << CsvField(Join(r.M.CameraPasses, " ")) << ',' << CsvField(Join(r.M.Features, " ")) << ','
+        << (r.WorseThanNone ? 1 : 0) << '\n';
   }
 }
 
@@ -247,11 +260,14 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   {
     throw UsageError("cannot write " + path);
   }
+  const bool timed = options.Frames > 0;
   md << "# vtkDeepShadow: error against run time\n\n"
      << "Written by `" << command << "` in " << Number(minutes, "%.1f") << " minutes on "
      << renderer << ". Images " << options.Width << "x" << options.Height << " (maps "
-     << "at their own sizes), errors at " << options.ErrorWidth << "x" << options.ErrorHeight
-     << ", medians of " << options.Frames << " frames after a warm-up, GL finished.\n\n"
+     << "at their own sizes), errors at " << options.ErrorWidth << "x" << options.ErrorHeight << ", "
+     << (timed ? "medians of " + std::to_string(options.Frames) + " frames after a warm-up, GL finished"
+               : "errors only (--frames 0: no timing)")
+     << ".\n\n"
      << "- *frame / unshadowed*: frame time over the unshadowed frame of the same run, while "
         "only the camera orbits (structures reused) and while the key light turns 3 degrees a "
         "frame (structures rebuilt every frame). *build*: median build time of those frames "
@@ -271,15 +287,45 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
      << "- *Pareto*: no other row is both at least as fast and at least as accurate (C: "
         "camera moves, L: light moves). `results.csv` has every figure.\n\n";
 
-  md << "## Which technique for which budget\n\n"
-     << "The most accurate technique (and its RMSE) whose frame fits the budget, when only the "
-        "camera moves (structures reused):\n\n";
-  WriteBudgetMatrix(md, rows, scenes, true);
-  md << "The same when the light moves every frame (a build every frame):\n\n";
-  WriteBudgetMatrix(md, rows, scenes, false);
-  md << "Per scene, the whole Pareto front read from the fastest up:\n\n";
-  for (const std::string& scene : scenes)
+  std::vector<const Row*> defects;
+  for (const Row& r : rows)
   {
+    if (r.WorseThanNone)
+    {
+      defects.push_back(&r);
+    }
+  }
+  md << "## Guard: no translucent technique worse than no shadows\n\n"
+     << "A translucent technique (rays, rays-color, dsm, dsm-color, dsm3, cssm and their cached "
+        "forms) at its defaults whose RMSE exceeds the unshadowed picture's (against the ground "
+        "truth of its kind) is a defect. ";
+  if (defects.empty())
+  {
+    md << "None here.\n\n";
+  }
+  else
+  {
+    md << "**" << defects.size() << " here:**\n\n| scene | technique | RMSE | unshadowed RMSE |\n|---|---|---|---|\n";
+    for (const Row* r : defects)
+    {
+      md << "| " << r->Scene << " | `" << r->Spec << "` | " << Number(r->Error.RMSE, "%.5f") << " | "
+         << Number(r->UnshadowedError, "%.5f") << " |\n";
+    }
+    md << "\n";
+  }
+
+  for (const std::string& scene : timed ? scenes : std::vector<std::string>())
+  {
+    if (scene == scenes.front())
+    {
+      md << "## Which technique for which budget\n\n"
+         << "The most accurate technique (and its RMSE) whose frame fits the budget, when only the "
+            "camera moves (structures reused):\n\n";
+      WriteBudgetMatrix(md, rows, scenes, true);
+      md << "The same when the light moves every frame (a build every frame):\n\n";
+      WriteBudgetMatrix(md, rows, scenes, false);
+      md << "Per scene, the whole Pareto front read from the fastest up:\n\n";
+    }
     std::vector<const Row*> sceneRows;
     for (const Row& r : rows)
     {
@@ -296,7 +342,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
 
   for (const std::string& scene : scenes)
   {
-    md << "## " << scene << "\n\n![error against time](" << scene << "/error-vs-time.png)\n\n"
+    md << "## " << scene << "\n\n" << (timed ? "![error against time](" + scene + "/error-vs-time.png)\n\n" : "")
        << "| technique | parameters | build ms | frame ms | frame / unshadowed | light moves | "
           "MiB | RMSE | max | shadow RMSE | shadow max | Pareto |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -306,7 +352,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
       {
         continue;
       }
-      md << "| " << r.Technique << " | " << r.Parameters << " | "
+      md << "| " << r.Technique << (r.WorseThanNone ? " **(worse than none)**" : "") << " | " << r.Parameters << " | "
          << (r.M.BuildMs > 0.0 ? Number(r.M.BuildMs, "%.1f") : "-") << " | "
          << Number(r.M.CameraMs, "%.1f") << " | " << Number(r.M.CameraMs / r.Baseline, "%.2f")
          << " | " << Number(r.M.LightMs / r.Baseline, "%.2f") << " | "
@@ -411,14 +457,27 @@ int RunReport(const Options& options)
       rows.push_back(row);
     }
 
-    // Errors against the ground truth of the same kind (grey or coloured), and the pictures.
+    // Errors against the ground truth of the same kind (grey or coloured), and the pictures;
+    // the unshadowed picture's against both, for the guard.
     bool anyColored = false;
+    for (size_t i = first; i < rows.size(); ++i)
+    {
+      anyColored = anyColored || rows[i].Colored;
+    }
+    const double unshadowedGrey = Compare(rows[first].M.Picture, grey.Picture).RMSE;
+    const double unshadowedColored = anyColored ? Compare(rows[first].M.Picture, bench.Truth(true).Picture).RMSE : 0.0;
     for (size_t i = first; i < rows.size(); ++i)
     {
       Row& r = rows[i];
       const GroundTruth& truth = bench.Truth(r.Colored);
-      anyColored = anyColored || r.Colored;
       r.Error = Compare(r.M.Picture, truth.Picture);
+      r.UnshadowedError = r.Colored ? unshadowedColored : unshadowedGrey;
+      r.WorseThanNone = GuardedByNone(r.Technique, r.Parameters) && r.Error.RMSE > r.UnshadowedError;
+      if (r.WorseThanNone)
+      {
+        std::fprintf(stderr, "report: DEFECT: %s on %s is less accurate than no shadows (RMSE %.5f > %.5f)\n",
+          r.Spec.c_str(), scene.c_str(), r.Error.RMSE, r.UnshadowedError);
+      }
       r.ShadowError = Compare(r.M.ShadowTerm, truth.ShadowTerm);
       WritePNG(ToImageData(r.M.Picture), directory + "/" + r.Slug + ".png");
       WritePNG(ToImageData(AbsoluteDifference(r.M.Picture, truth.Picture, 10.0)),
@@ -435,7 +494,10 @@ int RunReport(const Options& options)
     {
       sceneRows.push_back(&rows[i]);
     }
-    ChartScene(directory, scene, sceneRows);
+    if (options.Frames > 0)
+    {
+      ChartScene(directory, scene, sceneRows);
+    }
   }
 
   WriteCsv(options.OutDir + "/results.csv", rows, options);
@@ -446,8 +508,8 @@ int RunReport(const Options& options)
   }
   WriteMarkdown(options.OutDir + "/README.md", rows, scenes, truths, options, renderer, command,
     elapsed() / 60.0);
-  std::fprintf(stderr, "report: %zu rows in %.0f s: %s/README.md, results.csv, <scene>/error-vs-time.png\n",
-    rows.size(), elapsed(), options.OutDir.c_str());
+  std::fprintf(stderr, "report: %zu rows in %.0f s: %s/README.md, results.csv%s\n", rows.size(), elapsed(),
+    options.OutDir.c_str(), options.Frames > 0 ? ", <scene>/error-vs-time.png" : " (errors only)");
   return 0;
 }
 
