@@ -226,7 +226,8 @@ struct Stage
 struct Tally
 {
   int Judged = 0, Failed = 0;
-  double MaxError = 0.0;
+  double LargestError = 0.0; // |got - expected| over the judged channels
+  double MaxError = 0.0;     // by how much the worst one exceeds its tolerance
   std::string Worst;
 };
 
@@ -240,6 +241,7 @@ void Judge(Tally& tally, const cf::Body& body, const deepshadow::ShadowParameter
   {
     judged = judged || v.Checked[c];
     good = good && v.Good(c);
+    tally.LargestError = v.Checked[c] ? std::max(tally.LargestError, v.Error[c]) : tally.LargestError;
     if (v.Checked[c] && v.Error[c] - v.Tolerance[c] > tally.MaxError)
     {
       tally.MaxError = v.Error[c] - v.Tolerance[c];
@@ -256,8 +258,8 @@ void Judge(Tally& tally, const cf::Body& body, const deepshadow::ShadowParameter
 bool Report(const std::string& what, const Tally& tally, int atLeast)
 {
   const bool ok = tally.Judged >= atLeast && tally.Failed <= tally.Judged / 200;
-  std::printf("%-52s %5d pixels judged, %3d beyond their tolerance%s%s\n", what.c_str(), tally.Judged, tally.Failed,
-    tally.Failed ? ", worst " : "", tally.Failed ? tally.Worst.c_str() : "");
+  std::printf("%-52s %5d pixels judged, largest error %.4f, %3d beyond their tolerance%s%s\n", what.c_str(),
+    tally.Judged, tally.LargestError, tally.Failed, tally.Failed ? ", worst " : "", tally.Failed ? tally.Worst.c_str() : "");
   return Check(what, ok);
 }
 
