@@ -210,6 +210,26 @@ struct Stage
     camera->SetClippingRange(1.0, 1000.0);
   }
 
+  /**
+   * Adds the body as a volume with `technique`, drawn with its transfer function (`drawn`) or
+   * with opacity 0, showing its shadow term (`term`) or its colour.
+   */
+  vtkDeepShadowVolumeMapper* AddVolume(const cf::Body& body, vtkDeepShadowTechnique* technique, bool drawn, bool term)
+  {
+    vtkNew<vtkDeepShadowVolumeMapper> mapper;
+    mapper->SetInputData(ImageOf(body));
+    mapper->SetShadowTechnique(technique);
+    if (term)
+    {
+      mapper->SetOutputModeToShadowTerm();
+    }
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(PropertyOf(body, drawn));
+    this->Renderer->AddVolume(volume);
+    return mapper;
+  }
+
   /** The world point where pixel (x, y)'s ray meets the plane through `point` normal to `axis`. */
   glm::dvec3 OnPlane(int x, int y, int axis, double at)
   {
@@ -269,15 +289,8 @@ bool BallOverGround(const std::string& name, const glm::dvec3& color)
   const auto ball = cf::Ball(0.04, color);
   const deepshadow::Light light = cf::Directional({ 1.0, 0.0, 1.0 });
   Stage stage({ -30.0, 0.0, -30.0 }, { 0.0, 0.0, -1.0 }, { 0.0, 1.0, 0.0 }, 30.0);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(ImageOf(*ball));
-  mapper->SetOutputModeToShadowTerm();
   const deepshadow::ShadowParameters p = Spec(name);
-  mapper->SetShadowTechnique(Make(p));
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(PropertyOf(*ball));
-  stage.Renderer->AddVolume(volume);
+  vtkDeepShadowVolumeMapper* mapper = stage.AddVolume(*ball, Make(p), true, true);
   vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
   groundMapper->SetInputData(Box({ -58.0, -28.0, -31.0 }, { -2.0, 28.0, -30.0 }));
   groundMapper->SetOutputModeToShadowTerm();
@@ -308,15 +321,8 @@ bool SlabEdgeOn(const std::string& name)
   const auto slab = cf::Slab(0.06);
   const deepshadow::Light light = cf::Directional({ std::sin(cf::Pi / 6.0), 0.0, std::cos(cf::Pi / 6.0) });
   Stage stage({ 19.5, 19.5, 19.5 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 }, 20.0);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(ImageOf(*slab));
-  mapper->SetOutputModeToShadowTerm();
   const deepshadow::ShadowParameters p = Spec(name);
-  mapper->SetShadowTechnique(Make(p));
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(PropertyOf(*slab));
-  stage.Renderer->AddVolume(volume);
+  vtkDeepShadowVolumeMapper* mapper = stage.AddVolume(*slab, Make(p), true, true);
   stage.Renderer->AddLight(LightOf(light));
   stage.Window->Render();
   const deepshadow::Image picture = deepshadow::testing::Grab(stage.Window);
@@ -346,17 +352,11 @@ bool MediumOntoPlane(const std::string& name, bool spot, const glm::dvec3& color
   const deepshadow::Light light = spot ? cf::Positional({ 20.0, 20.0, 70.0 }, { 20.0, 20.0, 0.0 }, 20.0)
                                        : cf::Positional({ 20.0, 20.0, 20.0 }, { 20.0, 20.0, 0.0 });
   Stage stage({ 20.0, 20.0, 8.0 }, { 0.0, 0.0, -1.0 }, { 0.0, 1.0, 0.0 }, 20.0);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(ImageOf(*medium));
   deepshadow::ShadowParameters p = Spec(name);
   p.MapSize = 256;
   const vtkSmartPointer<vtkDeepShadowTechnique> technique = Make(p);
   technique->SetShadowProperty(PropertyOf(*medium));
-  mapper->SetShadowTechnique(technique);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(PropertyOf(*medium, false));
-  stage.Renderer->AddVolume(volume);
+  vtkDeepShadowVolumeMapper* mapper = stage.AddVolume(*medium, technique, false, false);
   vtkNew<vtkDeepShadowPolyDataMapper> planeMapper;
   planeMapper->SetInputData(Square({ 1.0, 1.0 }, { 39.0, 39.0 }, 8.0));
   planeMapper->SetOutputModeToShadowTerm();
@@ -396,29 +396,16 @@ bool BallOverSecondVolume(const std::string& name)
   const auto ball = cf::Ball(0.04);
   const deepshadow::Light light = cf::Directional({ 0.0, 0.0, 1.0 });
   Stage stage({ 0.0, 0.0, -30.0 }, { 0.0, 0.0, -1.0 }, { 0.0, 1.0, 0.0 }, 22.0);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(ImageOf(*ball));
   const deepshadow::ShadowParameters p = Spec(name);
   const vtkSmartPointer<vtkDeepShadowTechnique> technique = Make(p);
   technique->SetShadowProperty(PropertyOf(*ball));
-  mapper->SetShadowTechnique(technique);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(PropertyOf(*ball, false));
-  stage.Renderer->AddVolume(volume);
+  vtkDeepShadowVolumeMapper* mapper = stage.AddVolume(*ball, technique, false, false);
 
   const auto layer = std::make_unique<cf::Body>(glm::ivec3(41, 41, 5), glm::dvec3(-20.0, -20.0, -32.0), 0.5,
     glm::dvec3(0.0), [](const glm::dvec3&) { return 1.0f; });
-  vtkNew<vtkDeepShadowVolumeMapper> layerMapper;
-  layerMapper->SetInputData(ImageOf(*layer));
-  layerMapper->SetOutputModeToShadowTerm();
   vtkNew<vtkDeepShadowRayTechnique> own;
   own->SetShadowProperty(PropertyOf(*layer, false));
-  layerMapper->SetShadowTechnique(own);
-  vtkNew<vtkVolume> layerVolume;
-  layerVolume->SetMapper(layerMapper);
-  layerVolume->SetProperty(PropertyOf(*layer));
-  stage.Renderer->AddVolume(layerVolume);
+  vtkDeepShadowVolumeMapper* layerMapper = stage.AddVolume(*layer, own, true, true);
   stage.Renderer->AddLight(LightOf(light));
   stage.Window->Render();
   const deepshadow::Image picture = deepshadow::testing::Grab(stage.Window);
