@@ -439,7 +439,6 @@ SceneSetup SceneSetup::Build(const Options& options)
       csg->AddInputData(bound);
     }
     csg->SetExpression(setup.BoundExpression);
-    csg->SetGlobalWarningDisplay(0);
     csg->Update();
     if (!csg->GetLastError().empty())
     {
@@ -587,7 +586,6 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
     throw UsageError("unsupported mesh format '" + extension + "' of " + path +
       " (.vtp, .vtk, .stl, .ply, .obj)");
   }
-  reader->SetGlobalWarningDisplay(0);
   reader->Update();
   vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!mesh || mesh->GetNumberOfCells() == 0)
