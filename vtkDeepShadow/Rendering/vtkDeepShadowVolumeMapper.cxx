@@ -245,6 +245,58 @@ vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper()
   this->SetShadowTechnique(nullptr);
 }
 
+void vtkDeepShadowVolumeMapper::SetSampleDistance(double distance)
+{
+  if (!(distance >= 0.0) || !std::isfinite(distance))
+  {
+    vtkErrorMacro("SetSampleDistance(" << distance << "): the sample distance must be finite "
+                  "and >= 0 (0: the default); it stays " << this->SampleDistance);
+    return;
+  }
+  if (distance != this->SampleDistance)
+  {
+    this->SampleDistance = distance;
+    this->Modified();
+  }
+}
+
+void vtkDeepShadowVolumeMapper::SetTerminationOpacity(double opacity)
+{
+  if (std::isnan(opacity))
+  {
+    vtkErrorMacro("SetTerminationOpacity(nan): the termination opacity must be a number in "
+                  "[0, 1]; it stays " << this->TerminationOpacity);
+    return;
+  }
+  opacity = std::clamp(opacity, 0.0, 1.0);
+  if (opacity != this->TerminationOpacity)
+  {
+    this->TerminationOpacity = opacity;
+    this->Modified();
+  }
+}
+
+double* vtkDeepShadowVolumeMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds();
+  vtkImageData* input = this->GetImageInput();
+  if (!input || std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+  {
+    return bounds;
+  }
+  // VTK's culler drops a prop with such bounds before Render() could say why: said here.
+  vtkDataArray* scalars = nullptr;
+  std::string problem = adapter::CheckVolumeInput(input, scalars);
+  if (problem.empty())
+  {
+    problem = adapter::CheckVolumePlacement(
+      adapter::IndexToWorld(input, nullptr), glm::ivec3(input->GetDimensions()[0],
+                                               input->GetDimensions()[1], input->GetDimensions()[2]));
+  }
+  this->ReportError(problem.empty() ? "the volume's bounds are not finite" : problem);
+  return bounds;
+}
+
 void vtkDeepShadowVolumeMapper::SetShadowTechnique(vtkDeepShadowTechnique* technique)
 {
   if (technique == this->ShadowTechnique)
@@ -562,6 +614,16 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
 
   const glm::dmat4 indexToWorld = adapter::IndexToWorld(input, volume->GetMatrix());
+  std::string problem = adapter::CheckVolumePlacement(indexToWorld, impl.Dims);
+  if (problem.empty())
+  {
+    problem = adapter::CheckVolumeProperty(property);
+  }
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return;
+  }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance
                                                  : deepshadow::DefaultSampleDistance(indexToWorld);
@@ -679,6 +741,12 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (truncated)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
+  }
+  problem = adapter::CheckLights(context.Lights);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return;
   }
   if (technique)
   {
