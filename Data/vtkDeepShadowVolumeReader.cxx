@@ -171,7 +171,7 @@ bool vtkDeepShadowVolumeReader::CanReadFile(const char* fileName)
 void vtkDeepShadowVolumeReader::Fail(const std::string& problem)
 {
   std::ostringstream message;
-  message << "Cannot read volume '" << (this->FileName ? this->FileName : "") << "': " << problem;
+  message << "cannot read volume '" << (this->FileName ? this->FileName : "") << "': " << problem;
   this->LastError = message.str();
   vtkErrorMacro(<< this->LastError);
 }

@@ -6,6 +6,7 @@
 #include "vtkDeepShadowCSGFilter.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowHybridScene.h"
+#include "vtkDeepShadowMeshReader.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
@@ -24,12 +25,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataReader.h"
-#include "vtkSTLReader.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkProperty.h"
@@ -46,7 +42,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace deepshadow
@@ -281,14 +276,6 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
   {
     vtkDeepShadowHybridScene::Mesh mesh;
     mesh.PolyData = ReadMesh(spec.File);
-    for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
-    {
-      const double* p = mesh.PolyData->GetPoint(i);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      {
-        throw UsageError("mesh " + spec.File + " has points that are not finite (NaN or infinite)");
-      }
-    }
     mesh.Opacity = spec.Opacity;
     mesh.Color = spec.Color;
     vtkNew<vtkTransform> transform;
@@ -546,55 +533,22 @@ void RequireDrawn(const SceneSetup& setup)
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
-  if (!std::ifstream(path))
-  {
-    throw UsageError("cannot read mesh " + path);
-  }
-  std::string extension = path.substr(std::min(path.size(), path.find_last_of('.')));
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  // Every reader of these formats has SetFileName; STL points are merged as they are read.
-  auto make = [&path](auto reader) -> vtkSmartPointer<vtkAlgorithm> {
-    reader->SetFileName(path.c_str());
-    return reader;
-  };
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == ".vtp")
-  {
-    reader = make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
-  }
-  else if (extension == ".vtk")
-  {
-    reader = make(vtkSmartPointer<vtkPolyDataReader>::New());
-  }
-  else if (extension == ".stl")
-  {
-    auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->MergingOn();
-    reader = make(stl);
-  }
-  else if (extension == ".ply")
-  {
-    reader = make(vtkSmartPointer<vtkPLYReader>::New());
-  }
-  else if (extension == ".obj")
-  {
-    reader = make(vtkSmartPointer<vtkOBJReader>::New());
-  }
-  else
-  {
-    throw UsageError("unsupported mesh format '" + extension + "' of " + path +
-      " (.vtp, .vtk, .stl, .ply, .obj)");
-  }
+  vtkNew<vtkDeepShadowMeshReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!mesh || mesh->GetNumberOfCells() == 0)
+  if (!reader->GetLastError().empty())
   {
-    throw UsageError("no mesh could be read from " + path);
+    throw UsageError(reader->GetLastError());
   }
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->ShallowCopy(mesh);
-  return copy;
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  // Before any VTK filter sees it: they trust the point ids.
+  const std::string problem = vtkDeepShadowPolyDataMapper::CheckInput(mesh);
+  if (!problem.empty())
+  {
+    throw UsageError("cannot use mesh '" + path + "': " + problem);
+  }
+  return mesh;
 }
 
 std::string RendererString(vtkDeepShadowRenderWindow* window)
