@@ -59,7 +59,7 @@ std::string CheckMemoryBudget(const std::string& what, std::uint64_t bytes, std:
   const std::string asked = bytes == std::numeric_limits<std::uint64_t>::max()
     ? std::string("more than 2^64 bytes")
     : std::to_string(bytes) + " bytes (" + Readable(bytes) + ")";
-  return what + " needs " + asked + ", more than the memory budget of " +
+  return what + " would take " + asked + ", more than the memory budget of " +
     std::to_string(budget) + " bytes (" + Readable(budget) + ")";
 }
 

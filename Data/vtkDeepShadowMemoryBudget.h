@@ -24,7 +24,7 @@ VTKDEEPSHADOWSCENES_EXPORT std::uint64_t DefaultMemoryBudget();
 VTKDEEPSHADOWSCENES_EXPORT std::uint64_t SaturatingProduct(std::uint64_t count, std::uint64_t size);
 
 /**
- * "" when `bytes` fit in `budget`, else one line: "WHAT needs N bytes (1.2 GiB), more than
+ * "" when `bytes` fit in `budget`, else one line: "WHAT would take N bytes (1.2 GiB), more than
  * the memory budget of M bytes (...)".
  */
 VTKDEEPSHADOWSCENES_EXPORT std::string CheckMemoryBudget(

@@ -1,5 +1,7 @@
 #include "SceneSetup.h"
 
+#include "Budget.h"
+
 #include "VolumeGrid.h"
 
 #include "vtkDeepShadowBoundedScene.h"
@@ -42,6 +44,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace deepshadow
@@ -50,14 +53,40 @@ namespace tool
 {
 namespace
 {
+// The range of the finite samples (NaN and +-Inf, which --replace-nonfinite replaces by the
+// extremes of the finite ones, would make the transfer function span infinity: blank).
+void FiniteRange(vtkImageData* data, double range[2])
+{
+  range[0] = 0.0;
+  range[1] = 1.0;
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  if (!scalars || scalars->GetNumberOfComponents() != 1)
+  {
+    return; // the mapper says why it cannot draw it
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    throw UsageError("the volume has no finite samples");
+  }
+  range[0] = lo;
+  range[1] = hi;
+}
+
 // A neutral look for files that come with none: grey, transparent low values, shaded.
 vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 {
-  double range[2] = { 0.0, 1.0 };
-  if (vtkDataArray* scalars = data->GetPointData()->GetScalars())
-  {
-    scalars->GetRange(range);
-  }
+  double range[2];
+  FiniteRange(data, range);
   const double width = range[1] > range[0] ? range[1] - range[0] : 1.0;
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
@@ -508,6 +537,8 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Renderer->AddLight(light);
   }
+  // Before the first frame allocates them: the frame, the shadow structures, the GPU copy.
+  RequireWithinBudget(options, setup.Data, setup.Pass != nullptr, setup.SecondVolume ? 2 : 1);
   return setup;
 }
 

@@ -280,20 +280,24 @@ double* vtkDeepShadowVolumeMapper::GetBounds()
 {
   double* bounds = this->Superclass::GetBounds();
   vtkImageData* input = this->GetImageInput();
-  if (!input || std::all_of(bounds, bounds + 6, [](double b) { return std::isfinite(b); }))
+  if (!input)
   {
     return bounds;
   }
-  // VTK's culler drops a prop with such bounds before Render() could say why: said here.
+  // VTK's renderer culls a volume whose bounds are NaN, or too small for its camera (1e-30),
+  // before Render() could say why: said here (once; Render() says the same).
   vtkDataArray* scalars = nullptr;
   std::string problem = adapter::CheckVolumeInput(input, scalars);
   if (problem.empty())
   {
+    const int* dims = input->GetDimensions();
     problem = adapter::CheckVolumePlacement(
-      adapter::IndexToWorld(input, nullptr), glm::ivec3(input->GetDimensions()[0],
-                                               input->GetDimensions()[1], input->GetDimensions()[2]));
+      adapter::IndexToWorld(input, nullptr), glm::ivec3(dims[0], dims[1], dims[2]));
   }
-  this->ReportError(problem.empty() ? "the volume's bounds are not finite" : problem);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+  }
   return bounds;
 }
 

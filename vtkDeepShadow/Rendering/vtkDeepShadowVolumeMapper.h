@@ -28,8 +28,8 @@
  * resolve (see deepshadow::adapter::CheckVolumePlacement); a scalar opacity unit distance
  * that is not positive, a transfer function point that is not finite; a light whose
  * position is not finite or beyond 1e18) is reported once per change with vtkErrorMacro
- * (also in GetLastError()) and the volume is not drawn (a volume whose bounds are not finite,
- * which VTK's renderer culls, is reported by GetBounds()).
+ * (also in GetLastError()) and the volume is not drawn (what makes VTK's renderer cull the
+ * volume is reported by GetBounds()).
  */
 #ifndef vtkDeepShadowVolumeMapper_h
 #define vtkDeepShadowVolumeMapper_h
@@ -218,8 +218,9 @@ public:
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
 
   /**
-   * The input's bounds. When they are not finite (NaN spacing, origin or direction), VTK's
-   * renderer culls the volume before Render() is called, so the error is reported here.
+   * The input's bounds. VTK's renderer culls a volume whose bounds are not finite (NaN
+   * spacing, origin or direction) or too small for its camera before Render() is called, so
+   * the input's and its placement's errors are also reported here.
    */
   double* GetBounds() override;
   using Superclass::GetBounds;
