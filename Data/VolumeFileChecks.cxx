@@ -76,8 +76,23 @@ bool IsFinite(const std::string& word)
   return !word.empty() && *end == '\0' && std::isfinite(v);
 }
 
+// Whether a header line is text: VTK's header parsers hang or misread on NUL and other
+// control bytes (seen: a NUL in a NRRD header line made VTK 9.1's reader wait forever).
+bool IsText(const std::string& line)
+{
+  for (char c : line)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if ((u < 32 && c != '\t' && c != '\r') || u == 127)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // "KEY = value" lines of a MetaImage header, keys lower case, up to ElementDataFile (the
-// last key; binary data may follow it in a .mha).
+// last key; binary data may follow it in a .mha). A line that is not text: the key "".
 std::map<std::string, std::string> MetaFields(const std::string& fileName)
 {
   std::map<std::string, std::string> fields;
@@ -85,6 +100,11 @@ std::map<std::string, std::string> MetaFields(const std::string& fileName)
   std::string line;
   for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines)
   {
+    if (!IsText(line))
+    {
+      fields[""] = line;
+      break;
+    }
     const size_t at = line.find('=');
     if (at == std::string::npos)
     {
@@ -107,6 +127,10 @@ std::string CheckMetaHeader(const std::string& fileName)
     const auto it = fields.find(key);
     return it == fields.end() ? nullptr : &it->second;
   };
+  if (field(""))
+  {
+    return "its header holds bytes that are not text before ElementDataFile";
+  }
   long long dims = 0;
   if (const std::string* text = field("ndims"))
   {
@@ -208,6 +232,15 @@ std::string CheckNrrdHeader(const std::string& fileName)
   std::getline(in, line); // NRRD000N, checked by the reader
   for (int lines = 0; lines < 1000 && std::getline(in, line) && !Trim(line).empty(); ++lines)
   {
+    if (in.eof())
+    {
+      // Seen here: VTK 9.1's NRRD reader waits forever for the rest of that line.
+      return "its header ends inside a line (no line break after '" + line.substr(0, 40) + "')";
+    }
+    if (!IsText(line))
+    {
+      return "its header line " + std::to_string(lines + 2) + " holds bytes that are not text";
+    }
     const size_t at = line.find(':');
     if (line[0] == '#' || at == std::string::npos || line.compare(at, 2, ":=") == 0)
     {
@@ -215,12 +248,16 @@ std::string CheckNrrdHeader(const std::string& fileName)
     }
     fields[SystemTools::LowerCase(Trim(line.substr(0, at)))] = Trim(line.substr(at + 1));
   }
+  for (const char* required : { "type", "dimension", "sizes", "encoding" })
+  {
+    // VTK's reader reads past its buffers without them.
+    if (!fields.count(required))
+    {
+      return std::string("its header lacks the required field '") + required + "'";
+    }
+  }
   long long dims = 0;
   const auto dimension = fields.find("dimension");
-  if (dimension == fields.end())
-  {
-    return "";
-  }
   if (!IsInteger(dimension->second, 1, 16, &dims))
   {
     return "its header's dimension: " + dimension->second + " is not a whole number from 1 to 16";
@@ -240,6 +277,17 @@ std::string CheckNrrdHeader(const std::string& fileName)
       {
         return "its header's sizes: " + sizes->second + " is not a list of positive whole numbers";
       }
+    }
+  }
+  const auto encoding = fields.find("encoding");
+  if (encoding != fields.end())
+  {
+    const std::string e = SystemTools::LowerCase(encoding->second);
+    if (e == "ascii" || e == "text" || e == "txt")
+    {
+      // Seen here: a ball written as ASCII reads as stripes (uchar) or nothing (short, float).
+      return "its data are ASCII-encoded, which VTK 9.1's NRRD reader misreads (the picture "
+             "would be wrong); write it with encoding raw or gzip";
     }
   }
   const auto spacings = fields.find("spacings");
@@ -479,12 +527,44 @@ std::string CheckDataFile(Format format, const std::string& fileName, std::uint6
   return problem.str();
 }
 
-std::string CheckAppendedData(vtkXMLDataParser* parser, const std::string& fileName)
+std::string CheckXMLImage(vtkXMLDataParser* parser, const std::string& fileName)
 {
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
   vtkXMLDataElement* image = root ? root->FindNestedElementWithName("ImageData") : nullptr;
-  vtkXMLDataElement* appended = root ? root->FindNestedElementWithName("AppendedData") : nullptr;
-  if (!image || !appended)
+  if (!image)
+  {
+    return "";
+  }
+  // Every piece within the whole extent (VTK copies a piece into the image by its extent,
+  // unchecked: a piece from -2^31 crashed it).
+  int whole[6];
+  if (image->GetVectorAttribute("WholeExtent", 6, whole) != 6)
+  {
+    return "its ImageData has no WholeExtent of six numbers";
+  }
+  for (int p = 0; p < image->GetNumberOfNestedElements(); ++p)
+  {
+    vtkXMLDataElement* piece = image->GetNestedElement(p);
+    int extent[6];
+    if (std::string(piece->GetName()) != "Piece")
+    {
+      continue;
+    }
+    if (piece->GetVectorAttribute("Extent", 6, extent) != 6)
+    {
+      return "its piece " + std::to_string(p) + " has no Extent of six numbers";
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      if (extent[2 * a] < whole[2 * a] || extent[2 * a + 1] > whole[2 * a + 1] ||
+        extent[2 * a] > extent[2 * a + 1])
+      {
+        return "its piece " + std::to_string(p) + "'s extent is not within its WholeExtent";
+      }
+    }
+  }
+  vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
+  if (!appended)
   {
     return ""; // no appended data: inline data that the XML parser checks
   }

@@ -31,7 +31,8 @@ Format FormatOf(const std::string& fileName);
 
 /**
  * The header fields VTK's MetaImage and NRRD readers misread without a word: counts that do
- * not match the number of dimensions, numbers that are not numbers, unknown element types.
+ * not match the number of dimensions, numbers that are not numbers, unknown element types,
+ * and NRRD's ASCII encoding (VTK 9.1 reads it wrong).
  */
 std::string CheckHeader(Format format, const std::string& fileName);
 
@@ -50,11 +51,11 @@ std::uint64_t ScalarBytes(vtkInformation* info);
 std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed);
 
 /**
- * VTK XML image data with appended data (raw, compressed or not): every array's block lies
- * within the file and holds the bytes its piece's extent needs. `parser` is the delegate's,
- * after its information was read.
+ * VTK XML image data: every piece's extent within the whole extent, and with appended data
+ * (raw, compressed or not) every array's block within the file and holding the bytes its
+ * piece's extent needs. `parser` is the delegate's, after its information was read.
  */
-std::string CheckAppendedData(vtkXMLDataParser* parser, const std::string& fileName);
+std::string CheckXMLImage(vtkXMLDataParser* parser, const std::string& fileName);
 
 }
 }

@@ -75,12 +75,14 @@ int vtkDeepShadowMeshReader::RequestData(
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".vtp")
   {
+    problem = deepshadow::meshfile::CheckVTP(name, bytes);
     auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     xml->SetFileName(name.c_str());
     reader = xml;
   }
   else if (ext == ".vtk")
   {
+    problem = deepshadow::meshfile::CheckLegacyVTK(name);
     auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
     legacy->SetFileName(name.c_str());
     reader = legacy;
@@ -99,6 +101,7 @@ int vtkDeepShadowMeshReader::RequestData(
   }
   else if (ext == ".obj")
   {
+    problem = deepshadow::meshfile::CheckOBJ(name, bytes);
     reader = geometry = vtkSmartPointer<vtkOBJReader>::New();
   }
   else

@@ -14,7 +14,9 @@
  *
  * VTK's PLY reader trusts the file (a truncated binary PLY or a header declaring 1e8
  * vertices crash it), so a PLY file is walked first: its header's grammar, and every element
- * within the file. A binary STL file must hold the triangles it declares. What VTK will
+ * within the file, the vertex indices of its faces within its vertices; an OBJ file's
+ * corners must refer to vertices, texture coordinates and normals it declares. A binary STL
+ * file must hold the triangles it declares. What VTK will
  * allocate must fit MemoryBudget. The cells' point ids and the points themselves are not
  * checked here: vtkDeepShadowPolyDataMapper::CheckInput does that for any vtkPolyData.
  */

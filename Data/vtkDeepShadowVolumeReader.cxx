@@ -327,7 +327,7 @@ int vtkDeepShadowVolumeReader::RequestData(
   }
   else if (auto* xml = vtkXMLImageDataReader::SafeDownCast(this->Reader))
   {
-    problem = deepshadow::volumefile::CheckAppendedData(xml->GetXMLParser(), this->FileName);
+    problem = deepshadow::volumefile::CheckXMLImage(xml->GetXMLParser(), this->FileName);
   }
   auto* errors = static_cast<ErrorCollector*>(this->Errors.Get());
   if (problem.empty())

@@ -209,6 +209,11 @@ std::string CheckMeshInput(vtkPolyData* mesh)
   for (const auto& kind : kinds)
   {
     vtkCellArray* cells = kind.second;
+    if (cells && !cells->IsValid())
+    {
+      return std::string("the mesh's ") + kind.first + " cells are inconsistent (their offsets do "
+                                                       "not index their point ids)";
+    }
     if (!cells || cells->GetNumberOfConnectivityIds() == 0)
     {
       continue;
