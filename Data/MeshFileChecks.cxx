@@ -506,7 +506,8 @@ std::string CheckLegacyVTK(const std::string& fileName)
   static const char* const known[] = { "1.0", "2.0", "3.0", "4.0", "4.1", "4.2", "5.1" };
   const std::string prefix = "# vtk DataFile Version ";
   bool good = version.compare(0, prefix.size(), prefix) == 0;
-  const std::string number = good ? Words(version.substr(prefix.size())).front() : "";
+  const std::vector<std::string> words = good ? Words(version.substr(prefix.size())) : std::vector<std::string>();
+  const std::string number = words.empty() ? "" : words.front();
   good = good && std::any_of(std::begin(known), std::end(known), [&](const char* v) { return number == v; });
   if (!good)
   {
@@ -516,7 +517,8 @@ std::string CheckLegacyVTK(const std::string& fileName)
   {
     return "its title line holds bytes that are not text";
   }
-  format = Words(format).empty() ? "" : Words(format).front();
+  const std::vector<std::string> formatWords = Words(format);
+  format = formatWords.empty() ? "" : formatWords.front();
   if (format != "ASCII" && format != "BINARY")
   {
     return "its third line is not ASCII or BINARY";

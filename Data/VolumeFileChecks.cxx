@@ -229,7 +229,16 @@ std::string CheckNrrdHeader(const std::string& fileName)
   std::ifstream in(fileName, std::ios::binary);
   std::string line;
   std::map<std::string, std::string> fields;
-  std::getline(in, line); // NRRD000N, checked by the reader
+  std::getline(in, line);
+  if (!line.empty() && line.back() == '\r')
+  {
+    line.pop_back();
+  }
+  if (line.size() != 8 || line.compare(0, 7, "NRRD000") != 0 || line[7] < '1' || line[7] > '5')
+  {
+    // VTK's reader checks "NRRD" only, and hung on a NUL byte later in that line.
+    return "its first line is not the magic NRRD0001 to NRRD0005";
+  }
   for (int lines = 0; lines < 1000 && std::getline(in, line) && !Trim(line).empty(); ++lines)
   {
     if (in.eof())
