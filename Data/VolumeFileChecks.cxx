@@ -250,12 +250,14 @@ std::string CheckNrrdHeader(const std::string& fileName)
     {
       return "its header line " + std::to_string(lines + 2) + " holds bytes that are not text";
     }
-    const size_t at = line.find(':');
-    if (line[0] == '#' || at == std::string::npos || line.compare(at, 2, ":=") == 0)
+    // A field is "name: value" (colon and space, as VTK's reader splits it: "sizes:16" is no
+    // field to it, and the image then had no size); "key:=value" pairs and comments are not.
+    const size_t at = line.find(": ");
+    if (line[0] == '#' || at == std::string::npos || line.find(":=") < at)
     {
-      continue; // comments and key/value pairs
+      continue;
     }
-    fields[SystemTools::LowerCase(Trim(line.substr(0, at)))] = Trim(line.substr(at + 1));
+    fields[SystemTools::LowerCase(Trim(line.substr(0, at)))] = Trim(line.substr(at + 2));
   }
   for (const char* required : { "type", "dimension", "sizes", "encoding" })
   {

@@ -495,6 +495,14 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Volume->SetMapper(setup.Mapper);
   setup.Volume->SetProperty(property);
   setup.Renderer->AddVolume(setup.Volume);
+  // What the mapper cannot render (a placement single precision or VTK's camera cannot
+  // resolve: a 1e-30 volume is blank on the GPU and in the CPU reference alike) is refused
+  // for every command, before the camera is set up on it.
+  setup.Mapper->GetBounds();
+  if (!setup.Mapper->GetLastError().empty())
+  {
+    throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
+  }
 
   vtkCamera* camera = setup.Renderer->GetActiveCamera();
   if (options.VolumeFile.empty())

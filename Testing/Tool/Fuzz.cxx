@@ -18,6 +18,7 @@
 
 #include "vtkNew.h"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -490,8 +491,19 @@ int main(int argc, char* argv[])
       else
       {
         ++exit2;
-        std::string reason = tool.Stderr.substr(12, 40);
-        reasons[reason.substr(0, reason.find_first_of(":'"))]++;
+        // The problem without the file name: after "cannot read ... 'NAME': " or
+        // "cannot render NAME: ".
+        std::string reason = tool.Stderr.substr(12, tool.Stderr.size() - 13);
+        const size_t named = reason.find("': ");
+        if (named != std::string::npos)
+        {
+          reason = reason.substr(named + 3);
+        }
+        else if (reason.rfind("cannot render", 0) == 0 && reason.find(": ") != std::string::npos)
+        {
+          reason = reason.substr(reason.find(": ") + 2);
+        }
+        reasons[reason.substr(0, 48)]++;
       }
     }
     else
@@ -519,9 +531,16 @@ int main(int argc, char* argv[])
   std::printf("%d cases (seed %llu, from %d) in %.1f s: %d rendered (exit 0), %d refused with one "
               "line (exit 2), %d failed\n",
     settings.Count, settings.Seed, settings.First, seconds, exit0, exit2, failed);
+  // The ten commonest refusals.
+  std::vector<std::pair<int, std::string>> common;
   for (const auto& reason : reasons)
   {
-    std::printf("  %4d x %s...\n", reason.second, reason.first.c_str());
+    common.emplace_back(reason.second, reason.first);
+  }
+  std::sort(common.rbegin(), common.rend());
+  for (size_t r = 0; r < common.size() && r < 10; ++r)
+  {
+    std::printf("  %4d x %s...\n", common[r].first, common[r].second.c_str());
   }
   return failed == 0 ? 0 : 1;
 }

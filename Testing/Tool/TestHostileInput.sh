@@ -75,6 +75,8 @@ overwrite corrupt.mha 360 '\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\x5a\
 expect 2 "a corrupt compressed .mha" "Uncompress failed" -- "$tool" render --volume corrupt.mha "${small[@]}" --out x.png
 sed 's/^encoding: raw$/encoding: ascii/' seeds/volume.nrrd > ascii.nrrd
 expect 2 "an ASCII NRRD (VTK 9.1 misreads it)" "ASCII" -- "$tool" render --volume ascii.nrrd "${small[@]}" --out x.png
+sed 's/^sizes: 16 16 16$/sizes:16 16 16/' seeds/volume.nrrd > nospace.nrrd
+expect 2 "a NRRD field without its space (VTK read no size and crashed)" "sizes" -- "$tool" render --volume nospace.nrrd "${small[@]}" --out x.png
 printf 'NRRD0004\ntype: uchar\ndimension: 3\nsizes: 16 16 16\nencoding: raw\ndata file: volume-nhdr.raw' > seeds/cut.nhdr
 expect 2 "a NRRD header cut inside a line (VTK waited forever)" "inside a line" -- "$tool" render --volume seeds/cut.nhdr "${small[@]}" --out x.png
 # +Inf samples: an error, or with --replace-nonfinite the data's largest finite value, with
@@ -90,6 +92,8 @@ for s in 1e-30 1e30; do
   sed "s/Spacing=\"2 2 2.5\"/Spacing=\"$s $s $s\"/" seeds/volume-raw.vti > spacing$s.vti
   expect 2 "spacing $s (blank before)" "voxel edge" -- "$tool" render --volume spacing$s.vti "${small[@]}" --out x.png
 done
+expect 2 "spacing 1e-30, CPU reference (blank before: VTK's camera cannot frame it)" "voxel edge" -- \
+  "$tool" reference --volume spacing1e-30.vti --size 32x32 --out x.png
 # A volume a millionth the size (spacing and origin scaled) looks the same; only where float
 # positions cannot resolve its voxels is it refused.
 sed 's/Spacing="2 2 2.5"/Spacing="2e-6 2e-6 2.5e-6"/; s/Origin="-15 -15 -18.75"/Origin="-15e-6 -15e-6 -18.75e-6"/' \
