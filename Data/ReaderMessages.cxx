@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkExecutive.h"
+#include "vtkObject.h"
 #include "vtkXMLReader.h"
 
 #include <iostream>
@@ -74,6 +75,17 @@ void ErrorCollector::Clear()
 std::string ErrorCollector::Reason(const std::string& fallback) const
 {
   return this->Errors.empty() ? fallback : this->Errors.front();
+}
+
+WarningDisplayOn::WarningDisplayOn()
+  : Saved(vtkObject::GetGlobalWarningDisplay())
+{
+  vtkObject::GlobalWarningDisplayOn();
+}
+
+WarningDisplayOn::~WarningDisplayOn()
+{
+  vtkObject::SetGlobalWarningDisplay(this->Saved);
 }
 
 CerrCapture::CerrCapture()

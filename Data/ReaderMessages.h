@@ -1,8 +1,9 @@
 // Internal to DeepShadow::Scenes: what the file readers hear from the VTK readers they
 // delegate to. Errors and warnings arrive as events on observers attached to each delegate
-// (never through VTK's global output window, whose switch must stay on: in VTK 9.1 it also
-// gates the events), and what MetaIO and similar libraries print to std::cerr is captured
-// while a delegate runs, so that a reader can report one clear line.
+// (never through VTK's output window; VTK's global warning switch is held on while a delegate
+// runs, because in VTK 9.1 it also gates the events), and what MetaIO and similar libraries
+// print to std::cerr is captured while a delegate runs, so that a reader can report one
+// clear line whatever the application set.
 #ifndef deepshadow_ReaderMessages_h
 #define deepshadow_ReaderMessages_h
 
@@ -47,6 +48,23 @@ public:
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
   bool ExecutiveFailed = false;
+};
+
+/**
+ * While alive, VTK's global warning display is on, whatever the application set: in VTK 9.1
+ * it also gates error and warning events, so a delegate's errors would not reach the
+ * collector. Nothing is printed by it: the delegate's events go to the collector.
+ */
+class WarningDisplayOn
+{
+public:
+  WarningDisplayOn();
+  ~WarningDisplayOn();
+  WarningDisplayOn(const WarningDisplayOn&) = delete;
+  WarningDisplayOn& operator=(const WarningDisplayOn&) = delete;
+
+private:
+  int Saved;
 };
 
 /**

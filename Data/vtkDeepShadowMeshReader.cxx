@@ -137,6 +137,7 @@ int vtkDeepShadowMeshReader::RequestData(
   std::vector<std::string> printed;
   try
   {
+    deepshadow::reader::WarningDisplayOn heard;
     CerrCapture capture;
     reader->Update();
     printed = capture.Lines();

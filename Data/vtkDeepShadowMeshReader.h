@@ -10,7 +10,8 @@
  * Bad input (no file name, missing or unreadable file, unknown extension, a file the reader
  * cannot parse, no cells) is reported with one vtkErrorMacro line that names the file and
  * the problem, also kept in GetLastError(); the output stays empty. Messages of VTK's reader
- * are collected by observers on it (and what it prints to std::cerr), not printed.
+ * are collected by observers on it (VTK's global warning display held on while it runs,
+ * whatever the application set) and what it prints to std::cerr, not printed.
  *
  * VTK's PLY reader trusts the file (a truncated binary PLY or a header declaring 1e8
  * vertices crash it), so a PLY file is walked first: its header's grammar, and every element

@@ -30,6 +30,7 @@ namespace
 {
 using deepshadow::reader::CerrCapture;
 using deepshadow::reader::ErrorCollector;
+using deepshadow::reader::WarningDisplayOn;
 using deepshadow::volumefile::Format;
 using deepshadow::volumefile::FormatOf;
 
@@ -92,6 +93,7 @@ std::string RunDelegate(vtkAlgorithm* reader, ErrorCollector* errors, bool infor
   const std::string& fallback)
 {
   errors->Clear();
+  WarningDisplayOn heard;
   CerrCapture printed;
   try
   {

@@ -9,10 +9,11 @@
  * Bad input (no file name, missing or unreadable file, unknown extension, a file the chosen
  * reader cannot parse, no point scalars) is reported with one vtkErrorMacro line that names the
  * file and the problem; the request then fails and the output stays empty. The same line is
- * kept in GetLastError() for command-line tools. Messages of the underlying VTK reader are
- * collected by observers on it (whatever VTK's global warning switch says, as long as it is
- * on, and whatever it printed to std::cerr) rather than printed; the first one becomes the
- * reason on that line.
+ * kept in GetLastError() for command-line tools (with VTK's global warning display off, the
+ * vtkErrorMacro is silent but GetLastError() is not). Messages of the underlying VTK reader
+ * are collected by observers on it (VTK's global warning display is held on while it runs,
+ * since it also gates the events, whatever the application set) and what it prints to
+ * std::cerr is captured, rather than printed; the first one becomes the reason on that line.
  *
  * Before VTK's reader reads any data, the file is checked against what its header declares,
  * because VTK's readers trust it: header fields VTK misreads (counts that do not match the
