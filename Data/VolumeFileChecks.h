@@ -1,9 +1,10 @@
 // Internal to DeepShadow::Scenes: checks of volume files made before VTK's readers read their
 // data, because those readers trust the headers. They accept a truncated file (zero-filled
 // or garbage data, or a crash), allocate whatever a header declares (std::bad_alloc for
-// 100000^3), and misread a broken header (an unknown MetaImage element type read as a
-// 1x1x1 image). Each check returns "" when it finds nothing wrong (or does not cover the
-// file's layout), else the problem in words, for vtkDeepShadowVolumeReader's one line.
+// 100000^3), misread a broken header (an unknown MetaImage element type read as a 1x1x1
+// image) and hang on a NRRD header line cut short or holding a NUL byte. Each check returns
+// "" when it finds nothing wrong (or does not cover the file's layout), else the problem in
+// words, for vtkDeepShadowVolumeReader's one line.
 #ifndef deepshadow_VolumeFileChecks_h
 #define deepshadow_VolumeFileChecks_h
 
