@@ -1,5 +1,9 @@
 #include "vtkDeepShadowVolumeReader.h"
 
+#include "ReaderMessages.h"
+#include "VolumeFileChecks.h"
+#include "vtkDeepShadowMemoryBudget.h"
+
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
@@ -17,42 +21,22 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <cstdint>
-#include <fstream>
+#include <new>
 #include <sstream>
 
 vtkStandardNewMacro(vtkDeepShadowVolumeReader);
 
 namespace
 {
-enum class Format
-{
-  Unknown,
-  XML,
-  Meta,
-  Nrrd
-};
+using deepshadow::reader::CerrCapture;
+using deepshadow::reader::ErrorCollector;
+using deepshadow::reader::WarningDisplayOn;
+using deepshadow::volumefile::Format;
+using deepshadow::volumefile::FormatOf;
 
 std::string LowerExtension(const std::string& fileName)
 {
   return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
-}
-
-Format FormatOf(const std::string& fileName)
-{
-  const std::string ext = LowerExtension(fileName);
-  if (ext == ".vti")
-  {
-    return Format::XML;
-  }
-  if (ext == ".mhd" || ext == ".mha")
-  {
-    return Format::Meta;
-  }
-  if (ext == ".nrrd" || ext == ".nhdr")
-  {
-    return Format::Nrrd;
-  }
-  return Format::Unknown;
 }
 
 const char* FormatName(Format format)
@@ -74,6 +58,7 @@ const char* FormatName(Format format)
 vtkSmartPointer<vtkAlgorithm> MakeReader(Format format, const char* fileName, bool& accepted)
 {
   accepted = false;
+  CerrCapture quiet; // MetaIO's parse errors: the reader says why in its own words
   switch (format)
   {
     case Format::XML:
@@ -102,201 +87,37 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(Format format, const char* fileName, bo
   }
 }
 
-// "ERROR: In file, line N\nvtkClass (0x...): text\n\n" -> "text", on one line.
-std::string OneLine(const char* message)
+// Runs a request of the delegate with its messages collected and std::cerr captured;
+// returns the reason it failed, or "".
+std::string RunDelegate(vtkAlgorithm* reader, ErrorCollector* errors, bool information,
+  const std::string& fallback)
 {
-  std::string text = message ? message : "";
-  if (text.compare(0, 6, "ERROR:") == 0 || text.compare(0, 8, "Warning:") == 0)
+  errors->Clear();
+  WarningDisplayOn heard;
+  CerrCapture printed;
+  try
   {
-    const size_t eol = text.find('\n');
-    text = eol == std::string::npos ? text : text.substr(eol + 1);
-  }
-  const size_t prefix = text.find("): ");
-  if (prefix != std::string::npos && prefix < text.find('\n'))
-  {
-    text = text.substr(prefix + 3);
-  }
-  for (char& c : text)
-  {
-    c = (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  const size_t last = text.find_last_not_of(" .");
-  return last == std::string::npos ? std::string() : text.substr(0, last + 1);
-}
-
-std::string Trim(const std::string& text)
-{
-  const size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos)
-  {
-    return "";
-  }
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-// NRRD and MetaImage data files that are missing, or raw (uncompressed) data shorter than the
-// image: VTK's readers only print a warning (MetaIO writes to std::cerr) and may return
-// garbage, so this is checked from the header before reading. Returns the problem, or "" when
-// the data look complete or the layout is one this check does not cover (compressed or ASCII
-// sizes, skips, lists of files).
-std::string CheckDataFile(Format format, const std::string& fileName, uint64_t needed)
-{
-  std::ifstream in(fileName, std::ios::binary);
-  std::string line, dataFile;
-  uint64_t headerEnd = 0;
-  bool raw = true;
-  while (std::getline(in, line))
-  {
-    if (format == Format::Nrrd && Trim(line).empty())
+    if (information)
     {
-      headerEnd = static_cast<uint64_t>(in.tellg());
-      break;
-    }
-    const size_t at = line.find(format == Format::Nrrd ? ':' : '=');
-    if (at == std::string::npos)
-    {
-      continue;
-    }
-    const std::string key = vtksys::SystemTools::LowerCase(Trim(line.substr(0, at)));
-    const std::string value = Trim(line.substr(at + 1));
-    const std::string lower = vtksys::SystemTools::LowerCase(value);
-    if (format == Format::Nrrd)
-    {
-      if (key == "encoding")
-      {
-        raw = lower == "raw";
-      }
-      else if (key == "data file" || key == "datafile")
-      {
-        dataFile = value;
-      }
-      else if (key == "byte skip" || key == "byteskip" || key == "line skip" || key == "lineskip")
-      {
-        return "";
-      }
+      reader->UpdateInformation();
     }
     else
     {
-      if (key == "compresseddata")
-      {
-        raw = lower != "true";
-      }
-      else if (key == "headersize")
-      {
-        return "";
-      }
-      else if (key == "elementdatafile")
-      {
-        dataFile = value;
-        headerEnd = static_cast<uint64_t>(in.tellg());
-        break;
-      }
+      reader->Update();
     }
   }
-  const bool local =
-    format == Format::Nrrd ? dataFile.empty() : vtksys::SystemTools::LowerCase(dataFile) == "local";
-  if (!local &&
-    (dataFile.empty() || vtksys::SystemTools::LowerCase(dataFile) == "list" ||
-      dataFile.find_first_of(" %") != std::string::npos))
+  catch (const std::bad_alloc&)
   {
-    return ""; // no data file named, or a list or pattern of files
+    return "not enough memory to read it";
   }
-  std::string path = fileName;
-  if (!local)
+  if (errors->Failed() || (!information && reader->GetErrorCode() != 0))
   {
-    path = vtksys::SystemTools::CollapseFullPath(
-      dataFile, vtksys::SystemTools::GetFilenamePath(fileName));
-    if (!vtksys::SystemTools::FileExists(path, true))
-    {
-      return "its data file '" + path + "' does not exist";
-    }
+    return errors->Reason(fallback);
   }
-  if (!raw)
-  {
-    return "";
-  }
-  const uint64_t size = vtksys::SystemTools::FileLength(path);
-  const uint64_t available = local ? (size > headerEnd ? size - headerEnd : 0) : size;
-  if (available >= needed)
-  {
-    return "";
-  }
-  std::ostringstream problem;
-  problem << "its raw data " << (local ? "" : "file '" + path + "' ") << "holds " << available
-          << " bytes where the image needs " << needed << " (truncated?)";
-  return problem.str();
+  // MetaIO reports some failures (e.g. "Uncompress failed") only on std::cerr.
+  const std::vector<std::string> lines = printed.Lines();
+  return lines.empty() ? std::string() : lines.front();
 }
-
-// The same, with the size the delegate announced in its output information.
-std::string CheckDataFile(Format format, const std::string& fileName, vtkInformation* info)
-{
-  int extent[6];
-  vtkInformation* scalars = vtkDataObject::GetActiveFieldInformation(
-    info, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-  if (!scalars || !scalars->Has(vtkDataObject::FIELD_ARRAY_TYPE()) ||
-    !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-  {
-    return "";
-  }
-  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
-  const int components = scalars->Has(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
-    ? scalars->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
-    : 1;
-  uint64_t needed = static_cast<uint64_t>(components) *
-    static_cast<uint64_t>(
-      vtkDataArray::GetDataTypeSize(scalars->Get(vtkDataObject::FIELD_ARRAY_TYPE())));
-  for (int a = 0; a < 3; ++a)
-  {
-    needed *= static_cast<uint64_t>(extent[2 * a + 1] - extent[2 * a] + 1);
-  }
-  return CheckDataFile(format, fileName, needed);
-}
-
-// Collects the delegate's errors (and those of its XML parser and its executive) instead of
-// letting them print, so that the reader can report one clear line.
-class ErrorCollector : public vtkCommand
-{
-public:
-  static ErrorCollector* New() { return new ErrorCollector; }
-  vtkTypeMacro(ErrorCollector, vtkCommand);
-
-  void Execute(vtkObject* caller, unsigned long event, void* callData) override
-  {
-    const std::string text = OneLine(static_cast<const char*>(callData));
-    if (event == vtkCommand::WarningEvent)
-    {
-      this->Warnings.push_back(text);
-    }
-    else if (vtkExecutive::SafeDownCast(caller))
-    {
-      // "Algorithm ... returned failure for request: <dump>": the delegate's own message, if
-      // any, came first and says more.
-      this->ExecutiveFailed = true;
-    }
-    else
-    {
-      this->Errors.push_back(text);
-    }
-  }
-
-  void Clear()
-  {
-    this->Errors.clear();
-    this->Warnings.clear();
-    this->ExecutiveFailed = false;
-  }
-
-  bool Failed() const { return !this->Errors.empty() || this->ExecutiveFailed; }
-
-  std::string Reason(const std::string& fallback) const
-  {
-    return this->Errors.empty() ? fallback : this->Errors.front();
-  }
-
-  std::vector<std::string> Errors;
-  std::vector<std::string> Warnings;
-  bool ExecutiveFailed = false;
-};
 
 // Our own executive reports "returned failure for request" with a dump of the request after
 // we have already said why in one line; it is dropped then, and shown otherwise.
@@ -320,7 +141,7 @@ public:
 
 //------------------------------------------------------------------------------
 vtkDeepShadowVolumeReader::vtkDeepShadowVolumeReader()
-  : Errors(vtkSmartPointer<ErrorCollector>::New())
+  : Errors(vtkSmartPointer<deepshadow::reader::ErrorCollector>::New())
 {
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(1);
@@ -352,9 +173,15 @@ bool vtkDeepShadowVolumeReader::CanReadFile(const char* fileName)
 void vtkDeepShadowVolumeReader::Fail(const std::string& problem)
 {
   std::ostringstream message;
-  message << "Cannot read volume '" << (this->FileName ? this->FileName : "") << "': " << problem;
+  message << "cannot read volume '" << (this->FileName ? this->FileName : "") << "': " << problem;
   this->LastError = message.str();
   vtkErrorMacro(<< this->LastError);
+}
+
+std::uint64_t vtkDeepShadowVolumeReader::GetEffectiveMemoryBudget() const
+{
+  return this->MemoryBudget > 0 ? static_cast<std::uint64_t>(this->MemoryBudget)
+                                : deepshadow::DefaultMemoryBudget();
 }
 
 bool vtkDeepShadowVolumeReader::PrepareReader()
@@ -413,16 +240,13 @@ bool vtkDeepShadowVolumeReader::PrepareReader()
       reader->GetClassName() + " does not recognise its header)");
     return false;
   }
-
-  auto* errors = static_cast<ErrorCollector*>(this->Errors.Get());
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->AddObserver(vtkCommand::WarningEvent, errors);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-  if (auto* xml = vtkXMLImageDataReader::SafeDownCast(reader))
+  const std::string problem = deepshadow::volumefile::CheckHeader(format, name);
+  if (!problem.empty())
   {
-    xml->SetReaderErrorObserver(errors);
-    xml->SetParserErrorObserver(errors);
+    this->Fail(problem);
+    return false;
   }
+  static_cast<ErrorCollector*>(this->Errors.Get())->Watch(reader);
   this->Reader = reader;
   return true;
 }
@@ -435,30 +259,23 @@ int vtkDeepShadowVolumeReader::RequestInformation(
   {
     return 0;
   }
-  auto* errors = static_cast<ErrorCollector*>(this->Errors.Get());
-  errors->Clear();
-  this->Reader->UpdateInformation();
-  if (errors->Failed())
+  std::string problem = RunDelegate(this->Reader, static_cast<ErrorCollector*>(this->Errors.Get()),
+    true, "the file's header could not be read");
+  vtkInformation* in = this->Reader->GetOutputInformation(0);
+  if (problem.empty())
   {
-    this->Fail(errors->Reason("the file's header could not be read"));
+    problem = deepshadow::volumefile::CheckInformation(in, this->GetEffectiveMemoryBudget());
+  }
+  if (!problem.empty())
+  {
+    this->Fail(problem);
     return 0;
   }
 
-  vtkInformation* in = this->Reader->GetOutputInformation(0);
   vtkInformation* out = outputVector->GetInformationObject(0);
   using SDDP = vtkStreamingDemandDrivenPipeline;
   int extent[6];
-  if (!in->Has(SDDP::WHOLE_EXTENT()))
-  {
-    this->Fail("the file holds no image extent");
-    return 0;
-  }
   in->Get(SDDP::WHOLE_EXTENT(), extent);
-  if (extent[1] < extent[0] || extent[3] < extent[2] || extent[5] < extent[4])
-  {
-    this->Fail("the image in the file is empty");
-    return 0;
-  }
   out->Set(SDDP::WHOLE_EXTENT(), extent, 6);
   if (in->Has(vtkDataObject::SPACING()))
   {
@@ -502,26 +319,29 @@ int vtkDeepShadowVolumeReader::RequestData(
     this->Fail("the file's header was not read");
     return 0;
   }
+  // What the header declares against what the file holds, before VTK's reader reads it.
   const Format format = FormatOf(this->FileName);
+  std::string problem;
   if (format == Format::Nrrd || format == Format::Meta)
   {
-    const std::string problem =
-      CheckDataFile(format, this->FileName, this->Reader->GetOutputInformation(0));
-    if (!problem.empty())
-    {
-      this->Fail(problem);
-      return 0;
-    }
+    problem = deepshadow::volumefile::CheckDataFile(format, this->FileName,
+      deepshadow::volumefile::ScalarBytes(this->Reader->GetOutputInformation(0)));
+  }
+  else if (auto* xml = vtkXMLImageDataReader::SafeDownCast(this->Reader))
+  {
+    problem = deepshadow::volumefile::CheckXMLImage(xml->GetXMLParser(), this->FileName);
   }
   auto* errors = static_cast<ErrorCollector*>(this->Errors.Get());
-  errors->Clear();
-  this->Reader->Update();
-  vtkImageData* image = vtkImageData::SafeDownCast(this->Reader->GetOutputDataObject(0));
-  if (errors->Failed() || this->Reader->GetErrorCode() != 0)
+  if (problem.empty())
   {
-    this->Fail(errors->Reason("the reader failed on the file's data"));
+    problem = RunDelegate(this->Reader, errors, false, "the reader failed on the file's data");
+  }
+  if (!problem.empty())
+  {
+    this->Fail(problem);
     return 0;
   }
+  vtkImageData* image = vtkImageData::SafeDownCast(this->Reader->GetOutputDataObject(0));
   if (!image || image->GetNumberOfPoints() == 0)
   {
     this->Fail("the file holds no image data");
@@ -561,5 +381,7 @@ void vtkDeepShadowVolumeReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << " (0: the default, "
+     << deepshadow::DefaultMemoryBudget() << ")\n";
   os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError) << "\n";
 }

@@ -9,10 +9,17 @@
  * Bad input (no file name, missing or unreadable file, unknown extension, a file the chosen
  * reader cannot parse, no point scalars) is reported with one vtkErrorMacro line that names the
  * file and the problem; the request then fails and the output stays empty. The same line is
- * kept in GetLastError() for command-line tools. Messages of the underlying VTK reader are
- * collected rather than printed; the first one becomes the reason on that line. Missing data
- * files and truncated raw data of NRRD and MetaImage files (which VTK's readers only warn
- * about) are caught before reading.
+ * kept in GetLastError() for command-line tools (with VTK's global warning display off, the
+ * vtkErrorMacro is silent but GetLastError() is not). Messages of the underlying VTK reader
+ * are collected by observers on it (VTK's global warning display is held on while it runs,
+ * since it also gates the events, whatever the application set) and what it prints to
+ * std::cerr is captured, rather than printed; the first one becomes the reason on that line.
+ *
+ * Before VTK's reader reads any data, the file is checked against what its header declares,
+ * because VTK's readers trust it: header fields VTK misreads (counts that do not match the
+ * dimensions, unknown element types), a spacing, origin or direction that is not finite (or
+ * a zero spacing, a singular direction), data beyond MemoryBudget, missing data files, raw
+ * data of NRRD and MetaImage files and appended data of VTK XML files shorter than the image.
  */
 #ifndef vtkDeepShadowVolumeReader_h
 #define vtkDeepShadowVolumeReader_h
@@ -21,7 +28,8 @@
 #include "vtkImageAlgorithm.h"
 #include "vtkSmartPointer.h" // For the delegate reader
 
-#include <string> // For GetLastError
+#include <cstdint> // For std::uint64_t
+#include <string>  // For GetLastError
 #include <vector> // For GetSupportedExtensions
 
 class vtkCommand;
@@ -37,6 +45,16 @@ public:
   /** The file to read. */
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The most bytes the image's scalars may take; a file declaring more is refused, naming
+   * the bytes, before anything is allocated. 0 (the default) is
+   * deepshadow::DefaultMemoryBudget(): half the machine's memory or address-space limit.
+   */
+  vtkSetClampMacro(MemoryBudget, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
   ///@}
 
   /** Supported extensions, lower case with the dot: .vti, .mhd, .mha, .nrrd, .nhdr. */
@@ -60,10 +78,14 @@ protected:
   /** Checks the file and makes the delegate reader; false (with the error reported) if bad. */
   bool PrepareReader();
 
+  /** MemoryBudget, or the default for 0. */
+  std::uint64_t GetEffectiveMemoryBudget() const;
+
   /** Reports `problem` about the file as the one-line error. */
   void Fail(const std::string& problem);
 
   char* FileName = nullptr;
+  vtkTypeInt64 MemoryBudget = 0;
   std::string LastError;
   vtkSmartPointer<vtkAlgorithm> Reader;
   vtkSmartPointer<vtkCommand> Errors; // collects the delegate's messages

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what vtkDeepShadow needs on Debian 12 (only what is missing; safe to re-run) and
-# builds it into build/. Used by render-scenes.sh and test.sh.
+# builds it into build/. Used by render-scenes.sh and test.sh; --deps-only installs and stops
+# (scripts/sanitize.sh builds its own directory).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -21,5 +22,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+[ "${1:-}" = "--deps-only" ] && exit 0
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$root/build" -j "$(nproc)"

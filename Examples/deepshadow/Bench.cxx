@@ -1,9 +1,11 @@
 // deepshadow bench: vtkDeepShadowVolumeMapper against VTK's vtkGPUVolumeRayCastMapper, in one
 // run, on the same scenes, views, lights and sample distance. Ratios of median frame times.
+#include "Budget.h"
 #include "Commands.h"
 #include "Json.h"
 #include "SceneSetup.h"
 
+#include "vtkDeepShadowMemoryBudget.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -55,6 +57,13 @@ double TimeMapper(vtkDeepShadowRenderWindow* window, vtkRenderer* renderer, vtkV
 
 int RunBench(const Options& options)
 {
+  const std::string problem = CheckMemoryBudget("--size " + std::to_string(options.Width) + "x" +
+      std::to_string(options.Height) + " (the frame's buffers)",
+    FrameBytes(options, options.Width, options.Height, false), MemoryBudget(options));
+  if (!problem.empty())
+  {
+    throw UsageError(problem + " (--memory-budget BYTES to change it)");
+  }
   vtkNew<vtkDeepShadowRenderWindow> window;
   if (!options.Backend.empty())
   {

@@ -1,6 +1,7 @@
 #include "Commands.h"
 
 #include "Json.h"
+#include "Outputs.h"
 #include "SceneSetup.h"
 
 #include "Image.h"
@@ -153,13 +154,15 @@ Image RenderReference(SceneSetup& setup, const Options& options, double& millise
 
 int RunRender(const Options& options)
 {
+  Outputs outputs;
   SceneSetup setup = SceneSetup::Build(options);
   GpuRun run = RenderGPU(setup, options);
-  WritePNG(setup.Window, options.Out);
+  WritePNG(setup.Window, outputs.Stage(options.Out));
   if (!options.Json.empty())
   {
-    run.Stats.Write(options.Json);
+    run.Stats.Write(outputs.Stage(options.Json));
   }
+  outputs.Commit();
   std::printf("%s: %dx%d, median %.1f ms over %d frames (first %.1f ms) -> %s\n",
     setup.Name.c_str(), options.Width, options.Height, Median(run.FrameMs), options.Frames,
     run.FirstFrameMs, options.Out.c_str());
@@ -168,10 +171,11 @@ int RunRender(const Options& options)
 
 int RunReference(const Options& options)
 {
+  Outputs outputs;
   SceneSetup setup = SceneSetup::Build(options);
   double milliseconds = 0.0;
   const Image image = RenderReference(setup, options, milliseconds);
-  WritePNG(ToImageData(image), options.Out);
+  WritePNG(ToImageData(image), outputs.Stage(options.Out));
   if (!options.Json.empty())
   {
     Json stats;
@@ -189,8 +193,9 @@ int RunReference(const Options& options)
       .Set("shadow_builds", 0)
       .Set("threads", options.Threads)
       .Set("sample_distance", setup.Mapper->GetSampleDistance());
-    stats.Write(options.Json);
+    stats.Write(outputs.Stage(options.Json));
   }
+  outputs.Commit();
   std::printf("%s: CPU reference (%s) %dx%d in %.0f ms -> %s\n", setup.Name.c_str(),
     options.GpuTwin ? "GPU twin" : "exact", options.Width, options.Height, milliseconds,
     options.Out.c_str());
@@ -203,6 +208,7 @@ int RunAll(const Options& options)
   {
     throw UsageError("cannot create directory " + options.OutDir);
   }
+  Outputs outputs; // every file appears at the end, or none
   std::vector<Json> summary;
   std::printf("%-8s %10s %10s %12s %10s %10s\n", "scene", "gpu_ms", "first_ms", "reference_ms",
     "rmse", "max_abs");
@@ -214,20 +220,21 @@ int RunAll(const Options& options)
     SceneSetup setup = SceneSetup::Build(sceneOptions);
     GpuRun run = RenderGPU(setup, sceneOptions);
     const std::string stem = options.OutDir + "/" + name;
-    WritePNG(setup.Window, stem + ".png");
+    WritePNG(setup.Window, outputs.Stage(stem + ".png"));
     const Image gpu = CaptureWindow(setup.Window);
 
     double referenceMs = 0.0;
     const Image reference = RenderReference(setup, sceneOptions, referenceMs);
-    WritePNG(ToImageData(reference), stem + "-reference.png");
-    WritePNG(ToImageData(AbsoluteDifference(gpu, reference, 10.0)), stem + "-difference-x10.png");
+    WritePNG(ToImageData(reference), outputs.Stage(stem + "-reference.png"));
+    WritePNG(ToImageData(AbsoluteDifference(gpu, reference, 10.0)),
+      outputs.Stage(stem + "-difference-x10.png"));
     const ImageDifference error = Compare(gpu, reference, 2.0 / 255.0);
 
     run.Stats.Set("reference_ms", referenceMs)
       .Set("rmse_vs_reference", error.RMSE)
       .Set("max_abs_vs_reference", error.MaxAbs)
       .Set("fraction_above_2_of_255", error.FractionAbove);
-    run.Stats.Write(stem + ".json");
+    run.Stats.Write(outputs.Stage(stem + ".json"));
     summary.push_back(run.Stats);
     std::printf("%-8s %10.1f %10.1f %12.0f %10.5f %10.4f\n", name.c_str(), Median(run.FrameMs),
       run.FirstFrameMs, referenceMs, error.RMSE, error.MaxAbs);
@@ -235,7 +242,8 @@ int RunAll(const Options& options)
   }
   Json all;
   all.Set("scenes", summary);
-  all.Write(options.OutDir + "/summary.json");
+  all.Write(outputs.Stage(options.OutDir + "/summary.json"));
+  outputs.Commit();
   std::printf("images, references, differences (x10) and statistics in %s\n",
     options.OutDir.c_str());
   return 0;

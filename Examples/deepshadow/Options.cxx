@@ -1,6 +1,7 @@
 #include "Options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -33,6 +34,26 @@ int ParseInteger(const std::string& option, const std::string& text, int lo, int
       std::to_string(hi) + "], got '" + text + "'");
   }
   return static_cast<int>(value);
+}
+
+// BYTES, or a number with the suffix K, M, G or T (powers of 1024).
+unsigned long long ParseBytes(const std::string& option, const std::string& text)
+{
+  std::string number = text;
+  double unit = 1.0;
+  const std::string suffixes = "KMGT";
+  const size_t at = text.empty() ? std::string::npos : suffixes.find(static_cast<char>(std::toupper(text.back())));
+  if (at != std::string::npos)
+  {
+    number.pop_back();
+    unit = std::pow(1024.0, static_cast<double>(at + 1));
+  }
+  const double value = ParseNumber(option, number) * unit;
+  if (!(value >= 1.0 && value < 1.8e19))
+  {
+    throw UsageError(option + " expects a positive byte count (e.g. 4G), got '" + text + "'");
+  }
+  return static_cast<unsigned long long>(value);
 }
 
 std::vector<std::string> Split(const std::string& text, char separator)
@@ -76,6 +97,33 @@ std::array<double, 3> ParseVector(const std::string& option, const std::string& 
   return v;
 }
 
+// A direction towards a light, normalised in double after dividing by its largest component
+// (so 1e308,0,1e308 does not overflow to an infinite length); the zero vector is refused.
+std::array<double, 3> Direction(const std::string& option, const std::array<double, 3>& v)
+{
+  const double largest = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
+  if (largest == 0.0)
+  {
+    throw UsageError(option + " must not be the zero vector");
+  }
+  std::array<double, 3> d{ { v[0] / largest, v[1] / largest, v[2] / largest } };
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return { { d[0] / length, d[1] / length, d[2] / length } };
+}
+
+// A light's world position: beyond 1e18 its squared distances overflow in single precision
+// on the GPU (measured: 1e19 renders as 1e3 does, 1e20 does not), so it is refused.
+std::array<double, 3> Position(const std::string& option, const std::array<double, 3>& v)
+{
+  constexpr double limit = 1e18;
+  if (std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) }) > limit)
+  {
+    throw UsageError(option + " coordinates must lie within +-1e18 (single-precision lighting); "
+                              "for a light that far, give its direction (--light-dir)");
+  }
+  return v;
+}
+
 // dir:X,Y,Z[:I] | pos:X,Y,Z[:I] | spot:X,Y,Z:ANGLE[:I]
 LightSpec ParseLight(const std::string& text)
 {
@@ -112,7 +160,9 @@ LightSpec ParseLight(const std::string& text)
   {
     throw UsageError("--light type must be dir, pos or spot, got '" + parts[0] + "'");
   }
-  light.Vector = ParseVector("--light", parts[1]);
+  light.Vector = light.Kind == LightSpec::Directional
+    ? Direction("--light dir", ParseVector("--light", parts[1]))
+    : Position("--light " + parts[0], ParseVector("--light", parts[1]));
   if (parts.size() > next)
   {
     light.Intensity = ParseNumber("--light", parts[next]);
@@ -124,11 +174,6 @@ LightSpec ParseLight(const std::string& text)
   if (parts.size() > next + 1)
   {
     throw UsageError("--light has too many fields: '" + text + "'");
-  }
-  if (light.Kind == LightSpec::Directional &&
-    light.Vector[0] == 0.0 && light.Vector[1] == 0.0 && light.Vector[2] == 0.0)
-  {
-    throw UsageError("--light dir must not be the zero vector");
   }
   return light;
 }
@@ -405,7 +450,12 @@ OUTPUT:
                           first_frame_ms, shadow_bytes, shadow_builds, and more
   --frames N              timed frames after one warm-up frame (default 5); report: 0
                           measures errors only (the guard against no shadows, no timing)
-  --verbose               also print VTK's own error and warning messages
+  --verbose               also print VTK's own error and warning messages (more output;
+                          the exit code and the error line are the same)
+  --memory-budget BYTES   the most memory the frame, the shadow structures and the volume
+                          may take (suffix K, M, G, T; default half the machine's memory or
+                          of `ulimit -v`); beyond it the command exits with code 2 naming
+                          the bytes, before allocating them
 
 Exit codes: 0 success, 2 bad arguments or input (one line on stderr), 1 other failures.
 )";
@@ -599,18 +649,14 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--light-dir")
     {
       LightSpec light;
-      light.Vector = ParseVector(key, next());
-      if (light.Vector[0] == 0.0 && light.Vector[1] == 0.0 && light.Vector[2] == 0.0)
-      {
-        throw UsageError("--light-dir must not be the zero vector");
-      }
+      light.Vector = Direction(key, ParseVector(key, next()));
       o.Lights.push_back(light);
     }
     else if (key == "--light-pos")
     {
       LightSpec light;
       light.Kind = LightSpec::Positional;
-      light.Vector = ParseVector(key, next());
+      light.Vector = Position(key, ParseVector(key, next()));
       o.Lights.push_back(light);
     }
     else if (key == "--light")
@@ -664,6 +710,10 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--verbose")
     {
       o.Verbose = true;
+    }
+    else if (key == "--memory-budget")
+    {
+      o.MemoryBudget = ParseBytes(key, next());
     }
     else if (key == "--gpu-twin")
     {

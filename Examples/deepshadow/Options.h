@@ -95,6 +95,7 @@ struct Options
   std::string OutDir;
   int Frames = 5;
   bool Verbose = false; // show VTK's own error and warning messages
+  unsigned long long MemoryBudget = 0; // --memory-budget; 0: half the machine's memory
 
   // reference
   bool GpuTwin = false;

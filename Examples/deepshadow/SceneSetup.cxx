@@ -1,11 +1,14 @@
 #include "SceneSetup.h"
 
+#include "Budget.h"
+
 #include "VolumeGrid.h"
 
 #include "vtkDeepShadowBoundedScene.h"
 #include "vtkDeepShadowCSGFilter.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowHybridScene.h"
+#include "vtkDeepShadowMeshReader.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
@@ -24,12 +27,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataReader.h"
-#include "vtkSTLReader.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkProperty.h"
@@ -46,7 +44,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace deepshadow
@@ -55,14 +53,40 @@ namespace tool
 {
 namespace
 {
+// The range of the finite samples (NaN and +-Inf, which --replace-nonfinite replaces by the
+// extremes of the finite ones, would make the transfer function span infinity: blank).
+void FiniteRange(vtkImageData* data, double range[2])
+{
+  range[0] = 0.0;
+  range[1] = 1.0;
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  if (!scalars || scalars->GetNumberOfComponents() != 1)
+  {
+    return; // the mapper says why it cannot draw it
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    throw UsageError("the volume has no finite samples");
+  }
+  range[0] = lo;
+  range[1] = hi;
+}
+
 // A neutral look for files that come with none: grey, transparent low values, shaded.
 vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 {
-  double range[2] = { 0.0, 1.0 };
-  if (vtkDataArray* scalars = data->GetPointData()->GetScalars())
-  {
-    scalars->GetRange(range);
-  }
+  double range[2];
+  FiniteRange(data, range);
   const double width = range[1] > range[0] ? range[1] - range[0] : 1.0;
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
@@ -282,14 +306,6 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
   {
     vtkDeepShadowHybridScene::Mesh mesh;
     mesh.PolyData = ReadMesh(spec.File);
-    for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
-    {
-      const double* p = mesh.PolyData->GetPoint(i);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      {
-        throw UsageError("mesh " + spec.File + " has points that are not finite (NaN or infinite)");
-      }
-    }
     mesh.Opacity = spec.Opacity;
     mesh.Color = spec.Color;
     vtkNew<vtkTransform> transform;
@@ -440,7 +456,6 @@ SceneSetup SceneSetup::Build(const Options& options)
       csg->AddInputData(bound);
     }
     csg->SetExpression(setup.BoundExpression);
-    csg->SetGlobalWarningDisplay(0);
     csg->Update();
     if (!csg->GetLastError().empty())
     {
@@ -481,6 +496,14 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Volume->SetMapper(setup.Mapper);
   setup.Volume->SetProperty(property);
   setup.Renderer->AddVolume(setup.Volume);
+  // What the mapper cannot render (a placement single precision or VTK's camera cannot
+  // resolve: a 1e-30 volume is blank on the GPU and in the CPU reference alike) is refused
+  // for every command, before the camera is set up on it.
+  setup.Mapper->GetBounds();
+  if (!setup.Mapper->GetLastError().empty())
+  {
+    throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
+  }
 
   vtkCamera* camera = setup.Renderer->GetActiveCamera();
   if (options.VolumeFile.empty())
@@ -523,6 +546,8 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Renderer->AddLight(light);
   }
+  // Before the first frame allocates them: the frame, the shadow structures, the GPU copy.
+  RequireWithinBudget(options, setup.Data, setup.Pass != nullptr, setup.SecondVolume ? 2 : 1);
   return setup;
 }
 
@@ -548,56 +573,22 @@ void RequireDrawn(const SceneSetup& setup)
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
-  if (!std::ifstream(path))
-  {
-    throw UsageError("cannot read mesh " + path);
-  }
-  std::string extension = path.substr(std::min(path.size(), path.find_last_of('.')));
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  // Every reader of these formats has SetFileName; STL points are merged as they are read.
-  auto make = [&path](auto reader) -> vtkSmartPointer<vtkAlgorithm> {
-    reader->SetFileName(path.c_str());
-    return reader;
-  };
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == ".vtp")
-  {
-    reader = make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
-  }
-  else if (extension == ".vtk")
-  {
-    reader = make(vtkSmartPointer<vtkPolyDataReader>::New());
-  }
-  else if (extension == ".stl")
-  {
-    auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->MergingOn();
-    reader = make(stl);
-  }
-  else if (extension == ".ply")
-  {
-    reader = make(vtkSmartPointer<vtkPLYReader>::New());
-  }
-  else if (extension == ".obj")
-  {
-    reader = make(vtkSmartPointer<vtkOBJReader>::New());
-  }
-  else
-  {
-    throw UsageError("unsupported mesh format '" + extension + "' of " + path +
-      " (.vtp, .vtk, .stl, .ply, .obj)");
-  }
-  reader->SetGlobalWarningDisplay(0);
+  vtkNew<vtkDeepShadowMeshReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
-  vtkPolyData* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!mesh || mesh->GetNumberOfCells() == 0)
+  if (!reader->GetLastError().empty())
   {
-    throw UsageError("no mesh could be read from " + path);
+    throw UsageError(reader->GetLastError());
   }
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->ShallowCopy(mesh);
-  return copy;
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  // Before any VTK filter sees it: they trust the point ids.
+  const std::string problem = vtkDeepShadowPolyDataMapper::CheckInput(mesh);
+  if (!problem.empty())
+  {
+    throw UsageError("cannot use mesh '" + path + "': " + problem);
+  }
+  return mesh;
 }
 
 std::string RendererString(vtkDeepShadowRenderWindow* window)

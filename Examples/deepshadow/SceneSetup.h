@@ -64,7 +64,10 @@ double RenderFrame(vtkDeepShadowRenderWindow* window);
 /** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
 void RequireDrawn(const SceneSetup& setup);
 
-/** Reads a mesh (.vtp, .vtk, .stl, .ply, .obj); throws UsageError on failure. */
+/**
+ * Reads a mesh (.vtp, .vtk, .stl, .ply, .obj) with vtkDeepShadowMeshReader and checks its
+ * points and point ids; throws UsageError on failure.
+ */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
 /** The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"). */

@@ -1,12 +1,75 @@
 // deepshadow: the command-line tool of vtkDeepShadow. See `deepshadow --help`.
 #include "Commands.h"
 #include "Options.h"
+#include "Outputs.h"
 
-#include "vtkObject.h"
+#include "vtkLogger.h"
+#include "vtkOutputWindow.h"
 
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
+
+namespace
+{
+// Errors reach the user as the tool's one line; VTK's own log only with --verbose. Only the
+// printing is switched off: VTK's global warning flag stays on, because in VTK 9.1 it also
+// gates the error events that the readers' collectors listen to, so the exit code and the
+// line never depend on --verbose.
+void QuietVTK(bool verbose)
+{
+  if (!verbose)
+  {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  }
+}
+
+int Run(const deepshadow::tool::Options& options)
+{
+  using namespace deepshadow::tool;
+  if (options.Command == "help")
+  {
+    std::cout << Options::Usage();
+    return 0;
+  }
+  // Output files that cannot be written are said before any work.
+  if (options.Command == "render" || options.Command == "reference")
+  {
+    Outputs::RequireWritable(options.Out);
+  }
+  if (!options.Json.empty())
+  {
+    Outputs::RequireWritable(options.Json);
+  }
+  if (options.Command == "render")
+  {
+    return RunRender(options);
+  }
+  if (options.Command == "reference")
+  {
+    return RunReference(options);
+  }
+  if (options.Command == "all")
+  {
+    return RunAll(options);
+  }
+  if (options.Command == "bench")
+  {
+    return RunBench(options);
+  }
+  if (options.Command == "shadow-bench")
+  {
+    return RunShadowBench(options);
+  }
+  if (options.Command == "report")
+  {
+    return RunReport(options);
+  }
+  return RunScenes(options);
+}
+}
 
 int main(int argc, char* argv[])
 {
@@ -14,42 +77,20 @@ int main(int argc, char* argv[])
   try
   {
     const Options options = Options::Parse(argc, argv);
-    // Errors reach the user as the tool's one line; VTK's own log only with --verbose.
-    vtkObject::SetGlobalWarningDisplay(options.Verbose ? 1 : 0);
-    if (options.Command == "help")
-    {
-      std::cout << Options::Usage();
-      return 0;
-    }
-    if (options.Command == "render")
-    {
-      return RunRender(options);
-    }
-    if (options.Command == "reference")
-    {
-      return RunReference(options);
-    }
-    if (options.Command == "all")
-    {
-      return RunAll(options);
-    }
-    if (options.Command == "bench")
-    {
-      return RunBench(options);
-    }
-    if (options.Command == "shadow-bench")
-    {
-      return RunShadowBench(options);
-    }
-    if (options.Command == "report")
-    {
-      return RunReport(options);
-    }
-    return RunScenes(options);
+    QuietVTK(options.Verbose);
+    return Run(options);
   }
   catch (const UsageError& error)
   {
     std::fprintf(stderr, "deepshadow: %s\n", error.what());
+    return 2;
+  }
+  catch (const std::bad_alloc&)
+  {
+    // The budgets (Budget.h) refuse what is known to be too large before it is allocated;
+    // this is what they did not foresee.
+    std::fprintf(stderr, "deepshadow: out of memory (the input needs more than this machine or "
+                         "its limits allow)\n");
     return 2;
   }
   catch (const std::exception& error)

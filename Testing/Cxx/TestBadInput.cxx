@@ -1,17 +1,30 @@
 // Bad input gets one clear error (once, not every frame), no crash, and no garbage: the
-// volume is not drawn and the picture shows only the background.
-//   no input, an empty image, zero extent (N x N x 1), cell scalars only, three components,
-//   unsupported scalar types (int, double), NaN and Inf samples (an error, or with
-//   ReplaceNonFiniteScalars a warning and a defined picture), a volume beyond the GL's 3D
-//   texture limit.
+// volume (or mesh) is not drawn and the picture shows only the background.
+//   Data: no input, an empty image, zero extent (N x N x 1), cell scalars only, three
+//   components, unsupported scalar types (int, double), NaN and Inf samples (an error, or
+//   with ReplaceNonFiniteScalars a warning and a defined picture), a volume beyond the GL's
+//   3D texture limit.
+//   Placement and settings (silent before issue 17): NaN spacing and origin, a zero or NaN
+//   direction matrix, spacings of 1e-30 and 1e30 and an origin far away for its size, a NaN
+//   opacity point, an opacity unit distance of 0 or NaN, a NaN light position, a positional
+//   light at 1e300; SetSampleDistance(NaN or -1) and SetTerminationOpacity(NaN) (an error at
+//   the call, the old value kept, the picture unchanged).
+//   Meshes: vtkDeepShadowPolyDataMapper with point ids past its points or NaN points; a
+//   volume bound with point ids past its points.
+//   And a light at 1e308 along a diagonal still lights (directions are normalised in double).
 #include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowPass.h"
+#include "vtkDeepShadowPolyDataMapper.h"
+#include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPoints.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -27,10 +40,22 @@ struct Outcome
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
   double Covered = 0.0;
+  deepshadow::Image Picture;
+};
+
+// What a case changes before rendering.
+struct Scene
+{
+  vtkDeepShadowVolumeMapper* Mapper;
+  vtkVolumeProperty* Property;
+  vtkPiecewiseFunction* Opacity;
+  vtkRenderer* Renderer;
+  vtkLight* Light;
 };
 
 // Renders `data` (null: no input) three times; returns what the mapper said and drew.
-Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false)
+Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false,
+  const std::function<void(Scene&)>& change = nullptr)
 {
   vtkNew<vtkDeepShadowRenderWindow> window;
   window->SetSize(64, 64);
@@ -54,6 +79,80 @@ Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false)
   volume->SetMapper(mapper);
   volume->SetProperty(property);
   renderer->AddVolume(volume);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(0.0, 0.0, 1.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 10.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+  if (change)
+  {
+    Scene scene{ mapper, property, opacity, renderer, light };
+    change(scene);
+  }
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  Outcome outcome;
+  outcome.Errors = capture->Errors;
+  outcome.Warnings = capture->Warnings;
+  outcome.Picture = deepshadow::testing::Grab(window);
+  outcome.Covered = deepshadow::testing::CoveredFraction(outcome.Picture, { 0.2, 0.3, 0.4 });
+  return outcome;
+}
+
+// A triangle mesh with a point id past its three points (or a NaN point), drawn by
+// vtkDeepShadowPolyDataMapper alone or, under vtkDeepShadowPass, beside a shadowing volume
+// (which gathers it as a caster): one error, nothing drawn, no crash.
+Outcome RenderBadMesh(bool nanPoint, bool withPass)
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(-3.0, -3.0, 0.0);
+  points->InsertNextPoint(3.0, -3.0, 0.0);
+  points->InsertNextPoint(nanPoint ? std::numeric_limits<double>::quiet_NaN() : 0.0, 3.0, 0.0);
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType good[3] = { 0, 1, 2 };
+  const vtkIdType bad[3] = { 0, 1, 99 };
+  triangles->InsertNextCell(3, good);
+  if (!nanPoint)
+  {
+    triangles->InsertNextCell(3, bad);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+
+  vtkNew<vtkDeepShadowRenderWindow> window;
+  window->SetSize(64, 64);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.2, 0.3, 0.4);
+  window->AddRenderer(renderer);
+  vtkNew<vtkDeepShadowPolyDataMapper> mapper;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(mapper);
+  mapper->SetInputData(mesh);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  vtkNew<vtkDeepShadowPass> pass;
+  vtkNew<vtkDeepShadowVolumeMapper> volumeMapper;
+  vtkNew<vtkDeepShadowRayTechnique> rays;
+  vtkNew<vtkVolume> volume;
+  if (withPass)
+  {
+    // A volume beside the mesh (its picture is not looked at): the pass gathers the mesh as
+    // a caster for the volume's technique.
+    auto data = deepshadow::testing::MakeShadowVolume(16);
+    data->SetOrigin(20.0, 20.0, 20.0);
+    volumeMapper->SetInputData(data);
+    volumeMapper->SetShadowTechnique(rays);
+    volume->SetMapper(volumeMapper);
+    renderer->AddVolume(volume);
+    renderer->SetPass(pass);
+  }
   renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 10.0);
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->ResetCameraClippingRange();
@@ -64,8 +163,8 @@ Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false)
   Outcome outcome;
   outcome.Errors = capture->Errors;
   outcome.Warnings = capture->Warnings;
-  outcome.Covered =
-    deepshadow::testing::CoveredFraction(deepshadow::testing::Grab(window), { 0.2, 0.3, 0.4 });
+  outcome.Picture = deepshadow::testing::Grab(window);
+  outcome.Covered = deepshadow::testing::CoveredFraction(outcome.Picture, { 0.2, 0.3, 0.4 });
   return outcome;
 }
 
@@ -160,6 +259,99 @@ int TestBadInput(int, char*[])
     std::printf("NaN and Inf, replaced: expected one warning about 3 non-finite samples\n");
     ok = false;
   }
+  // Placement: the renderer culls a volume with NaN bounds before drawing; said anyway.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto placed = [](std::function<void(vtkImageData*)> place) {
+    auto image = Image(8, 8, 8, VTK_UNSIGNED_CHAR);
+    place(image);
+    return image;
+  };
+  ok = Expect("NaN spacing", RenderBad(placed([&](vtkImageData* i) { i->SetSpacing(1.0, nan, 1.0); })),
+         "spacing", false) && ok;
+  ok = Expect("NaN origin", RenderBad(placed([&](vtkImageData* i) { i->SetOrigin(nan, 0.0, 0.0); })),
+         "origin", false) && ok;
+  ok = Expect("zero direction matrix", RenderBad(placed([](vtkImageData* i) {
+    const double zero[9] = { 0.0 };
+    i->SetDirectionMatrix(zero);
+  })), "singular", false) && ok;
+  ok = Expect("NaN direction matrix", RenderBad(placed([&](vtkImageData* i) {
+    const double d[9] = { 1.0, 0.0, 0.0, 0.0, nan, 0.0, 0.0, 0.0, 1.0 };
+    i->SetDirectionMatrix(d);
+  })), "not finite", false) && ok;
+  ok = Expect("spacing 1e-30", RenderBad(placed([](vtkImageData* i) {
+    i->SetSpacing(1e-30, 1e-30, 1e-30);
+    i->SetOrigin(0.0, 0.0, 0.0);
+  })), "voxel edge", false) && ok;
+  ok = Expect("spacing 1e30", RenderBad(placed([](vtkImageData* i) {
+    i->SetSpacing(1e30, 1e30, 1e30);
+    i->SetOrigin(0.0, 0.0, 0.0);
+  })), "voxel edge", false) && ok;
+  ok = Expect("origin 1e9 voxels away",
+         RenderBad(placed([](vtkImageData* i) { i->SetOrigin(1e9, 0.0, 0.0); }), false,
+           [](Scene& s) { s.Renderer->ResetCamera(); }), "from the origin", false) && ok;
+
+  // Settings.
+  auto valid = [] { return Image(8, 8, 8, VTK_UNSIGNED_CHAR); };
+  ok = Expect("NaN opacity point", RenderBad(valid(), false,
+         [&](Scene& s) { s.Opacity->AddPoint(nan, 0.5); }), "opacity function", false) && ok;
+  ok = Expect("opacity unit distance 0", RenderBad(valid(), false,
+         [](Scene& s) { s.Property->SetScalarOpacityUnitDistance(0.0); }), "unit distance", false) && ok;
+  ok = Expect("opacity unit distance NaN", RenderBad(valid(), false,
+         [&](Scene& s) { s.Property->SetScalarOpacityUnitDistance(nan); }), "unit distance", false) && ok;
+  // Lights matter to a shaded volume (an unshaded one without shadows ignores them).
+  ok = Expect("NaN light position", RenderBad(valid(), false, [&](Scene& s) {
+    s.Property->ShadeOn();
+    s.Light->SetPosition(nan, 0.0, 1.0);
+  }), "light 0", false) && ok;
+  ok = Expect("positional light at 1e300", RenderBad(valid(), false, [](Scene& s) {
+    s.Property->ShadeOn();
+    s.Light->SetPositional(true);
+    s.Light->SetPosition(1e300, 0.0, 0.0);
+  }), "positional at 1e+300", false) && ok;
+  // Setters: an error at the call, the old value kept, the volume drawn as before.
+  bool kept = true;
+  ok = Expect("SetSampleDistance(NaN)", RenderBad(valid(), false, [&](Scene& s) {
+    s.Mapper->SetSampleDistance(nan);
+    kept = kept && s.Mapper->GetSampleDistance() == 0.0;
+  }), "SetSampleDistance(nan)", true) && ok;
+  ok = Expect("SetSampleDistance(-1)", RenderBad(valid(), false, [&](Scene& s) {
+    s.Mapper->SetSampleDistance(-1.0);
+    kept = kept && s.Mapper->GetSampleDistance() == 0.0;
+  }), "SetSampleDistance(-1)", true) && ok;
+  ok = Expect("SetTerminationOpacity(NaN)", RenderBad(valid(), false, [&](Scene& s) {
+    const double before = s.Mapper->GetTerminationOpacity();
+    s.Mapper->SetTerminationOpacity(nan);
+    kept = kept && s.Mapper->GetTerminationOpacity() == before;
+  }), "SetTerminationOpacity(nan)", true) && ok;
+  ok = deepshadow::testing::Check("rejected settings keep their old values", kept) && ok;
+  // A directional light at 1e308 along the diagonal lights exactly as one at (1, 1, 1).
+  auto diagonal = [&](double d) {
+    return RenderBad(valid(), false, [d](Scene& s) {
+      s.Property->ShadeOn();
+      s.Light->SetPosition(d, d, d);
+    });
+  };
+  const Outcome far = diagonal(1e308);
+  ok = Expect("light direction 1e308", far, "", true) && ok;
+  ok = deepshadow::testing::Check("light direction 1e308 lights as (1, 1, 1)",
+         deepshadow::Compare(far.Picture, diagonal(1.0).Picture, 0.0).MaxAbs == 0.0) && ok;
+
+  // Meshes with point ids past their points, or NaN points: one error, nothing drawn.
+  ok = Expect("mesh ids out of range", RenderBadMesh(false, false), "point id 99", false) && ok;
+  ok = Expect("mesh ids out of range, pass", RenderBadMesh(false, true), "point id 99", false) && ok;
+  ok = Expect("mesh with a NaN point", RenderBadMesh(true, false), "not finite", false) && ok;
+  ok = Expect("bound ids out of range", RenderBad(valid(), false, [](Scene& s) {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0.0, 0.0, 0.0);
+    vtkNew<vtkCellArray> triangles;
+    const vtkIdType bad[3] = { 0, 7, 99 };
+    triangles->InsertNextCell(3, bad);
+    vtkNew<vtkPolyData> bound;
+    bound->SetPoints(points);
+    bound->SetPolys(triangles);
+    s.Mapper->AddBound(bound);
+  }), "bound A: a polygon of the mesh has the point id 99", false) && ok;
+
   // A good volume after all that still renders (the control).
   ok = Expect("valid volume (control)", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR)), "", true) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

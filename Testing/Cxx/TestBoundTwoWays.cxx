@@ -14,7 +14,6 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkPolyData.h"
-#include "vtkRegressionTestImage.h"
 
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
@@ -75,6 +74,6 @@ int TestBoundTwoWays(int argc, char* argv[])
   ok = Check("the bound changed the picture",
          deepshadow::Compare(mesh, deepshadow::Image(mesh.Width, mesh.Height), 0.1).FractionAbove > 0.05) && ok;
 
-  const int result = vtkRegressionTestImage(scene.Window);
+  const int result = deepshadow::testing::RegressionTestImage(scene.Window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -19,7 +19,6 @@
 #include "vtkCellArray.h"
 #include "vtkCubeSource.h"
 #include "vtkPolyData.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkSphereSource.h"
 
 using deepshadow::testing::Check;
@@ -189,6 +188,6 @@ int TestBoundedVolume(int argc, char* argv[])
   mapper->SetBoundExpression("difference(A,B)");
   mapper->SetShadowTechnique(dsm);
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

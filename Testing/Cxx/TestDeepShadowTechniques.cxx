@@ -14,7 +14,6 @@
 #include "vtkDeepShadowStochasticShadowMapTechnique.h"
 
 #include "vtkLight.h"
-#include "vtkRegressionTestImage.h"
 
 using deepshadow::testing::Grab;
 using deepshadow::testing::WithinTolerance;
@@ -143,6 +142,6 @@ int TestDeepShadowTechniques(int argc, char* argv[])
   window->Render();
   ok = WithinTolerance("dsm-color, two lights", Grab(window),
          deepshadow::testing::Reference(scene.Renderer, true), 2.0 / 255.0, 12.0 / 255.0, 0.01) && ok;
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,14 +1,16 @@
 // An ordinary VTK pipeline renders with DISPLAY unset: the module's factory makes
 // vtkRenderWindow::New() headless, the image is not empty, and the OSMesa and EGL backends
-// give the same pixels.
+// give the same pixels: for polygons, and for a shadowed volume whose shadows are built by
+// compute passes (a deep shadow map's light-space build, a cached technique's shadow cache).
 #include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
+#include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 
 #include "vtkActor.h"
 #include "vtkConeSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkSphereSource.h"
 
 #include <cstdlib>
@@ -39,6 +41,54 @@ void BuildScene(vtkRenderWindow* window)
   coneActor->SetMapper(coneMapper);
   renderer->AddActor(coneActor);
   renderer->ResetCamera();
+}
+
+
+vtkSmartPointer<vtkDeepShadowTechnique> MakeDeepShadowMap()
+{
+  auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
+  dsm->SetMapSize(128);
+  dsm->ColoredOn();
+  return dsm;
+}
+
+vtkSmartPointer<vtkDeepShadowTechnique> MakeCachedRays()
+{
+  auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
+  rays->CachedOn();
+  rays->SetShadowVolumeSize(48);
+  return rays;
+}
+
+// The shadow test scene rendered with `technique` on `backend`: its picture, and whether the
+// frame ran `pass` (a compute pass of the technique).
+deepshadow::Image RenderShadowScene(
+  int backend, vtkDeepShadowTechnique* technique, const char* pass, bool& ran)
+{
+  deepshadow::testing::ShadowScene scene;
+  scene.Window->SetBackend(backend);
+  scene.Mapper->SetShadowTechnique(technique);
+  scene.Window->Render();
+  const auto& passes = scene.Mapper->GetLastPasses();
+  ran = std::find(passes.begin(), passes.end(), pass) != passes.end() &&
+    scene.Mapper->GetLastError().empty() && scene.Window->HasContext();
+  return deepshadow::testing::Grab(scene.Window);
+}
+
+bool SameOnBothBackends(
+  const char* name, vtkSmartPointer<vtkDeepShadowTechnique> (*make)(), const char* pass)
+{
+  bool ranOSMesa = false, ranEGL = false;
+  // One backend at a time: each scene (and its context) is gone before the next.
+  const deepshadow::Image osmesa =
+    RenderShadowScene(vtkDeepShadowRenderWindow::OSMesa, make(), pass, ranOSMesa);
+  const deepshadow::Image egl = RenderShadowScene(vtkDeepShadowRenderWindow::EGL, make(), pass, ranEGL);
+  const deepshadow::ImageDifference d = deepshadow::Compare(osmesa, egl);
+  const double covered = deepshadow::testing::CoveredFraction(osmesa, { 0.05, 0.05, 0.08 });
+  return deepshadow::testing::Check(std::string("OSMesa vs EGL, ") + name + ": ran " + pass +
+      " on both, " + std::to_string(100.0 * covered).substr(0, 4) + "% covered, max difference " +
+      std::to_string(d.MaxAbs),
+    ranOSMesa && ranEGL && covered > 0.05 && d.MaxAbs == 0.0);
 }
 }
 
@@ -90,10 +140,14 @@ int TestHeadlessRenderWindow(int argc, char* argv[])
     ok = ok && d.MaxAbs == 0.0;
   }
 
-  // 3. The picture itself, against the baseline.
+  // 3. A shadowed volume: the same pixels from both backends, compute passes included.
+  ok = SameOnBothBackends("deep shadow map", MakeDeepShadowMap, "light-space-build") && ok;
+  ok = SameOnBothBackends("cached shadow rays", MakeCachedRays, "shadow-cache") && ok;
+
+  // 4. The picture itself, against the baseline.
   vtkNew<vtkDeepShadowRenderWindow> window;
   BuildScene(window);
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

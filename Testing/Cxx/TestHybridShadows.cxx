@@ -24,7 +24,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkCellArray.h"
 
 #include <limits>
@@ -259,6 +258,6 @@ int TestHybridShadows(int argc, char* argv[])
   // The baseline: the coloured deep shadow map of the hybrid scene.
   scene.Mapper->SetShadowTechnique(dsm);
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -12,7 +12,6 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -82,6 +81,6 @@ int TestScalarTypes(int argc, char* argv[])
              4.0 / 255.0, 0.005) && ok;
     }
   }
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

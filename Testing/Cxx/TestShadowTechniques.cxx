@@ -14,7 +14,6 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkLight.h"
-#include "vtkRegressionTestImage.h"
 
 using deepshadow::testing::Grab;
 using deepshadow::testing::WithinTolerance;
@@ -112,6 +111,6 @@ int TestShadowTechniques(int argc, char* argv[])
 
   mapper->SetShadowTechnique(cases[7].Technique);
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -13,7 +13,6 @@
 #include "vtkLight.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -112,6 +111,6 @@ int TestTransformsAndLights(int argc, char* argv[])
          1.5 / 255.0, 6.0 / 255.0, 0.005) && ok;
   volume->SetScale(1.2, 0.9, 1.0);
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -17,7 +17,6 @@
 #include "vtkActor.h"
 #include "vtkCubeSource.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkSphereSource.h"
 
 using deepshadow::testing::Check;
@@ -142,6 +141,6 @@ int TestTranslucentLayers(int argc, char* argv[])
   }
 
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

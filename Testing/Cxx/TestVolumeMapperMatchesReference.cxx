@@ -14,7 +14,6 @@
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -90,6 +89,6 @@ int TestVolumeMapperMatchesReference(int argc, char* argv[])
     }
   }
   // The head, as the baseline picture.
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -3,8 +3,11 @@
 //
 // Stated tolerances (8-bit images in [0, 1]; measured values are printed):
 // - emission/absorption: RMSE <= 0.005 and <= 1% of pixels off by more than 8/255;
-// - Phong-shaded with the headlight: RMSE <= 0.01, <= 2% of pixels off by more than 16/255;
+// - Phong-shaded with the headlight: RMSE <= 0.007, <= 0.5% of pixels off by more than 16/255;
 // - with an opaque sphere inside: same as shaded.
+// Each must catch a density 1.5 times too high (checked: the control renders ours so and
+// must fail). The shaded bounds were 0.01 and 2 %, which let that error pass with the sphere
+// (RMSE 0.0093, 1.05 %); measured now: 0.0036 and 0.0055, 0.22 % at most.
 // Why they are not zero: VTK puts the first sample one full step past the entry (we use the
 // middle of the step), looks opacity up in a 1024-texel table whose texel centres are offset
 // by half a texel (ours: 4096, centred), and lights a headlight as a point at the camera
@@ -20,7 +23,6 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -59,18 +61,23 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
 
   const Case cases[] = {
     { "emission-absorption", false, false, 0.005, 8.0 / 255.0, 0.01 },
-    { "shaded", true, false, 0.01, 16.0 / 255.0, 0.02 },
-    { "shaded, opaque sphere inside", true, true, 0.01, 16.0 / 255.0, 0.02 },
+    { "shaded", true, false, 0.007, 16.0 / 255.0, 0.005 },
+    { "shaded, opaque sphere inside", true, true, 0.007, 16.0 / 255.0, 0.005 },
   };
   const double sampleDistance = 0.5;
   bool ok = true;
   vtkNew<vtkDeepShadowRenderWindow> window;
   window->SetSize(240, 240);
+  // The control: ours with the density 1.5 times too high (the opacity unit distance divided
+  // by 1.5) must fall outside each tolerance, or the tolerance would not catch that error.
+  vtkNew<vtkVolumeProperty> denser;
   for (const Case& c : cases)
   {
     property->SetShade(c.Shade);
-    deepshadow::Image images[2];
-    for (int which = 0; which < 2; ++which)
+    denser->DeepCopy(property);
+    denser->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance() / 1.5);
+    deepshadow::Image images[3];
+    for (int which = 0; which < 3; ++which)
     {
       vtkNew<vtkRenderer> renderer;
       renderer->SetBackground(0.1, 0.1, 0.2);
@@ -81,12 +88,12 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
       vtkNew<vtkGPUVolumeRayCastMapper> theirs;
       theirs->SetAutoAdjustSampleDistances(0);
       theirs->SetSampleDistance(sampleDistance);
-      vtkVolumeMapper* mapper = which == 0 ? static_cast<vtkVolumeMapper*>(ours)
-                                           : static_cast<vtkVolumeMapper*>(theirs);
+      vtkVolumeMapper* mapper = which == 1 ? static_cast<vtkVolumeMapper*>(theirs)
+                                           : static_cast<vtkVolumeMapper*>(ours);
       mapper->SetInputData(volumeData);
       vtkNew<vtkVolume> volume;
       volume->SetMapper(mapper);
-      volume->SetProperty(property);
+      volume->SetProperty(which == 2 ? denser.Get() : property.Get());
       renderer->AddVolume(volume);
       vtkNew<vtkSphereSource> sphere;
       sphere->SetRadius(10.0);
@@ -115,6 +122,8 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
       }
     }
     ok = WithinTolerance(c.Name, images[0], images[1], c.MaxRMSE, c.Threshold, c.MaxFraction) && ok;
+    const std::string control = std::string(c.Name) + ", density x1.5 (must fail)";
+    ok = !WithinTolerance(control.c_str(), images[2], images[1], c.MaxRMSE, c.Threshold, c.MaxFraction) && ok;
     ok = ok && deepshadow::testing::CoveredFraction(images[0], { 0.1, 0.1, 0.2 }) > 0.1;
   }
 
@@ -125,7 +134,8 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
   ours->SetSampleDistance(sampleDistance);
   ours->SetInputData(volumeData);
   volume->SetMapper(ours);
+  volume->SetProperty(property); // not the control's
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -14,7 +14,6 @@
 #include "vtkActor.h"
 #include "vtkPlaneSource.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 
 #include <cstdlib>
 
@@ -127,6 +126,6 @@ int TestVolumesInterleave(int argc, char* argv[])
   pass->SetVolumeSegments(8);
 
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

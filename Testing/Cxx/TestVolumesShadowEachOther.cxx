@@ -14,7 +14,6 @@
 
 #include "vtkActor.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -171,6 +170,6 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   smokeMapper->SetShadowTechnique(dsm);
 
   window->Render();
-  const int result = vtkRegressionTestImage(window);
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }

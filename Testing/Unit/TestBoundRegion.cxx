@@ -123,6 +123,26 @@ TEST(CSGExpression, BadTextIsAClearError)
   EXPECT_FALSE(CSGExpression::Parse("A", 0, e, error));
 }
 
+TEST(CSGExpression, DeepNestingIsRefusedNotAStackOverflow)
+{
+  auto nested = [](int depth) {
+    std::string text;
+    for (int i = 0; i < depth; ++i)
+    {
+      text += "union(A,";
+    }
+    return text + "B" + std::string(static_cast<size_t>(depth), ')');
+  };
+  CSGExpression e;
+  std::string error;
+  EXPECT_TRUE(CSGExpression::Parse(nested(CSGExpression::MaxDepth), 2, e, error)) << error;
+  EXPECT_FALSE(CSGExpression::Parse(nested(CSGExpression::MaxDepth + 1), 2, e, error));
+  EXPECT_NE(error.find("nested deeper than 64"), std::string::npos) << error;
+  // A million levels: refused at level 65, and the message quotes a short prefix only.
+  EXPECT_FALSE(CSGExpression::Parse(nested(1000000), 2, e, error));
+  EXPECT_LT(error.size(), 200u) << error.size();
+}
+
 TEST(TriangleBVH, NextHitAgreesWithEveryTriangleTested)
 {
   const std::vector<Triangle> sphere = Sphere(glm::dvec3(1.0, 2.0, 3.0), 5.0, 40);

@@ -1,5 +1,6 @@
 // Unit tests of DeepShadow::Scenes: the procedural standard scenes and the volume reader.
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowMeshReader.h"
 #include "vtkDeepShadowVolumeReader.h"
 
 #include "vtkCamera.h"
@@ -11,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkShortArray.h"
 #include "vtkVolumeProperty.h"
 #include "vtkXMLImageDataWriter.h"
@@ -579,6 +581,81 @@ TEST_F(BadInput, NoPointScalars)
   xml->SetFileName(file.c_str());
   ASSERT_EQ(xml->Write(), 1);
   this->ExpectFailure(file, "no point scalars", false);
+}
+
+// VTK 9.1's global warning display also gates error events: an application that turned it
+// off must still get the reason (GetLastError), VTK's own reason included.
+TEST_F(BadInput, ReasonsAreHeardWithVTKWarningsOff)
+{
+  const std::string file = this->Dir.File("hex.nrrd");
+  std::ofstream(file, std::ios::binary) << "NRRD0004\ntype: uchar\ndimension: 3\n"
+                                           "sizes: 2 2 2\nencoding: hex\n\n0011223344556677\n";
+  vtkObject::GlobalWarningDisplayOff();
+  std::string lastError;
+  auto image = Read(file, nullptr, &lastError);
+  vtkObject::GlobalWarningDisplayOn();
+  EXPECT_NE(lastError.find("Unsupported encoding: hex"), std::string::npos) << lastError;
+  EXPECT_EQ(image->GetNumberOfPoints(), 0);
+  EXPECT_EQ(vtkObject::GetGlobalWarningDisplay(), 1);
+}
+
+// Headers VTK trusts, checked before it reads: counts against dimensions, memory.
+TEST_F(BadInput, HeadersVTKTrusts)
+{
+  const std::string two = this->Dir.File("two.nrrd");
+  std::ofstream(two, std::ios::binary) << "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2\n"
+                                          "encoding: raw\n\n01234567";
+  this->ExpectFailure(two, "does not have dimension: 3 sizes", false);
+  const std::string huge = this->Dir.File("huge.mhd");
+  std::ofstream(huge) << "ObjectType = Image\nNDims = 3\nDimSize = 100000 100000 100000\n"
+                         "ElementType = MET_UCHAR\nElementDataFile = huge.raw\n";
+  std::ofstream(this->Dir.File("huge.raw"), std::ios::binary) << "abc";
+  this->ExpectFailure(huge, "would take 1000000000000000 bytes", false);
+  const std::string type = this->Dir.File("type.mhd");
+  std::ofstream(type) << "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\n"
+                         "ElementType = MET_BANANA\nElementDataFile = huge.raw\n";
+  this->ExpectFailure(type, "MET_BANANA", false);
+}
+
+//------------------------------------------------------------------------------
+// vtkDeepShadowMeshReader: good files read; files VTK's readers crash on are refused first.
+TEST(MeshReader, ReadsAndRefuses)
+{
+  TempDir dir;
+  auto read = [](const std::string& file, std::string& error) {
+    vtkNew<vtkDeepShadowMeshReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    error = reader->GetLastError();
+    return reader->GetOutput()->GetNumberOfCells();
+  };
+  std::string error;
+  const std::string ply = dir.File("tetra.ply");
+  std::ofstream(ply) << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                        "property float y\nproperty float z\nelement face 4\n"
+                        "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
+                        "0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  EXPECT_EQ(read(ply, error), 4) << error;
+  EXPECT_TRUE(error.empty()) << error;
+  const std::string past = dir.File("past.ply");
+  std::ofstream(past) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 1\n"
+                         "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
+                         "0 1 0\n3 0 1 99\n";
+  EXPECT_EQ(read(past, error), 0);
+  EXPECT_NE(error.find("refers to the vertex 99 of 3"), std::string::npos) << error;
+  const std::string huge = dir.File("huge.ply");
+  std::ofstream(huge, std::ios::binary) << "ply\nformat binary_little_endian 1.0\n"
+                                           "element vertex 100000000\nproperty float x\n"
+                                           "property float y\nproperty float z\nend_header\n";
+  EXPECT_EQ(read(huge, error), 0);
+  EXPECT_NE(error.find("truncated"), std::string::npos) << error;
+  const std::string obj = dir.File("past.obj");
+  std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n";
+  EXPECT_EQ(read(obj, error), 0);
+  EXPECT_NE(error.find("normal '2' of 1"), std::string::npos) << error;
+  EXPECT_EQ(read(dir.File("none.stl"), error), 0);
+  EXPECT_NE(error.find("no such file"), std::string::npos) << error;
 }
 
 TEST_F(BadInput, NoFileName)

@@ -9,6 +9,7 @@
 #include "vtkLightCollection.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -18,6 +19,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkVolumeProperty.h"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -179,6 +185,190 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
   return std::string();
 }
 
+std::string CheckMeshInput(vtkPolyData* mesh)
+{
+  if (!mesh)
+  {
+    return "no input mesh";
+  }
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  vtkIdType nonFinite = 0;
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    nonFinite += std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 0 : 1;
+  }
+  if (nonFinite > 0)
+  {
+    return "the mesh has " + std::to_string(nonFinite) + " of " + std::to_string(points) +
+      " points that are not finite (NaN or infinite)";
+  }
+  const std::pair<const char*, vtkCellArray*> kinds[] = { { "vertex", mesh->GetVerts() },
+    { "line", mesh->GetLines() }, { "polygon", mesh->GetPolys() }, { "strip", mesh->GetStrips() } };
+  for (const auto& kind : kinds)
+  {
+    vtkCellArray* cells = kind.second;
+    if (cells && !cells->IsValid())
+    {
+      return std::string("the mesh's ") + kind.first + " cells are inconsistent (their offsets do "
+                                                       "not index their point ids)";
+    }
+    if (!cells || cells->GetNumberOfConnectivityIds() == 0)
+    {
+      continue;
+    }
+    double range[2];
+    cells->GetConnectivityArray()->GetRange(range, 0);
+    if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
+    {
+      std::ostringstream why;
+      why << "a " << kind.first << " of the mesh has the point id "
+          << static_cast<long long>(range[0] < 0.0 ? range[0] : range[1]) << ", out of range ("
+          << points << " points)";
+      return why.str();
+    }
+  }
+  return std::string();
+}
+
+std::string CheckVolumePlacement(const glm::dmat4& indexToWorld, const glm::ivec3& dims)
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      if (!std::isfinite(indexToWorld[c][r]))
+      {
+        return "the volume's placement (spacing, origin, direction matrix or the prop's "
+               "matrix) is not finite";
+      }
+    }
+  }
+  const glm::dmat3 axes(indexToWorld);
+  if (glm::determinant(axes) == 0.0)
+  {
+    return "the volume's direction matrix (or the prop's matrix) is singular: its voxels have no volume";
+  }
+  std::ostringstream why;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double edge = glm::length(axes[axis]);
+    if (!(edge >= MinVoxelEdge && edge <= MaxVoxelEdge))
+    {
+      why << "the volume's voxel edge along " << "xyz"[axis] << " is " << edge
+          << " world units; single-precision GPU rendering needs " << MinVoxelEdge << " to "
+          << MaxVoxelEdge << " (rescale the spacing)";
+      return why.str();
+    }
+  }
+  const glm::dvec3 size = axes * glm::dvec3(glm::max(dims - 1, glm::ivec3(1)));
+  const glm::dvec3 centre = glm::dvec3(indexToWorld * glm::dvec4(0.5 * glm::dvec3(dims - 1), 1.0));
+  const double extent = glm::length(size);
+  const double offset = glm::length(centre);
+  if (offset > MaxOffsetRatio * extent)
+  {
+    why << "the volume lies " << offset << " world units from the origin, "
+        << offset / extent << " times its size; single-precision GPU rendering resolves its "
+        << "voxels up to " << MaxOffsetRatio << " times (move its origin nearer)";
+    return why.str();
+  }
+  return std::string();
+}
+
+std::string CheckVolumeProperty(vtkVolumeProperty* property)
+{
+  const double unit = property->GetScalarOpacityUnitDistance(0);
+  if (!(unit > 0.0) || !std::isfinite(unit))
+  {
+    std::ostringstream why;
+    why << "the volume property's scalar opacity unit distance is " << unit
+        << "; it must be positive and finite";
+    return why.str();
+  }
+  auto finite = [](const double* v, int n) {
+    for (int i = 0; i < n; ++i)
+    {
+      if (!std::isfinite(v[i]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0))
+  {
+    for (int i = 0; i < opacity->GetSize(); ++i)
+    {
+      double node[4];
+      opacity->GetNodeValue(i, node);
+      if (!finite(node, 4))
+      {
+        return "the scalar opacity function's point " + std::to_string(i) + " is not finite";
+      }
+    }
+  }
+  if (property->GetColorChannels(0) == 1)
+  {
+    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
+    {
+      for (int i = 0; i < gray->GetSize(); ++i)
+      {
+        double node[4];
+        gray->GetNodeValue(i, node);
+        if (!finite(node, 4))
+        {
+          return "the grey transfer function's point " + std::to_string(i) + " is not finite";
+        }
+      }
+    }
+  }
+  else if (vtkColorTransferFunction* color = property->GetRGBTransferFunction(0))
+  {
+    for (int i = 0; i < color->GetSize(); ++i)
+    {
+      double node[6];
+      color->GetNodeValue(i, node);
+      if (!finite(node, 6))
+      {
+        return "the colour transfer function's point " + std::to_string(i) + " is not finite";
+      }
+    }
+  }
+  return std::string();
+}
+
+std::string CheckLights(const std::vector<Light>& lights)
+{
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    const Light& light = lights[i];
+    const glm::dvec3 p = light.Position, f = light.FocalPoint;
+    const std::string name = "light " + std::to_string(i);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(f.x) ||
+      !std::isfinite(f.y) || !std::isfinite(f.z))
+    {
+      return name + "'s position or focal point is not finite";
+    }
+    const glm::dvec3 d = p - f;
+    if (!light.Positional &&
+      (p == f || !std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)))
+    {
+      return name + " is directional and its position minus its focal point is " +
+        (p == f ? "zero" : "not finite") + ": it has no direction";
+    }
+    const double farthest = std::max({ std::abs(p.x), std::abs(p.y), std::abs(p.z) });
+    if (light.Positional && farthest > MaxLightCoordinate)
+    {
+      std::ostringstream why;
+      why << name << " is positional at " << farthest << " world units; single-precision GPU "
+          << "lighting needs at most " << MaxLightCoordinate << " (make it directional)";
+      return why.str();
+    }
+  }
+  return std::string();
+}
+
 glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix)
 {
   vtkNew<vtkMatrix4x4> indexToPhysical;
@@ -249,6 +439,12 @@ std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData
     if (!mesh)
     {
       error = name + " is null";
+      return nullptr;
+    }
+    const std::string problem = CheckMeshInput(mesh);
+    if (!problem.empty())
+    {
+      error = name + ": " + problem;
       return nullptr;
     }
     std::vector<Triangle> triangles;
@@ -364,6 +560,17 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     light->GetTransformedFocalPoint(focal);
     l.Position = ToGlm3(position);
     l.FocalPoint = ToGlm3(focal);
+    if (!l.Positional)
+    {
+      // Only the direction matters: one unit from the focal point, normalised after scaling
+      // by the largest component, so that 1e308 does not overflow to an infinite length.
+      const glm::dvec3 d = l.Position - l.FocalPoint;
+      const double largest = std::max({ std::abs(d.x), std::abs(d.y), std::abs(d.z) });
+      if (std::isfinite(largest) && largest > 0.0)
+      {
+        l.Position = l.FocalPoint + glm::normalize(d / largest);
+      }
+    }
     l.Diffuse = ToGlm3(light->GetDiffuseColor()) * light->GetIntensity();
     l.Specular = ToGlm3(light->GetSpecularColor()) * light->GetIntensity();
     l.Attenuation = ToGlm3(light->GetAttenuationValues());

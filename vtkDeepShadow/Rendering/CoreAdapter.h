@@ -42,6 +42,39 @@ glm::dmat4 ToGlm(const vtkMatrix4x4* matrix);
  */
 std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars);
 
+/**
+ * Checks that a mesh can be drawn or used as a bound without reading out of bounds: every
+ * point finite, every cell's point ids within the points. Returns "" when it can, else one
+ * line saying why not (no input, the number of non-finite points, the first bad id).
+ */
+std::string CheckMeshInput(vtkPolyData* mesh);
+
+/**
+ * Checks where a volume lies in the world for single-precision GPU rendering: `indexToWorld`
+ * finite and invertible (a zero or NaN direction matrix is not), every world voxel edge
+ * between MinVoxelEdge and MaxVoxelEdge, and the box no farther from the world origin than
+ * MaxOffsetRatio times its size (float positions must still resolve a voxel there). Returns
+ * "" when it is fine, else one line saying why not.
+ */
+std::string CheckVolumePlacement(const glm::dmat4& indexToWorld, const glm::ivec3& dims);
+constexpr double MinVoxelEdge = 1e-15;
+constexpr double MaxVoxelEdge = 1e15;
+constexpr double MaxOffsetRatio = 1e5;
+
+/**
+ * Checks a volume property's component 0: scalar opacity unit distance positive and finite,
+ * every node of the colour and opacity transfer functions finite. "" when it is fine.
+ */
+std::string CheckVolumeProperty(vtkVolumeProperty* property);
+
+/**
+ * Checks lights from MakeLights: finite positions and focal points, and positional lights
+ * within MaxLightCoordinate of the origin (beyond, squared distances overflow in single
+ * precision on the GPU). "" when they are fine, else one line naming the light.
+ */
+std::string CheckLights(const std::vector<Light>& lights);
+constexpr double MaxLightCoordinate = 1e18;
+
 /** Voxel index -> world: the image's index-to-physical matrix, then the prop's matrix. */
 glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix);
 
@@ -72,7 +105,11 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
   const std::string& expression, const glm::dmat4& dataToIndex, std::string& error);
 
-/** Switched-on lights of the renderer in world space (at most MaxLights). */
+/**
+ * Switched-on lights of the renderer in world space (at most MaxLights). A directional
+ * light's position is moved to one unit from its focal point along its direction,
+ * normalised in double without overflow, so that downstream code never squares 1e308.
+ */
 std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated = nullptr);
 
 /** The renderer's active camera over its (tiled) viewport. */

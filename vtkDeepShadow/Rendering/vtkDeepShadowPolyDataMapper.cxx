@@ -15,6 +15,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -54,6 +55,22 @@ public:
   std::vector<unsigned int> Indices;
   vtkMTimeType PreparedTime = 0;
   std::string PrepareError;
+  bool BadInput = false; // PrepareError is an error (bad input), not only nothing to draw
+  // CheckInput's answer for the input at its modification time (asked for every bounds).
+  vtkPolyData* CheckedInput = nullptr;
+  vtkMTimeType CheckedTime = 0;
+  std::string InputProblem;
+
+  const std::string& CheckInput(vtkPolyData* input)
+  {
+    if (input != this->CheckedInput || !input || input->GetMTime() != this->CheckedTime)
+    {
+      this->CheckedInput = input;
+      this->CheckedTime = input ? input->GetMTime() : 0;
+      this->InputProblem = input ? vtkDeepShadowPolyDataMapper::CheckInput(input) : std::string();
+    }
+    return this->InputProblem;
+  }
 
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
   vtkSmartPointer<vtkOpenGLBufferObject> Vertices;
@@ -131,20 +148,19 @@ bool vtkDeepShadowPolyDataMapper::Internals::Prepare(vtkDeepShadowPolyDataMapper
   }
   impl.PreparedTime = time;
   impl.PrepareError.clear();
+  impl.BadInput = false;
   impl.Uploaded = false;
   impl.Points.clear();
   impl.Normals.clear();
   impl.Colors.clear();
   impl.Indices.clear();
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  // Before any VTK filter sees it: they trust the point ids.
+  const std::string& problem = impl.CheckInput(input);
+  if (!problem.empty())
   {
-    double p[3];
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      impl.PrepareError = "the mesh has points that are not finite (NaN or infinite): nothing is drawn";
-      return false;
-    }
+    impl.PrepareError = problem + ": nothing is drawn";
+    impl.BadInput = true;
+    return false;
   }
   // Polygons and strips as triangles; lines and vertices are not surfaces.
   vtkNew<vtkTriangleFilter> triangulate;
@@ -208,12 +224,58 @@ bool vtkDeepShadowPolyDataMapper::Internals::Prepare(vtkDeepShadowPolyDataMapper
   return true;
 }
 
+double* vtkDeepShadowPolyDataMapper::GetBounds()
+{
+  // VTK computes a mesh's bounds from its cells, marking their points by id: ids out of range
+  // write past its buffer there, before Render could refuse the mesh.
+  if (this->GetNumberOfInputConnections(0) > 0 && !this->Static)
+  {
+    this->Update();
+  }
+  const std::string& problem = this->Impl->CheckInput(this->GetInput());
+  if (!problem.empty())
+  {
+    this->Report(problem + ": nothing is drawn", true);
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  return this->Superclass::GetBounds();
+}
+
+void vtkDeepShadowPolyDataMapper::ReportPrepareError()
+{
+  this->Report(this->Impl->PrepareError, this->Impl->BadInput);
+}
+
+void vtkDeepShadowPolyDataMapper::Report(const std::string& problem, bool error)
+{
+  // Once per change, whether the bounds, the pass (gathering casters) or Render asked first.
+  if (problem != this->LastError)
+  {
+    this->LastError = problem;
+    if (error)
+    {
+      vtkErrorMacro(<< problem);
+    }
+    else
+    {
+      vtkWarningMacro(<< problem);
+    }
+  }
+}
+
+std::string vtkDeepShadowPolyDataMapper::CheckInput(vtkPolyData* mesh)
+{
+  return adapter::CheckMeshInput(mesh);
+}
+
 bool vtkDeepShadowPolyDataMapper::GetSurfaceMesh(vtkActor* actor, deepshadow::SurfaceMesh& mesh, std::string& error)
 {
   Internals& impl = *this->Impl;
   if (!impl.Prepare(this, actor))
   {
-    error = this->LastError = impl.PrepareError;
+    this->ReportPrepareError();
+    error = impl.PrepareError;
     return false;
   }
   const glm::dmat4 toWorld = adapter::ToGlm(actor->GetMatrix());
@@ -253,11 +315,7 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   }
   if (!impl.Prepare(this, actor))
   {
-    if (impl.PrepareError != this->LastError)
-    {
-      this->LastError = impl.PrepareError;
-      vtkWarningMacro(<< this->LastError);
-    }
+    this->ReportPrepareError();
     return;
   }
   this->LastError.clear();

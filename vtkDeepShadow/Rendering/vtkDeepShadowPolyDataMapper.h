@@ -19,8 +19,10 @@
  *   composites at their depths along each view ray (vtkDeepShadowPass::SetTranslucentLayers).
  * Without the pass, the mesh is lit without shadows.
  *
- * Bad input: no input or no triangles draws nothing (with a warning); non-finite points are
- * an error naming the count, and nothing is drawn.
+ * Bad input: no input or no triangles draws nothing (with a warning); non-finite points and
+ * cells whose point ids lie outside the points are an error (one vtkErrorMacro per change,
+ * also in GetLastError(), naming the count or the id) found before any VTK filter sees the
+ * mesh, and nothing is drawn (nor cast).
  */
 #ifndef vtkDeepShadowPolyDataMapper_h
 #define vtkDeepShadowPolyDataMapper_h
@@ -40,6 +42,7 @@ struct ShadowContext;
 struct SurfaceMesh;
 }
 class vtkDeepShadowTechnique;
+class vtkPolyData;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPolyDataMapper : public vtkPolyDataMapper
 {
@@ -85,8 +88,23 @@ public:
   void SetOutputModeToShadowTerm() { this->SetOutputMode(OutputShadowTerm); }
   ///@}
 
+  /**
+   * "" when `mesh` can be drawn without reading out of bounds, else why not in one line:
+   * non-finite points (their count), a cell's point id outside the points. The mapper checks
+   * its input with it; applications and tools may check a mesh before other filters see it.
+   */
+  static std::string CheckInput(vtkPolyData* mesh);
+
   /** The triangles as the scene's shadows see them: world coordinates (the actor's matrix). */
   bool GetSurfaceMesh(vtkActor* actor, deepshadow::SurfaceMesh& mesh, std::string& error);
+
+  /**
+   * The input's bounds; for an input CheckInput refuses, uninitialized bounds (VTK's own
+   * computation would write through the bad point ids) and the error reported here, since
+   * the renderer then culls the actor before Render().
+   */
+  double* GetBounds() override;
+  using Superclass::GetBounds;
 
   void Render(vtkRenderer* renderer, vtkActor* actor) override;
   void RenderPiece(vtkRenderer* renderer, vtkActor* actor) override;
@@ -124,6 +142,10 @@ protected:
 private:
   vtkDeepShadowPolyDataMapper(const vtkDeepShadowPolyDataMapper&) = delete;
   void operator=(const vtkDeepShadowPolyDataMapper&) = delete;
+
+  /** Says why the input cannot be drawn, once per change (an error for bad input). */
+  void ReportPrepareError();
+  void Report(const std::string& problem, bool error);
 
   class Internals;
   std::unique_ptr<Internals> Impl;

@@ -294,6 +294,62 @@ vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper()
   this->SetShadowTechnique(nullptr);
 }
 
+void vtkDeepShadowVolumeMapper::SetSampleDistance(double distance)
+{
+  if (!(distance >= 0.0) || !std::isfinite(distance))
+  {
+    vtkErrorMacro("SetSampleDistance(" << distance << "): the sample distance must be finite "
+                  "and >= 0 (0: the default); it stays " << this->SampleDistance);
+    return;
+  }
+  if (distance != this->SampleDistance)
+  {
+    this->SampleDistance = distance;
+    this->Modified();
+  }
+}
+
+void vtkDeepShadowVolumeMapper::SetTerminationOpacity(double opacity)
+{
+  if (std::isnan(opacity))
+  {
+    vtkErrorMacro("SetTerminationOpacity(nan): the termination opacity must be a number in "
+                  "[0, 1]; it stays " << this->TerminationOpacity);
+    return;
+  }
+  opacity = std::clamp(opacity, 0.0, 1.0);
+  if (opacity != this->TerminationOpacity)
+  {
+    this->TerminationOpacity = opacity;
+    this->Modified();
+  }
+}
+
+double* vtkDeepShadowVolumeMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds();
+  vtkImageData* input = this->GetImageInput();
+  if (!input)
+  {
+    return bounds;
+  }
+  // VTK's renderer culls a volume whose bounds are NaN, or too small for its camera (1e-30),
+  // before Render() could say why: said here (once; Render() says the same).
+  vtkDataArray* scalars = nullptr;
+  std::string problem = adapter::CheckVolumeInput(input, scalars);
+  if (problem.empty())
+  {
+    const int* dims = input->GetDimensions();
+    problem = adapter::CheckVolumePlacement(
+      adapter::IndexToWorld(input, nullptr), glm::ivec3(dims[0], dims[1], dims[2]));
+  }
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+  }
+  return bounds;
+}
+
 void vtkDeepShadowVolumeMapper::SetShadowTechnique(vtkDeepShadowTechnique* technique)
 {
   if (technique == this->ShadowTechnique)
@@ -626,6 +682,16 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   }
 
   const glm::dmat4 indexToWorld = adapter::IndexToWorld(input, volume->GetMatrix());
+  std::string problem = adapter::CheckVolumePlacement(indexToWorld, impl.Dims);
+  if (problem.empty())
+  {
+    problem = adapter::CheckVolumeProperty(property);
+  }
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return;
+  }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance
                                                  : deepshadow::DefaultSampleDistance(indexToWorld);
@@ -745,11 +811,17 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
   }
-  // A ray of more samples than a ray may take would be cut short (llvmpipe) or take hours.
-  const std::string tooFine = CheckRaySamples(context, technique, camera);
-  if (!tooFine.empty())
+  problem = adapter::CheckLights(context.Lights);
+  if (!problem.empty())
   {
-    this->ReportError(tooFine);
+    this->ReportError(problem);
+    return;
+  }
+  // A ray of more samples than a ray may take would be cut short (llvmpipe) or take hours.
+  problem = CheckRaySamples(context, technique, camera);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
     return;
   }
   if (technique)

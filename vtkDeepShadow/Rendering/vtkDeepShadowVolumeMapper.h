@@ -23,8 +23,13 @@
  * only there (feature Bound; the CPU twin is deepshadow::BoundRegion).
  *
  * Bad input (no input, empty or flat volume, unsupported type or component count,
- * non-finite samples, a volume larger than the GL's 3D texture limit) is reported once per
- * change with vtkErrorMacro (also in GetLastError()) and the volume is not drawn.
+ * non-finite samples, a volume larger than the GL's 3D texture limit; a spacing, origin or
+ * direction matrix that is not finite or singular, or a placement single precision cannot
+ * resolve (see deepshadow::adapter::CheckVolumePlacement); a scalar opacity unit distance
+ * that is not positive, a transfer function point that is not finite; a light whose
+ * position is not finite or beyond 1e18) is reported once per change with vtkErrorMacro
+ * (also in GetLastError()) and the volume is not drawn (what makes VTK's renderer cull the
+ * volume is reported by GetBounds()).
  */
 #ifndef vtkDeepShadowVolumeMapper_h
 #define vtkDeepShadowVolumeMapper_h
@@ -60,9 +65,10 @@ public:
   ///@{
   /**
    * World distance between samples along a ray. 0 (the default) means
-   * deepshadow::DefaultSampleDistance: half the shortest world-space voxel edge.
+   * deepshadow::DefaultSampleDistance: half the shortest world-space voxel edge. A negative,
+   * infinite or NaN distance is an error (vtkErrorMacro) and the old one is kept.
    */
-  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetSampleDistance(double distance);
   vtkGetMacro(SampleDistance, double);
   ///@}
   /** The distance used in the last frame (0 before the first). */
@@ -78,8 +84,11 @@ public:
   ///@}
 
   ///@{
-  /** Stop a ray once its opacity exceeds this (default 1 - 1/255, as VTK); 1 never stops. */
-  vtkSetClampMacro(TerminationOpacity, double, 0.0, 1.0);
+  /**
+   * Stop a ray once its opacity exceeds this (default 1 - 1/255, as VTK); 1 never stops.
+   * Clamped to [0, 1]; NaN is an error (vtkErrorMacro) and the old value is kept.
+   */
+  virtual void SetTerminationOpacity(double opacity);
   vtkGetMacro(TerminationOpacity, double);
   ///@}
 
@@ -207,6 +216,14 @@ public:
   vtkImageData* GetImageInput();
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /**
+   * The input's bounds. VTK's renderer culls a volume whose bounds are not finite (NaN
+   * spacing, origin or direction) or too small for its camera before Render() is called, so
+   * the input's and its placement's errors are also reported here.
+   */
+  double* GetBounds() override;
+  using Superclass::GetBounds;
 
   /** Without any input, reports our one clear error instead of the pipeline's. */
   using Superclass::Update;

@@ -99,7 +99,8 @@ private:
   {
     if (this->Error.empty())
     {
-      this->Error = "CSG expression \"" + this->Text + "\", at character " +
+      const std::string shown = this->Text.size() <= 60 ? this->Text : this->Text.substr(0, 57) + "...";
+      this->Error = "CSG expression \"" + shown + "\", at character " +
         std::to_string(this->Position + 1) + ": " + message;
     }
     return false;
@@ -115,9 +116,13 @@ private:
     ++this->Position;
     return true;
   }
-  bool Expression(CSGNode& node)
+  bool Expression(CSGNode& node, int depth = 0)
   {
     this->Skip();
+    if (depth > CSGExpression::MaxDepth)
+    {
+      return this->Fail("operations nested deeper than " + std::to_string(CSGExpression::MaxDepth));
+    }
     const size_t start = this->Position;
     while (this->Position < this->Text.size() && std::isalpha(static_cast<unsigned char>(this->Text[this->Position])))
     {
@@ -167,7 +172,7 @@ private:
     do
     {
       node.Operands.emplace_back();
-      if (!this->Expression(node.Operands.back()))
+      if (!this->Expression(node.Operands.back(), depth + 1))
       {
         return false;
       }

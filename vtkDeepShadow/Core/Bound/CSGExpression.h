@@ -45,11 +45,17 @@ class VTKDEEPSHADOWCORE_EXPORT CSGExpression
 public:
   /** Leaves a per-ray expression may have (its truth table has 2^MaxLeaves entries). */
   static constexpr int MaxLeaves = 8;
+  /**
+   * Operations nested deeper are refused: parsing and evaluating recurse, and a string of
+   * 100000 "union(A," would overflow the stack (26 leaves never need more than a few levels).
+   */
+  static constexpr int MaxDepth = 64;
 
   /**
    * Parses `text` for `leafCount` leaves. Empty text means the union of all leaves. Returns
    * false with `error` naming the problem and its position on bad syntax, an unknown
-   * operation, or a leaf name beyond the leaves given.
+   * operation, a leaf name beyond the leaves given, or nesting deeper than MaxDepth. The
+   * error quotes at most 60 characters of `text`.
    */
   static bool Parse(const std::string& text, int leafCount, CSGExpression& result, std::string& error);
   /** The union of `leafCount` leaves (one leaf: the leaf itself). */

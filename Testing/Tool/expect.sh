@@ -1,0 +1,88 @@
+# Sourced by the tool's shell tests: their assertions, and the count of failures.
+#   expect CODE DESCRIPTION [NEEDLE] -- command...
+#     Runs the command (stdout in out.txt, stderr in err.txt) and checks its exit code. For
+#     code 2 also: exactly one line "deepshadow: ..." on stderr, containing NEEDLE when given,
+#     and no regular file left at the command's --out or --json (removed before it runs).
+#   fail MESSAGE          counts a failure and prints it
+failures=0
+
+fail() {
+  echo "FAILED: $*"
+  failures=$((failures + 1))
+}
+
+expect() {
+  local code=$1 what=$2 needle=""
+  shift 2
+  if [ "$1" != "--" ]; then
+    needle=$1
+    shift
+  fi
+  shift # --
+  local outputs=() previous=""
+  for argument in "$@"; do
+    if [ "$previous" = "--out" ] || [ "$previous" = "--json" ]; then
+      outputs+=("$argument")
+    fi
+    previous=$argument
+  done
+  for file in "${outputs[@]}"; do
+    [ -f "$file" ] && rm -f "$file"
+  done
+  "$@" > out.txt 2> err.txt
+  local got=$?
+  if [ "$got" -ne "$code" ]; then
+    fail "$what: exit $got, expected $code"
+    head -c 2000 err.txt
+    return
+  fi
+  if [ "$code" -eq 2 ]; then
+    if [ "$(wc -l < err.txt)" -ne 1 ] || ! grep -q "^deepshadow: " err.txt; then
+      fail "$what: expected one 'deepshadow: ...' line on stderr"
+      head -c 2000 err.txt
+      return
+    fi
+    if [ -n "$needle" ] && ! grep -qF -- "$needle" err.txt; then
+      fail "$what: the error does not say '$needle'"
+      cat err.txt
+      return
+    fi
+    for file in "${outputs[@]}"; do
+      if [ -f "$file" ]; then
+        fail "$what: exit 2 but $file was left behind"
+        return
+      fi
+    done
+  fi
+  echo "ok: $what (exit $code)$( [ "$code" -eq 2 ] && echo ": $(cat err.txt)")"
+}
+
+# Image checks with deepshadow-testkit (the sourcing script sets $kit).
+#   not_flat FILE WHAT          FILE shows something: not one colour, more than 1 % covered
+#   rmse_at_most A B LIMIT WHAT  A and B agree (RMSE in linear RGB [0, 1] at most LIMIT)
+#   rmse_at_least A B LIMIT WHAT A and B differ (RMSE at least LIMIT)
+not_flat() {
+  if [ ! -s "$1" ]; then
+    fail "$2: $1 was not written"
+  elif "$kit" flat "$1" > kit.txt; then
+    fail "$2: $1 is flat ($(cat kit.txt))"
+  else
+    echo "ok: $2: $1 is not flat ($(cat kit.txt))"
+  fi
+}
+
+rmse_at_most() {
+  if "$kit" compare "$1" "$2" --at-most "$3" > kit.txt; then
+    echo "ok: $4: $(cat kit.txt) <= $3"
+  else
+    fail "$4: $1 against $2: $(cat kit.txt), expected RMSE <= $3"
+  fi
+}
+
+rmse_at_least() {
+  if "$kit" compare "$1" "$2" --at-least "$3" > kit.txt; then
+    echo "ok: $4: $(cat kit.txt) >= $3"
+  else
+    fail "$4: $1 against $2: $(cat kit.txt), expected RMSE >= $3"
+  fi
+}
