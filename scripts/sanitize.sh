@@ -13,10 +13,6 @@
 #   instead;
 # - assertions (NDEBUG): without it VTK's test driver traps floating-point exceptions, and
 #   Mesa's llvmpipe raises one while creating a context (SIGFPE in OSMesaCreateContextAttribs);
-# - one test, Core.StiffCases.FlatGridsDrawNothingAndShadowNothing: UBSan reports a signed
-#   overflow in deepshadow::FilterShadowMap (Core/Shadows/ShadowMap.cxx: a NaN texel
-#   coordinate converted to INT_MIN, then minus one), a file of issue 16; excluded until it
-#   is fixed there.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh" --deps-only
@@ -37,5 +33,4 @@ export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$root/build-asan"
 ctest --output-on-failure --timeout 1200 -j 2 \
-  -R '^(Core|Scenes|CSG)\.|TestBadInput|Tool\.HostileInput|Tool\.Fuzz' \
-  -E 'FlatGridsDrawNothingAndShadowNothing' "$@"
+  -R '^(Core|Scenes|CSG)\.|TestBadInput|Tool\.HostileInput|Tool\.Fuzz' "$@"

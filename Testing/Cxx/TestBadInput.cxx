@@ -324,6 +324,10 @@ int TestBadInput(int, char*[])
     kept = kept && s.Mapper->GetTerminationOpacity() == before;
   }), "SetTerminationOpacity(nan)", true) && ok;
   ok = deepshadow::testing::Check("rejected settings keep their old values", kept) && ok;
+  // A sample distance that would take more samples than a ray may (deepshadow::
+  // MaxRayIterations): one error naming the smallest that fits, nothing drawn.
+  ok = Expect("SetSampleDistance(1e-9)", RenderBad(valid(), false,
+         [](Scene& s) { s.Mapper->SetSampleDistance(1e-9); }), "use at least", false) && ok;
   // A directional light at 1e308 along the diagonal lights exactly as one at (1, 1, 1).
   auto diagonal = [&](double d) {
     return RenderBad(valid(), false, [d](Scene& s) {

@@ -109,6 +109,11 @@ expect 0 "--light-dir 1,0,1" -- "$tool" "${box[@]}" --technique dsm --light-dir 
 expect 0 "--light-dir 1e308,0,1e308" -- "$tool" "${box[@]}" --technique dsm --light-dir 1e308,0,1e308 --out far.png
 rmse_at_most far.png light.png 0 "--light-dir 1e308,0,1e308 lights as 1,0,1"
 expect 2 "--light-pos 1e300,0,0" "1e18" -- "$tool" "${box[@]}" --light-pos 1e300,0,0 --out x.png
+# Sample distances beyond what a ray may take (65535 samples across the volume): refused at
+# once, naming the smallest that fits (the GPU marched 21 s and drew a cut-off picture; the
+# CPU reference ran for hours).
+expect 2 "--sample-distance 1e-9" "use at least" -- "$tool" "${box[@]}" --sample-distance 1e-9 --out x.png
+expect 2 "reference --sample-distance 1e-6" "use at least" -- timeout 60 "$tool" reference --scene box --size 32x32 --sample-distance 1e-6 --out x.png
 expect 2 "--light pos:1e300,0,0" "1e18" -- "$tool" "${box[@]}" --light pos:1e300,0,0 --out x.png
 
 echo "== Misleading exits before"

@@ -339,8 +339,8 @@ bool LightSpaceShadow::Locate(int face, const glm::dvec3& p, MapPoint& point) co
   {
     return false;
   }
-  point.X = 0.5 * (u + 1.0) * this->Size - 0.5;
-  point.Y = 0.5 * (v + 1.0) * this->Size - 0.5;
+  point.X = ClampTexelPosition(0.5 * (u + 1.0) * this->Size - 0.5, this->Size);
+  point.Y = ClampTexelPosition(0.5 * (v + 1.0) * this->Size - 0.5, this->Size);
   return true;
 }
 

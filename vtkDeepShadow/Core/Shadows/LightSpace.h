@@ -20,6 +20,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -126,6 +128,17 @@ struct MapPoint
     return this->Depth + this->Slope.x * (i - this->X) + this->Slope.y * (j - this->Y);
   }
 };
+
+/**
+ * A continuous texel position kept finite and within 64 texels of a map of `size` (a NaN,
+ * from a degenerate face, becomes 0): texels clamp to the map's edge and no lookup reads
+ * farther than 10 texels from its point, so nothing changes but the conversion to int, which
+ * stays defined.
+ */
+inline double ClampTexelPosition(double position, int size)
+{
+  return std::isnan(position) ? 0.0 : std::clamp(position, -64.0, size + 64.0);
+}
 
 /**
  * The steepest receiver plane a lookup follows, in depth per texel width: 80 degrees from

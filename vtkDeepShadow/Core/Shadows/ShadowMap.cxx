@@ -30,6 +30,8 @@ const std::vector<glm::dvec2>& PoissonDisc()
 double FilterShadowMap(const float* depths, int size, double x, double y, double depth,
   ShadowFilter filter, const glm::dvec2& slope)
 {
+  x = ClampTexelPosition(x, size);
+  y = ClampTexelPosition(y, size);
   auto lit = [&](int i, int j) {
     const double planeDepth = depth + slope.x * (i - x) + slope.y * (j - y);
     i = std::clamp(i, 0, size - 1);
