@@ -1,5 +1,6 @@
 #include "MeshFileChecks.h"
 
+#include "HeaderText.h"
 #include "vtkDeepShadowMemoryBudget.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -20,20 +21,6 @@ namespace meshfile
 {
 namespace
 {
-// Whether a line is text (VTK's text parsers read NUL bytes as the end of a line, and then
-// past the words they expected).
-bool IsText(const std::string& line)
-{
-  for (char c : line)
-  {
-    const unsigned char u = static_cast<unsigned char>(c);
-    if ((u < 32 && c != '\t' && c != '\r') || u == 127)
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 // Bytes of a PLY scalar type, 0 if unknown.
 int PLYTypeSize(const std::string& type)
@@ -160,7 +147,7 @@ std::string CheckBody(std::ifstream& in, const std::vector<Element>& elements, b
           return "it ends after " + std::to_string(e) + " of its " + std::to_string(element.Count) +
             " " + element.Name + " lines (truncated?)";
         }
-        if (!IsText(line))
+        if (!IsHeaderText(line))
         {
           return element.Name + " " + std::to_string(e) + "'s line holds bytes that are not text";
         }
@@ -296,10 +283,10 @@ std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
   // vtkPLY reads header lines into fixed buffers and words into a fixed table.
   for (int number = 1; !ended && std::getline(in, line); ++number)
   {
-    if (line.size() > 1000 || !IsText(line))
+    if (line.size() > 1000 || !IsHeaderText(line))
     {
       return "its header line " + std::to_string(number) +
-        (IsText(line) ? " is longer than 1000 characters" : " holds bytes that are not text");
+        (IsHeaderText(line) ? " is longer than 1000 characters" : " holds bytes that are not text");
     }
     const std::vector<std::string> words = Words(line);
     const std::string key = words.empty() ? "" : words[0];
@@ -441,7 +428,7 @@ std::string CheckOBJ(const std::string& fileName, std::uint64_t& bytes)
   std::uint64_t points = 0, textures = 0, normals = 0, corners = 0;
   for (std::uint64_t number = 1; std::getline(in, line); ++number)
   {
-    if (!IsText(line))
+    if (!IsHeaderText(line))
     {
       return "its line " + std::to_string(number) + " holds bytes that are not text";
     }
@@ -513,7 +500,7 @@ std::string CheckLegacyVTK(const std::string& fileName)
   {
     return "its first line is not '# vtk DataFile Version N' with a version VTK 9.1 reads (1.0 to 5.1)";
   }
-  if (!IsText(title))
+  if (!IsHeaderText(title))
   {
     return "its title line holds bytes that are not text";
   }

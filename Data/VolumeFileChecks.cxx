@@ -1,5 +1,6 @@
 #include "VolumeFileChecks.h"
 
+#include "HeaderText.h"
 #include "vtkDeepShadowMemoryBudget.h"
 
 #include "vtkDataArray.h"
@@ -76,20 +77,6 @@ bool IsFinite(const std::string& word)
   return !word.empty() && *end == '\0' && std::isfinite(v);
 }
 
-// Whether a header line is text: VTK's header parsers hang or misread on NUL and other
-// control bytes (seen: a NUL in a NRRD header line made VTK 9.1's reader wait forever).
-bool IsText(const std::string& line)
-{
-  for (char c : line)
-  {
-    const unsigned char u = static_cast<unsigned char>(c);
-    if ((u < 32 && c != '\t' && c != '\r') || u == 127)
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 // "KEY = value" lines of a MetaImage header, keys lower case, up to ElementDataFile (the
 // last key; binary data may follow it in a .mha). A line that is not text: the key "".
@@ -100,7 +87,7 @@ std::map<std::string, std::string> MetaFields(const std::string& fileName)
   std::string line;
   for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines)
   {
-    if (!IsText(line))
+    if (!IsHeaderText(line))
     {
       fields[""] = line;
       break;
@@ -246,7 +233,7 @@ std::string CheckNrrdHeader(const std::string& fileName)
       // Seen here: VTK 9.1's NRRD reader waits forever for the rest of that line.
       return "its header ends inside a line (no line break after '" + line.substr(0, 40) + "')";
     }
-    if (!IsText(line))
+    if (!IsHeaderText(line))
     {
       return "its header line " + std::to_string(lines + 2) + " holds bytes that are not text";
     }
