@@ -54,6 +54,21 @@ struct Scene
 };
 
 // Renders `data` (null: no input) three times; returns what the mapper said and drew.
+// Three frames (a failure is said once, not every frame), then what was said and drawn.
+Outcome Draw(vtkRenderWindow* window, MessageCapture* capture)
+{
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  Outcome outcome;
+  outcome.Errors = capture->Errors;
+  outcome.Warnings = capture->Warnings;
+  outcome.Picture = deepshadow::testing::Grab(window);
+  outcome.Covered = deepshadow::testing::CoveredFraction(outcome.Picture, { 0.2, 0.3, 0.4 });
+  return outcome;
+}
+
 Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false,
   const std::function<void(Scene&)>& change = nullptr)
 {
@@ -92,16 +107,7 @@ Outcome RenderBad(vtkImageData* data, bool replaceNonFinite = false,
     Scene scene{ mapper, property, opacity, renderer, light };
     change(scene);
   }
-  for (int frame = 0; frame < 3; ++frame)
-  {
-    window->Render();
-  }
-  Outcome outcome;
-  outcome.Errors = capture->Errors;
-  outcome.Warnings = capture->Warnings;
-  outcome.Picture = deepshadow::testing::Grab(window);
-  outcome.Covered = deepshadow::testing::CoveredFraction(outcome.Picture, { 0.2, 0.3, 0.4 });
-  return outcome;
+  return Draw(window, capture);
 }
 
 // A triangle mesh with a point id past its three points (or a NaN point), drawn by
@@ -156,16 +162,7 @@ Outcome RenderBadMesh(bool nanPoint, bool withPass)
   renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 10.0);
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->ResetCameraClippingRange();
-  for (int frame = 0; frame < 3; ++frame)
-  {
-    window->Render();
-  }
-  Outcome outcome;
-  outcome.Errors = capture->Errors;
-  outcome.Warnings = capture->Warnings;
-  outcome.Picture = deepshadow::testing::Grab(window);
-  outcome.Covered = deepshadow::testing::CoveredFraction(outcome.Picture, { 0.2, 0.3, 0.4 });
-  return outcome;
+  return Draw(window, capture);
 }
 
 vtkSmartPointer<vtkImageData> Image(int nx, int ny, int nz, int type, int components = 1)
