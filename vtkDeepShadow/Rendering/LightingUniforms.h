@@ -5,7 +5,7 @@
 
 #include "Light.h"
 #include "OpticalModel.h"
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 
 #include <vector>
 

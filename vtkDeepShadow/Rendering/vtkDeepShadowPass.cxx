@@ -1,7 +1,7 @@
 #include "vtkDeepShadowPass.h"
 
 #include "Shadows/OtherVolumeShadows.h"
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowPolyDataMapper.h"

@@ -4,7 +4,7 @@
 #include "LightingUniforms.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowSurfaceFS.h"

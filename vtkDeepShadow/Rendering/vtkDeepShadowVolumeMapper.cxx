@@ -2,7 +2,7 @@
 
 #include "CoreAdapter.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "vtkDeepShadowTechnique.h"
 #include "EmptySpace.h"
 #include "GL/FloatTexels.h"

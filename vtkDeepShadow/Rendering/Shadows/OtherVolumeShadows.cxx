@@ -1,6 +1,6 @@
 #include "OtherVolumeShadows.h"
 
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "vtkDeepShadowTechnique.h"
 
 #include "vtkOpenGLRenderWindow.h"

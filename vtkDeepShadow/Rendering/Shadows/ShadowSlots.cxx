@@ -1,6 +1,6 @@
 #include "ShadowSlots.h"
 
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 
 namespace deepshadow
 {

@@ -1,6 +1,6 @@
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "Shadows.h"
 #include "vtkDeepShadowDeepShadowMap.h"
 #include "vtkDeepShadowDeepShadowMapBuild.h"

@@ -2,7 +2,7 @@
 
 #include "GL/ComputeProgram.h"
 #include "LightSpace.h"
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "ShadowSlots.h"
 #include "vtkDeepShadowLightSpace.h"
 #include "vtkDeepShadowLightSpaceCS.h"

@@ -1,6 +1,6 @@
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
 
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "Shadows.h"
 #include "vtkDeepShadowOpacityLevels.h"
 #include "vtkDeepShadowOpacityLevelsBuild.h"

@@ -1,6 +1,6 @@
 #include "vtkDeepShadowRayTechnique.h"
 
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "Shadows.h"
 #include "vtkDeepShadowRayShadow.h"
 

@@ -1,7 +1,7 @@
 #include "vtkDeepShadowShadowMapTechnique.h"
 
 #include "ShaderComposer.h"
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "ShadowMap.h"
 #include "vtkDeepShadowShadowMap.h"
 #include "vtkDeepShadowShadowMapBuild.h"

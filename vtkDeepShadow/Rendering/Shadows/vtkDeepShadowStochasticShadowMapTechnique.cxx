@@ -1,7 +1,7 @@
 #include "vtkDeepShadowStochasticShadowMapTechnique.h"
 
 #include "ShaderComposer.h"
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "Shadows.h"
 #include "StochasticShadowMap.h"
 #include "vtkDeepShadowStochasticShadowMap.h"

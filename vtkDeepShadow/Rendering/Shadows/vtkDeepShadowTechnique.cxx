@@ -1,7 +1,7 @@
 #include "vtkDeepShadowTechnique.h"
 
 #include "OpticalModel.h"
-#include "ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "ShadowSlots.h"
 #include "ShadowGrid.h"
 #include "Shadows.h"

@@ -1,6 +1,6 @@
 #include "TranslucentLayers.h"
 
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 #include "vtkDeepShadowLayersFS.h"
 
 #include "vtkOpenGLFramebufferObject.h"

@@ -1,7 +1,7 @@
 #include "VolumeSegments.h"
 
 #include "GL/FramebufferCopy.h"
-#include "Shadows/ShadowContext.h"
+#include "Volume/ShadowContext.h"
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"

@@ -1,8 +1,10 @@
-// Internal: what vtkDeepShadowVolumeMapper hands its shadow technique each frame, and a
-// uniform setter shared by the ray caster's program and the techniques' compute programs.
+// Internal: the GPU view of a volume: what vtkDeepShadowVolumeMapper's holders (this folder)
+// hold for one frame, handed to the ray caster's features, the shadow techniques and the mesh
+// receivers.
 #ifndef vtkDeepShadowShadowContext_h
 #define vtkDeepShadowShadowContext_h
 
+#include "GL/UniformSink.h"
 #include "Light.h"
 #include "ShaderComposer.h"
 #include "TransferFunction.h"
@@ -20,43 +22,11 @@
 #include <vector>
 
 class vtkOpenGLRenderWindow;
-class vtkShaderProgram;
 class vtkTextureObject;
 
 namespace deepshadow
 {
-class ComputeProgram;
 class SurfaceSet;
-
-/** Sets uniforms by name on either kind of program. */
-class UniformSink
-{
-public:
-  explicit UniformSink(vtkShaderProgram* program)
-    : Raster(program)
-  {
-  }
-  explicit UniformSink(ComputeProgram* program)
-    : Compute(program)
-  {
-  }
-  void Set(const char* name, int value);
-  void Set(const char* name, float value);
-  void Set(const char* name, const glm::vec2& value);
-  void Set(const char* name, const glm::vec3& value);
-  void Set(const char* name, const glm::vec4& value);
-  void Set(const char* name, const glm::mat3& value);
-  void Set(const char* name, const glm::mat4& value);
-  // Arrays (the ray caster's per-light uniforms).
-  void Set(const char* name, const std::vector<int>& values);
-  void Set(const char* name, const std::vector<float>& values);
-  void Set(const char* name, const std::vector<glm::vec3>& values);
-  void Set(const char* name, const std::vector<glm::vec4>& values);
-
-private:
-  vtkShaderProgram* Raster = nullptr;
-  ComputeProgram* Compute = nullptr;
-};
 
 /**
  * Surfaces that cast shadows as the GPU finds them (Features/Surfaces.glsl): one hierarchy
