@@ -50,10 +50,12 @@ class OtherVolumeShadows;
 class SurfaceSet;
 class TranslucentLayers;
 class VolumeSegments;
+struct RayCastFrame;
 struct ShadowContext;
 }
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
+class vtkVolumeProperty;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkVolumeMapper
 {
@@ -297,10 +299,27 @@ private:
   void operator=(const vtkDeepShadowVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  /** Starts a frame (Render, or the pass's PrepareShadows before it). */
+  void BeginFrame();
+  /**
+   * Brings every GPU resource and the technique's structures up to date and fills `frame`;
+   * false when the volume is not drawn (said by ReportError, or an empty bound).
+   */
+  bool Prepare(vtkRenderer* renderer, vtkVolume* volume, deepshadow::RayCastFrame& frame);
+  /** The lights and the technique's structures (the last part of Prepare). */
+  bool PrepareLightsAndShadows(deepshadow::RayCastFrame& frame);
+  /** Composes the shader for the frame's features, binds them and casts the rays. */
+  bool Draw(deepshadow::RayCastFrame& frame);
+  /** Re-uploads the volume if the data changed (and then drops what was made from it). */
+  bool UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input);
+  /** The transfer table and the empty-space block map, if what they depend on changed. */
+  void UpdateTables(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
   /** Uploads the casting surfaces in index space if they or the placement changed. */
   bool UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex);
+  /** GPU memory: the sum of what the holders in use report. */
+  long long GetHolderBytes() const;
 
   class Internals;
   std::unique_ptr<Internals> Impl;

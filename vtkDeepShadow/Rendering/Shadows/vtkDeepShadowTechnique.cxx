@@ -2,6 +2,7 @@
 
 #include "OpticalModel.h"
 #include "Volume/ShadowContext.h"
+#include "Volume/TransferTableTexture.h"
 #include "ShadowSlots.h"
 #include "ShadowGrid.h"
 #include "Shadows.h"
@@ -39,9 +40,9 @@ constexpr int MaxCachedLights = 8;
 class vtkDeepShadowTechnique::Internals
 {
 public:
-  // The feeler's table: the casting transfer function, opacity corrected for the feeler step.
-  vtkSmartPointer<vtkTextureObject> FeelerTable;
-  std::vector<double> FeelerKey;
+  // The feeler's table: the casting transfer function, opacity corrected for the feeler step
+  // (the same holder as the ray caster's table).
+  deepshadow::TransferTableTexture FeelerTable;
   // Zero-opacity blocks of the volume's opacity may be skipped (not with a shadow property).
   bool SkipEmpty = true;
   deepshadow::ShadowSlots Slots;
@@ -109,9 +110,9 @@ long long vtkDeepShadowTechnique::GetShadowBytes() const
 {
   const Internals& impl = *this->Impl;
   long long bytes = this->GetStructureBytes();
-  if (impl.FeelerTable)
+  if (impl.FeelerTable.GetTexture())
   {
-    bytes += static_cast<long long>(impl.FeelerTable->GetWidth()) * 16;
+    bytes += impl.FeelerTable.GetBytes();
   }
   if (this->Cached && impl.Cache)
   {
@@ -224,22 +225,10 @@ void vtkDeepShadowTechnique::UpdateFeelerTable(const deepshadow::ShadowContext& 
   std::vector<double> tableKey = context.TransferKey(colored);
   tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
     static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
-  if (!impl.FeelerTable || tableKey != impl.FeelerKey)
+  if (impl.FeelerTable.NeedsUpdate(tableKey))
   {
-    const deepshadow::TransferTable table = deepshadow::TransferTable::Sample(
-      context.Transfer, context.Range.x, context.Range.y, context.TableSize, step);
-    if (impl.FeelerTable)
-    {
-      impl.FeelerTable->ReleaseGraphicsResources(context.Window);
-    }
-    impl.FeelerTable = vtkSmartPointer<vtkTextureObject>::New();
-    impl.FeelerTable->SetContext(context.Window);
-    impl.FeelerTable->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.FeelerTable->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.FeelerTable->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.FeelerTable->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.FeelerTable->Create2DFromRaw(table.Size, 1, 4, VTK_FLOAT, const_cast<float*>(table.RGBA.data()));
-    impl.FeelerKey = tableKey;
+    impl.FeelerTable.Update(
+      context.Window, context.Transfer, context.Range, context.TableSize, step, std::move(tableKey));
     this->LastPasses.emplace_back("feeler-table");
   }
 }
@@ -424,14 +413,14 @@ std::string vtkDeepShadowTechnique::GetShaderFeatureSource(bool direct) const
 
 void vtkDeepShadowTechnique::ActivateFeelerTable()
 {
-  this->Impl->FeelerTable->Activate();
+  this->Impl->FeelerTable.GetTexture()->Activate();
 }
 
 void vtkDeepShadowTechnique::DeactivateFeelerTable()
 {
-  if (this->Impl->FeelerTable)
+  if (this->Impl->FeelerTable.GetTexture())
   {
-    this->Impl->FeelerTable->Deactivate();
+    this->Impl->FeelerTable.GetTexture()->Deactivate();
   }
 }
 
@@ -440,7 +429,7 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
 {
   const double step = this->FeelerStep(context);
   const deepshadow::ShadowParameters parameters = this->GetParameters();
-  sink.Set("u_feelerTable", this->Impl->FeelerTable->GetTextureUnit());
+  sink.Set("u_feelerTable", this->Impl->FeelerTable.GetTexture()->GetTextureUnit());
   sink.Set("u_feelerStep", static_cast<float>(step));
   // Per-sample opacity thresholds are compared with the table's step-corrected opacity.
   sink.Set("u_feelerThreshold",
@@ -548,11 +537,7 @@ void vtkDeepShadowTechnique::Unbind(bool direct)
 void vtkDeepShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& impl = *this->Impl;
-  if (impl.FeelerTable)
-  {
-    impl.FeelerTable->ReleaseGraphicsResources(window);
-    impl.FeelerTable = nullptr;
-  }
+  impl.FeelerTable.Release(window);
   impl.ReleaseCache(window);
   impl.OtherBuild.Release();
   impl.Slots.Invalidate();

@@ -1,0 +1,46 @@
+// Internal: what vtkDeepShadowVolumeMapper::Prepare() found for one frame, and what the ray
+// caster's draw reads: the volume's GPU view, the camera, and the frame's state.
+#ifndef vtkDeepShadowRayCastFrame_h
+#define vtkDeepShadowRayCastFrame_h
+
+#include "Camera.h"
+#include "Volume/ShadowContext.h"
+
+class vtkDeepShadowTechnique;
+class vtkRenderer;
+class vtkTextureObject;
+class vtkVolumeProperty;
+
+namespace deepshadow
+{
+class FramebufferCopy;
+class OtherVolumeShadows;
+class TranslucentLayers;
+class VolumeSegments;
+
+struct RayCastFrame
+{
+  ShadowContext Context;
+  vtkRenderer* Renderer = nullptr;
+  vtkVolumeProperty* Property = nullptr;
+  Camera View;
+  int X0 = 0, Y0 = 0, Width = 0, Height = 0; // the renderer's tile
+  bool Shade = false;      // the property's shading: gradient and Phong
+  bool ShadowTerm = false; // vtkDeepShadowVolumeMapper::OutputShadowTerm
+  bool Lit = false;        // lights are evaluated (shading, shadows or the shadow term)
+  /** The technique whose structures are ready; null without one, or when it failed. */
+  vtkDeepShadowTechnique* Technique = nullptr;
+  vtkTextureObject* Transfer = nullptr; // the transfer table
+
+  // The mapper's properties and the pass's state for this frame, as the draw uses them.
+  bool Jitter = false;
+  int JitterSeed = 0;
+  float TerminationOpacity = 1.0f;
+  FramebufferCopy* Opaque = nullptr;          // opaque geometry's depth; null: none ends the rays
+  const OtherVolumeShadows* Others = nullptr; // null: none cast, or no technique receives them
+  const TranslucentLayers* Layers = nullptr;  // null: no translucent meshes
+  VolumeSegments* Segments = nullptr;         // drawn into, not onto the screen (not with Layers)
+};
+
+}
+#endif

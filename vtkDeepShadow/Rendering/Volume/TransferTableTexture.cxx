@@ -1,0 +1,31 @@
+#include "Volume/TransferTableTexture.h"
+
+#include "GL/ClampedTexture.h"
+
+#include "vtkTextureObject.h"
+
+namespace deepshadow
+{
+
+void TransferTableTexture::Update(vtkOpenGLRenderWindow* window, const TransferFunction& function,
+  const glm::dvec2& range, int size, double step, std::vector<double> key)
+{
+  this->Release(window);
+  this->Table = TransferTable::Sample(function, range.x, range.y, size, step);
+  this->Texture = NewClampedTexture(window);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->Texture->Create2DFromRaw(this->Table.Size, 1, 4, VTK_FLOAT, static_cast<void*>(this->Table.RGBA.data()));
+  this->Key = std::move(key);
+}
+
+void TransferTableTexture::Release(vtkWindow* window)
+{
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+  }
+  *this = TransferTableTexture();
+}
+
+}
