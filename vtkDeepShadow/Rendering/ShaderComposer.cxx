@@ -1,25 +1,8 @@
 #include "ShaderComposer.h"
 
 #include "vtkDeepShadowFeatureBound.h"
-#include "vtkDeepShadowFeatureEmptySpace.h"
-#include "vtkDeepShadowFeatureFeeler.h"
-#include "vtkDeepShadowFeatureFeelerColored.h"
-#include "vtkDeepShadowFeatureGradient.h"
-#include "vtkDeepShadowFeatureHash.h"
-#include "vtkDeepShadowFeatureIsotropic.h"
-#include "vtkDeepShadowFeatureJitter.h"
-#include "vtkDeepShadowFeatureLighting.h"
-#include "vtkDeepShadowFeatureMeshNormal.h"
-#include "vtkDeepShadowFeaturePhong.h"
-#include "vtkDeepShadowFeatureSurfaces.h"
+#include "vtkDeepShadowFeatureSources.h"
 #include "vtkDeepShadowFeatureTranslucentLayers.h"
-#include "vtkDeepShadowFeatureTriangleHierarchy.h"
-#include "vtkDeepShadowFeatureOpaqueDepth.h"
-#include "vtkDeepShadowFeatureOtherVolumeShadows.h"
-#include "vtkDeepShadowFeaturePeel.h"
-#include "vtkDeepShadowFeatureShadowGrid.h"
-#include "vtkDeepShadowFeatureShadowTerm.h"
-#include "vtkDeepShadowFeatureVolumeSampling.h"
 #include "vtkDeepShadowFeatureVolumeSegments.h"
 
 #include <sstream>
@@ -58,26 +41,10 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures()
 {
   static const std::map<std::string, ShaderFeature> features = [] {
     std::map<std::string, ShaderFeature> all;
-    auto add = [&all](const char* name, const char* source) { all[name] = ShaderFeature(name, source); };
-    add("Bound", vtkDeepShadowFeatureBound);
-    add("EmptySpace", vtkDeepShadowFeatureEmptySpace);
-    add("Feeler", vtkDeepShadowFeatureFeeler);
-    add("FeelerColored", vtkDeepShadowFeatureFeelerColored);
-    add("Gradient", vtkDeepShadowFeatureGradient);
-    add("Hash", vtkDeepShadowFeatureHash);
-    add("Isotropic", vtkDeepShadowFeatureIsotropic);
-    add("Jitter", vtkDeepShadowFeatureJitter);
-    add("Lighting", vtkDeepShadowFeatureLighting);
-    add("MeshNormal", vtkDeepShadowFeatureMeshNormal);
-    add("OpaqueDepth", vtkDeepShadowFeatureOpaqueDepth);
-    add("OtherVolumeShadows", vtkDeepShadowFeatureOtherVolumeShadows);
-    add("Peel", vtkDeepShadowFeaturePeel);
-    add("Phong", vtkDeepShadowFeaturePhong);
-    add("ShadowGrid", vtkDeepShadowFeatureShadowGrid);
-    add("ShadowTerm", vtkDeepShadowFeatureShadowTerm);
-    add("Surfaces", vtkDeepShadowFeatureSurfaces);
-    add("TriangleHierarchy", vtkDeepShadowFeatureTriangleHierarchy);
-    add("VolumeSampling", vtkDeepShadowFeatureVolumeSampling);
+    for (const FeatureSource& feature : FeatureSources)
+    {
+      all[feature.Name] = ShaderFeature(feature.Name, feature.Source);
+    }
     return all;
   }();
   return features;

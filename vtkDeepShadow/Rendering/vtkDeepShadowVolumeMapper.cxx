@@ -1,13 +1,10 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "CoreAdapter.h"
-#include "EmptySpace.h"
 #include "GL/FramebufferCopy.h"
-#include "LightingUniforms.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "SurfaceSet.h"
-#include "TransferFunction.h"
 #include "Translucency/TranslucentLayers.h"
 #include "Volume/BoxDrawer.h"
 #include "Volume/OccupancyTexture.h"
@@ -15,6 +12,7 @@
 #include "Volume/ShadowContext.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
+#include "Volume/VolumeFeatures.h"
 #include "Volume/VolumeTexture.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeFS.h"
@@ -43,10 +41,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
-#include <optional>
 #include <functional>
-#include <set>
+#include <optional>
 
 namespace adapter = deepshadow::adapter;
 
@@ -644,89 +640,25 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
 bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
 {
   Internals& impl = *this->Impl;
-  deepshadow::ShadowContext& context = frame.Context;
-  vtkOpenGLRenderWindow* window = context.Window;
-  vtkDeepShadowTechnique* technique = frame.Technique;
-  const bool needDepth = HasOpaqueGeometry(frame.Renderer);
-  const bool shade = frame.Shade, shadowTerm = frame.ShadowTerm, lit = frame.Lit;
-  const bool bounded = context.Bound != nullptr;
-
-  // 5. Shader for the features in use.
-  std::set<std::string> features;
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  // Surfaces are met by the feelers of lookups only; light-space builds have their own.
-  context.AddVolumeFeatures(features, runtime, technique && technique->NeedsFeeler());
-  if (lit)
-  {
-    features.insert("Lighting");
-    // The shadow term needs no normal.
-    if (shade && !shadowTerm)
-    {
-      features.insert({ "Gradient", "Phong" });
-    }
-    else
-    {
-      features.insert("Isotropic");
-    }
-  }
-  if (shadowTerm)
-  {
-    features.insert("ShadowTerm");
-  }
-  if (technique)
-  {
-    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource());
-    if (technique->NeedsFeeler())
-    {
-      features.insert("Feeler");
-    }
-    for (const std::string& feature : technique->GetLookupFeatures())
-    {
-      features.insert(feature);
-    }
-  }
+  vtkOpenGLRenderWindow* window = frame.Context.Window;
+  frame.Jitter = this->Jitter;
+  frame.JitterSeed = static_cast<int>(this->JitterSeed);
+  frame.TerminationOpacity = static_cast<float>(this->TerminationOpacity);
+  frame.Opaque = HasOpaqueGeometry(frame.Renderer) ? &impl.Opaque : nullptr;
   // Shadows of the other volumes, when they cast any (a volume receives with a technique).
-  const deepshadow::OtherVolumeShadows* others =
-    technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
-  if (others)
-  {
-    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
-  }
-  if (this->Jitter)
-  {
-    features.insert("Jitter");
-    features.insert("Hash");
-  }
-  if (needDepth)
-  {
-    features.insert("OpaqueDepth");
-  }
-  const deepshadow::TranslucentLayers* layers = impl.Layers;
-  if (layers)
-  {
-    features.insert("TranslucentLayers");
-    runtime["TranslucentLayers"] = layers->GetShaderFeature();
-  }
-  deepshadow::VolumeSegments* segments = layers ? nullptr : impl.Segments;
-  if (segments)
-  {
-    features.insert("VolumeSegments");
-    runtime["VolumeSegments"] = deepshadow::VolumeSegmentsShaderFeature(segments->GetSegments());
-  }
-  const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features, runtime);
+  frame.Others = frame.Technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
+  frame.Layers = impl.Layers;
+  frame.Segments = impl.Layers ? nullptr : impl.Segments;
+
+  // The shader for the features in use.
+  const deepshadow::ComposedFeatures features = deepshadow::ComposeVolumeFeatures(frame);
+  const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features.Enabled, features.Runtime);
   if (source != impl.LastSource)
   {
     impl.LastSource = source;
     this->FragmentShaderSource = source;
-    this->ShaderFeatures.assign(features.begin(), features.end());
-    if (bounded)
-    {
-      this->ShaderFeatures.emplace_back("Bound");
-    }
-    if (technique)
-    {
-      this->ShaderFeatures.push_back("Shadow:" + technique->GetName());
-    }
+    this->ShaderFeatures.assign(features.Enabled.begin(), features.Enabled.end());
+    this->ShaderFeatures.insert(this->ShaderFeatures.end(), features.Labels.begin(), features.Labels.end());
     ++this->ShaderCompositions;
   }
   vtkShaderProgram* program =
@@ -736,87 +668,26 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
     this->ReportError("the volume shader failed to compile (see the messages above)");
     return false;
   }
-  if (needDepth)
+  if (frame.Opaque)
   {
-    impl.Opaque.Capture(window, frame.X0, frame.Y0, frame.Width, frame.Height, false);
+    frame.Opaque->Capture(window, frame.X0, frame.Y0, frame.Width, frame.Height, false);
   }
 
-  // 6. Uniforms.
-  const deepshadow::Camera& camera = frame.View;
-  const glm::dmat4& indexToWorld = context.IndexToWorld;
+  // Each feature's uniforms and textures, then the back faces of the box.
   deepshadow::UniformSink sink(program);
-  context.ActivateVolumeTextures();
-  frame.Transfer->Activate();
-  context.SetVolumeUniforms(sink);
-  sink.Set("u_transfer", frame.Transfer->GetTextureUnit());
-  sink.Set("u_boxMax", glm::vec3(context.Dims - 1));
-  sink.Set("u_clipToWorld", glm::mat4(camera.GetInverseViewProjection()));
-  sink.Set("u_indexToClip", glm::mat4(camera.GetViewProjection() * indexToWorld));
-  // Segments are drawn into their own target, its viewport at (0, 0).
-  sink.Set("u_viewport", glm::vec4(segments ? 0.0f : static_cast<float>(frame.X0),
-    segments ? 0.0f : static_cast<float>(frame.Y0), static_cast<float>(frame.Width), static_cast<float>(frame.Height)));
-  if (segments)
-  {
-    sink.Set("u_worldToClip", glm::mat4(camera.GetViewProjection()));
-  }
-  sink.Set("u_step", static_cast<float>(context.ViewStep));
-  sink.Set("u_terminationOpacity", static_cast<float>(this->TerminationOpacity));
-  if (this->Jitter)
-  {
-    sink.Set("u_jitterSeed", static_cast<int>(this->JitterSeed));
-  }
-  if (needDepth)
-  {
-    impl.Opaque.GetDepth()->Activate();
-    sink.Set("u_opaqueDepth", impl.Opaque.GetDepth()->GetTextureUnit());
-  }
-  if (lit)
-  {
-    deepshadow::SetLightingUniforms(sink, context.Lights, frame.Renderer, adapter::MakeMaterial(frame.Property));
-    sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(context.WorldToIndex))));
-  }
-  if (technique)
-  {
-    technique->Bind(sink, context);
-  }
-  if (others)
-  {
-    others->Activate(sink, static_cast<int>(context.Lights.size()));
-  }
-  if (layers)
-  {
-    layers->Activate(sink);
-  }
-
-  // 7. Draw the back faces of the box.
+  deepshadow::BindVolumeFeatures(frame, sink);
   std::function<void()> begin, end;
-  if (segments)
+  if (frame.Segments)
   {
-    begin = [&] { segments->Begin(window, impl.SegmentGuest); };
-    end = [&] { segments->End(window); };
+    begin = [&] { frame.Segments->Begin(window, impl.SegmentGuest); };
+    end = [&] { frame.Segments->End(window); };
   }
   // With layers the shader composited the opaque image itself; segments are not colours.
-  impl.Box.Draw(window, program, !layers && !segments, glm::determinant(glm::dmat3(indexToWorld)) < 0.0, begin, end);
-  this->LastPasses.emplace_back(segments ? "ray-cast-segments" : "ray-cast");
-
-  if (technique)
-  {
-    technique->Unbind();
-  }
-  if (others)
-  {
-    others->Deactivate();
-  }
-  if (layers)
-  {
-    layers->Deactivate();
-  }
-  context.DeactivateVolumeTextures();
-  frame.Transfer->Deactivate();
-  if (needDepth)
-  {
-    impl.Opaque.GetDepth()->Deactivate();
-  }
+  const bool blend = !frame.Layers && !frame.Segments;
+  const bool mirrored = glm::determinant(glm::dmat3(frame.Context.IndexToWorld)) < 0.0;
+  impl.Box.Draw(window, program, blend, mirrored, begin, end);
+  this->LastPasses.emplace_back(frame.Segments ? "ray-cast-segments" : "ray-cast");
+  deepshadow::UnbindVolumeFeatures(frame);
   return true;
 }
 

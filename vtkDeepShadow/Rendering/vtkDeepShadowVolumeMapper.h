@@ -14,9 +14,11 @@
  * termination once opacity exceeds TerminationOpacity. Empty-space skipping jumps over
  * blocks of zero opacity exactly (the samples taken are the same).
  *
- * The shader is composed from the features in use (Shading, Jitter, EmptySpace,
- * OpaqueDepth): see GetShaderFeatures() and GetFragmentShaderSource(). Work is redone only
- * when what it depends on changed; the counters below make that observable.
+ * The shader is composed from the features in use (VolumeSampling, EmptySpace, Lighting,
+ * Phong, Jitter, OpaqueDepth, a technique's Shadow...: one component each, listed in
+ * Rendering/Volume/VolumeFeatures.cxx): see GetShaderFeatures() and GetFragmentShaderSource().
+ * Work is redone only when what it depends on changed; the counters below make that
+ * observable.
  *
  * Polyhedral bounds (AddBound, SetBoundExpression) restrict the volume to the inside of
  * closed meshes combined by Boolean operations: it is drawn, and casts and receives shadows,
@@ -241,7 +243,10 @@ public:
   vtkGetMacro(ShaderCompositions, int);   // times the composed shader source changed
   vtkGetMacro(BoundBuilds, int);          // bound hierarchies built: a bound or placement changed
   vtkGetMacro(SurfaceUploads, int);       // casting surfaces uploaded: the set or placement changed
-  /** Features compiled into the last shader, e.g. {"EmptySpace", "Shading"}. */
+  /**
+   * Features compiled into the last shader, e.g. {"EmptySpace", "VolumeSampling"}, then "Bound"
+   * and "Shadow:<technique>" when in use.
+   */
   const std::vector<std::string>& GetShaderFeatures() const { return this->ShaderFeatures; }
   const std::string& GetFragmentShaderSource() const { return this->FragmentShaderSource; }
   /**

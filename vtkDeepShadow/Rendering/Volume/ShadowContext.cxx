@@ -61,30 +61,50 @@ glm::dvec2 ShadowContext::ShaderRange() const
 
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
 {
+  this->SetSamplingUniforms(sink);
+  if (this->Occupancy)
+  {
+    this->SetEmptySpaceUniforms(sink);
+  }
+  if (this->Bound)
+  {
+    this->SetBoundUniforms(sink);
+  }
+  if (this->Surfaces)
+  {
+    this->SetSurfacesUniforms(sink);
+  }
+}
+
+void ShadowContext::SetSamplingUniforms(UniformSink& sink) const
+{
   sink.Set("u_volume", this->Volume->GetTextureUnit());
   sink.Set("u_scalarMap", glm::vec2(this->ScalarMap));
   sink.Set("u_tableMap", glm::vec2(this->ShaderTableMap()));
   sink.Set("u_dims", glm::vec3(this->Dims));
   sink.Set("u_worldToIndex", glm::mat4(this->WorldToIndex));
-  if (this->Occupancy)
-  {
-    sink.Set("u_occupancy", this->Occupancy->GetTextureUnit());
-    sink.Set("u_blockSize", this->BlockSize);
-  }
-  if (this->Bound)
-  {
-    sink.Set("u_boundNodes", this->Bound->Nodes->GetTextureUnit());
-    sink.Set("u_boundTriangles", this->Bound->Triangles->GetTextureUnit());
-    sink.Set("u_boundLeafRoot", this->Bound->LeafRoots);
-    sink.Set("u_boundTruth", this->Bound->TruthTable);
-  }
-  if (this->Surfaces)
-  {
-    sink.Set("u_surfaceNodes", this->Surfaces->Nodes->GetTextureUnit());
-    sink.Set("u_surfaceTriangles", this->Surfaces->Triangles->GetTextureUnit());
-    sink.Set("u_surfaceRoot", this->Surfaces->Root);
-    sink.Set("u_surfaceTransmission", this->Surfaces->Transmission);
-  }
+}
+
+void ShadowContext::SetEmptySpaceUniforms(UniformSink& sink) const
+{
+  sink.Set("u_occupancy", this->Occupancy->GetTextureUnit());
+  sink.Set("u_blockSize", this->BlockSize);
+}
+
+void ShadowContext::SetBoundUniforms(UniformSink& sink) const
+{
+  sink.Set("u_boundNodes", this->Bound->Nodes->GetTextureUnit());
+  sink.Set("u_boundTriangles", this->Bound->Triangles->GetTextureUnit());
+  sink.Set("u_boundLeafRoot", this->Bound->LeafRoots);
+  sink.Set("u_boundTruth", this->Bound->TruthTable);
+}
+
+void ShadowContext::SetSurfacesUniforms(UniformSink& sink) const
+{
+  sink.Set("u_surfaceNodes", this->Surfaces->Nodes->GetTextureUnit());
+  sink.Set("u_surfaceTriangles", this->Surfaces->Triangles->GetTextureUnit());
+  sink.Set("u_surfaceRoot", this->Surfaces->Root);
+  sink.Set("u_surfaceTransmission", this->Surfaces->Transmission);
 }
 
 void ShadowContext::ActivateVolumeTextures() const

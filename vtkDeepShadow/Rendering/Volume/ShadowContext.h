@@ -101,6 +101,11 @@ struct ShadowContext
     std::map<std::string, ShaderFeature>& runtime, bool surfaces) const;
   /** Uniforms of the VolumeSampling, EmptySpace, Bound and Surfaces features. */
   void SetVolumeUniforms(UniformSink& sink) const;
+  /** One of those features' uniforms (its textures active), for the ray caster's features. */
+  void SetSamplingUniforms(UniformSink& sink) const;
+  void SetEmptySpaceUniforms(UniformSink& sink) const;
+  void SetBoundUniforms(UniformSink& sink) const;
+  void SetSurfacesUniforms(UniformSink& sink) const;
   /** Binds (releases) the textures those features read. */
   void ActivateVolumeTextures() const;
   void DeactivateVolumeTextures() const;

@@ -1,0 +1,202 @@
+#include "Volume/VolumeFeatures.h"
+
+#include "CoreAdapter.h"
+#include "GL/FramebufferCopy.h"
+#include "LightingUniforms.h"
+#include "Shadows/OtherVolumeShadows.h"
+#include "Translucency/TranslucentLayers.h"
+#include "Volume/RayCastFrame.h"
+#include "vtkDeepShadowTechnique.h"
+
+#include "vtkTextureObject.h"
+
+#include <glm/matrix.hpp>
+
+namespace deepshadow
+{
+
+namespace
+{
+using Frame = RayCastFrame;
+
+// The volume and the template's own uniforms: the ray (camera, viewport, step) and the table.
+void BindSampling(const Frame& f, UniformSink& sink)
+{
+  const ShadowContext& c = f.Context;
+  c.Volume->Activate();
+  f.Transfer->Activate();
+  c.SetSamplingUniforms(sink);
+  sink.Set("u_transfer", f.Transfer->GetTextureUnit());
+  sink.Set("u_boxMax", glm::vec3(c.Dims - 1));
+  sink.Set("u_clipToWorld", glm::mat4(f.View.GetInverseViewProjection()));
+  sink.Set("u_indexToClip", glm::mat4(f.View.GetViewProjection() * c.IndexToWorld));
+  // Segments are drawn into their own target, its viewport at (0, 0).
+  sink.Set("u_viewport", glm::vec4(f.Segments ? 0.0f : static_cast<float>(f.X0),
+                           f.Segments ? 0.0f : static_cast<float>(f.Y0), static_cast<float>(f.Width),
+                           static_cast<float>(f.Height)));
+  sink.Set("u_step", static_cast<float>(c.ViewStep));
+  sink.Set("u_terminationOpacity", f.TerminationOpacity);
+}
+
+void UnbindSampling(const Frame& f)
+{
+  f.Context.Volume->Deactivate();
+  f.Transfer->Deactivate();
+}
+
+// Surfaces are met by the feelers of lookups only; light-space builds have their own.
+bool SurfacesMet(const Frame& f)
+{
+  return f.Technique && f.Technique->NeedsFeeler() && f.Context.Surfaces;
+}
+
+// Gradient shading; the shadow term needs no normal.
+bool Normals(const Frame& f)
+{
+  return f.Lit && f.Shade && !f.ShadowTerm;
+}
+
+void BindLighting(const Frame& f, UniformSink& sink)
+{
+  SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property));
+  sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(f.Context.WorldToIndex))));
+}
+
+void ComposeShadow(const Frame& f, ComposedFeatures& features)
+{
+  features.Runtime["Shadow"] = ShaderFeature("Shadow", f.Technique->GetShaderFeatureSource());
+  if (f.Technique->NeedsFeeler())
+  {
+    features.Enabled.insert("Feeler");
+  }
+  for (const std::string& feature : f.Technique->GetLookupFeatures())
+  {
+    features.Enabled.insert(feature);
+  }
+  features.Labels.push_back("Shadow:" + f.Technique->GetName());
+}
+}
+
+const std::vector<VolumeFeature>& VolumeFeatures()
+{
+  static const std::vector<VolumeFeature> features = {
+    { "VolumeSampling", [](const Frame&) { return true; }, nullptr, BindSampling, UnbindSampling },
+    { "EmptySpace", [](const Frame& f) { return f.Context.Occupancy != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.Occupancy->Activate();
+        f.Context.SetEmptySpaceUniforms(sink);
+      },
+      [](const Frame& f) { f.Context.Occupancy->Deactivate(); } },
+    { "TriangleHierarchy", [](const Frame& f) { return f.Context.Bound || SurfacesMet(f); }, nullptr, nullptr,
+      nullptr },
+    { "Bound", [](const Frame& f) { return f.Context.Bound != nullptr; },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Runtime["Bound"] = BoundShaderFeature(static_cast<int>(f.Context.Bound->LeafRoots.size()));
+        features.Labels.emplace_back("Bound");
+      },
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.Bound->Nodes->Activate();
+        f.Context.Bound->Triangles->Activate();
+        f.Context.SetBoundUniforms(sink);
+      },
+      [](const Frame& f) {
+        f.Context.Bound->Nodes->Deactivate();
+        f.Context.Bound->Triangles->Deactivate();
+      } },
+    { "Surfaces", SurfacesMet, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.Surfaces->Nodes->Activate();
+        f.Context.Surfaces->Triangles->Activate();
+        f.Context.SetSurfacesUniforms(sink);
+      },
+      [](const Frame& f) {
+        f.Context.Surfaces->Nodes->Deactivate();
+        f.Context.Surfaces->Triangles->Deactivate();
+      } },
+    { "OpaqueDepth", [](const Frame& f) { return f.Opaque != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Opaque->GetDepth()->Activate();
+        sink.Set("u_opaqueDepth", f.Opaque->GetDepth()->GetTextureUnit());
+      },
+      [](const Frame& f) { f.Opaque->GetDepth()->Deactivate(); } },
+    { "Lighting", [](const Frame& f) { return f.Lit; }, nullptr, BindLighting, nullptr },
+    { "Gradient", Normals, nullptr, nullptr, nullptr },
+    { "Phong", Normals, nullptr, nullptr, nullptr },
+    { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr, nullptr, nullptr },
+    { "ShadowTerm", [](const Frame& f) { return f.ShadowTerm; }, nullptr, nullptr, nullptr },
+    { "Hash", [](const Frame& f) { return f.Jitter; }, nullptr, nullptr, nullptr },
+    { "Jitter", [](const Frame& f) { return f.Jitter; }, nullptr,
+      [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },
+    { "Shadow", [](const Frame& f) { return f.Technique != nullptr; }, ComposeShadow,
+      [](const Frame& f, UniformSink& sink) { f.Technique->Bind(sink, f.Context); },
+      [](const Frame& f) { f.Technique->Unbind(); } },
+    { "ShadowGrid", [](const Frame& f) { return f.Others != nullptr; }, nullptr, nullptr, nullptr },
+    { "OtherVolumeShadows", [](const Frame& f) { return f.Others != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Others->Activate(sink, static_cast<int>(f.Context.Lights.size()));
+      },
+      [](const Frame& f) { f.Others->Deactivate(); } },
+    { "TranslucentLayers", [](const Frame& f) { return f.Layers != nullptr; },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Enabled.insert("TranslucentLayers");
+        features.Runtime["TranslucentLayers"] = f.Layers->GetShaderFeature();
+      },
+      [](const Frame& f, UniformSink& sink) { f.Layers->Activate(sink); },
+      [](const Frame& f) { f.Layers->Deactivate(); } },
+    { "VolumeSegments", [](const Frame& f) { return f.Segments != nullptr; },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Enabled.insert("VolumeSegments");
+        features.Runtime["VolumeSegments"] = VolumeSegmentsShaderFeature(f.Segments->GetSegments());
+      },
+      [](const Frame& f, UniformSink& sink) {
+        sink.Set("u_worldToClip", glm::mat4(f.View.GetViewProjection()));
+      },
+      nullptr },
+  };
+  return features;
+}
+
+ComposedFeatures ComposeVolumeFeatures(const RayCastFrame& frame)
+{
+  ComposedFeatures composed;
+  for (const VolumeFeature& feature : VolumeFeatures())
+  {
+    if (!feature.Enabled(frame))
+    {
+      continue;
+    }
+    if (feature.Compose)
+    {
+      feature.Compose(frame, composed);
+    }
+    else
+    {
+      composed.Enabled.insert(feature.Name);
+    }
+  }
+  return composed;
+}
+
+void BindVolumeFeatures(const RayCastFrame& frame, UniformSink& sink)
+{
+  for (const VolumeFeature& feature : VolumeFeatures())
+  {
+    if (feature.Bind && feature.Enabled(frame))
+    {
+      feature.Bind(frame, sink);
+    }
+  }
+}
+
+void UnbindVolumeFeatures(const RayCastFrame& frame)
+{
+  for (const VolumeFeature& feature : VolumeFeatures())
+  {
+    if (feature.Unbind && feature.Enabled(frame))
+    {
+      feature.Unbind(frame);
+    }
+  }
+}
+
+}
