@@ -477,7 +477,7 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
   // shadows are cast by another transfer function than the one the blocks were found for.
   const bool opaqueOnScalar = parameters.Mode == deepshadow::ThresholdMode::Scalar &&
-    (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
+    deepshadow::ShadowTechniqueOf(parameters).Binary;
   sink.Set("u_feelerSkipEmpty", context.Occupancy && this->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
 }
 
