@@ -16,8 +16,8 @@
 
 vtkStandardNewMacro(vtkDeepShadowDeepShadowMapTechnique);
 // The GPU class of the registry's DeepShadowMap techniques (deepshadow::ShadowTechniques()).
-static const bool Registered = vtkDeepShadowTechniqueFactory::Register(
-  deepshadow::ShadowKind::DeepShadowMap, []() -> vtkDeepShadowTechnique* { return vtkDeepShadowDeepShadowMapTechnique::New(); });
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::DeepShadowMap,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowDeepShadowMapTechnique::New(); });
 
 // The build's counters: a shader storage buffer the build adds to atomically, read back
 // after it (DeepShadowMapBuild.glsl's DeepShadowStatistics).

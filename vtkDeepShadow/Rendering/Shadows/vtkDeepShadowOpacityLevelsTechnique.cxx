@@ -12,12 +12,13 @@
 
 vtkStandardNewMacro(vtkDeepShadowOpacityLevelsTechnique);
 // The GPU class of the registry's OpacityLevels techniques (deepshadow::ShadowTechniques()).
-static const bool Registered = vtkDeepShadowTechniqueFactory::Register(
-  deepshadow::ShadowKind::OpacityLevels, []() -> vtkDeepShadowTechnique* { return vtkDeepShadowOpacityLevelsTechnique::New(); });
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::OpacityLevels,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowOpacityLevelsTechnique::New(); });
 
 void vtkDeepShadowOpacityLevelsTechnique::SetLevels(double first, double second, double third)
 {
-  const std::string problem = deepshadow::FindShadowParameter("opacity-levels")->Check({ first, second, third });
+  const std::string problem =
+    deepshadow::FindShadowParameter("opacity-levels")->Check({ first, second, third });
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem << "; got " << first << ", " << second << ", " << third);

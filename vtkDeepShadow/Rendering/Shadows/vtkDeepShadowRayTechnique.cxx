@@ -9,8 +9,8 @@
 
 vtkStandardNewMacro(vtkDeepShadowRayTechnique);
 // The GPU class of the registry's Rays techniques (deepshadow::ShadowTechniques()).
-static const bool Registered = vtkDeepShadowTechniqueFactory::Register(
-  deepshadow::ShadowKind::Rays, []() -> vtkDeepShadowTechnique* { return vtkDeepShadowRayTechnique::New(); });
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Rays,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowRayTechnique::New(); });
 
 deepshadow::ShadowParameters vtkDeepShadowRayTechnique::GetParameters() const
 {

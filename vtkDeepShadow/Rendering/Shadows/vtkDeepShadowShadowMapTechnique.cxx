@@ -14,8 +14,8 @@
 
 vtkStandardNewMacro(vtkDeepShadowShadowMapTechnique);
 // The GPU class of the registry's ShadowMap techniques (deepshadow::ShadowTechniques()).
-static const bool Registered = vtkDeepShadowTechniqueFactory::Register(
-  deepshadow::ShadowKind::ShadowMap, []() -> vtkDeepShadowTechnique* { return vtkDeepShadowShadowMapTechnique::New(); });
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::ShadowMap,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowShadowMapTechnique::New(); });
 
 void vtkDeepShadowShadowMapTechnique::SetBias(double bias)
 {

@@ -16,12 +16,13 @@
 
 vtkStandardNewMacro(vtkDeepShadowStochasticShadowMapTechnique);
 // The GPU class of the registry's Stochastic techniques (deepshadow::ShadowTechniques()).
-static const bool Registered = vtkDeepShadowTechniqueFactory::Register(
-  deepshadow::ShadowKind::Stochastic, []() -> vtkDeepShadowTechnique* { return vtkDeepShadowStochasticShadowMapTechnique::New(); });
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Stochastic,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowStochasticShadowMapTechnique::New(); });
 
 void vtkDeepShadowStochasticShadowMapTechnique::SetOffsets(int offsets)
 {
-  const std::string problem = deepshadow::FindShadowParameter("cssm-offsets")->Check({ static_cast<double>(offsets) });
+  const std::string problem =
+    deepshadow::FindShadowParameter("cssm-offsets")->Check({ static_cast<double>(offsets) });
   if (!problem.empty())
   {
     vtkErrorMacro(<< problem << ", not " << offsets << "; keeping " << this->Offsets);
