@@ -18,14 +18,6 @@ namespace
 constexpr std::uint64_t GpuBytesPerPixel = 64;
 constexpr std::uint64_t PassBytesPerPixel = 32; // plus 8 per layer and 16 per segment
 constexpr std::uint64_t ReferenceBytesPerPixel = 32;
-
-std::string BaseTechnique(const std::string& name, bool& cached)
-{
-  const std::string suffix = "-cached";
-  cached = name.size() > suffix.size() &&
-    name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-  return cached ? name.substr(0, name.size() - suffix.size()) : name;
-}
 }
 
 std::uint64_t MemoryBudget(const Options& options)
@@ -51,28 +43,14 @@ std::uint64_t FrameBytes(const Options& options, int width, int height, bool pas
 
 std::uint64_t ShadowBytes(const Options& options)
 {
-  bool cached = false;
-  const std::string base = BaseTechnique(options.Technique, cached);
-  // Bytes per texel of a light-space face (vtkDeepShadow*Technique's texel formats).
-  std::uint64_t texel = 0;
-  bool colored = base == "rays-color" || base == "dsm-color" || base == "cssm";
-  if (base == "shadowmap")
+  const ShadowParameters parameters = options.TechniqueParameters();
+  if (parameters.Kind == ShadowKind::None)
   {
-    texel = 4;
+    return 0;
   }
-  else if (base == "dsm" || base == "dsm-color")
-  {
-    texel = (base == "dsm" ? 8 : 16) * static_cast<std::uint64_t>(options.Layers.value_or(8));
-  }
-  else if (base == "dsm3")
-  {
-    texel = 16;
-  }
-  else if (base == "cssm")
-  {
-    texel = 16 * static_cast<std::uint64_t>(options.CssmPhotons.value_or(1));
-  }
-  const std::uint64_t mapSize = static_cast<std::uint64_t>(options.ShadowMapSize.value_or(512));
+  // Bytes per texel of a light-space face (the registry's, after the GPU classes' formats).
+  const std::uint64_t texel = ShadowTechniqueOf(parameters).TexelBytes(parameters);
+  const std::uint64_t mapSize = static_cast<std::uint64_t>(parameters.MapSize);
   std::uint64_t total = 0;
   const size_t lights = std::max<size_t>(options.Lights.size(), 1);
   for (size_t l = 0; l < std::min<size_t>(lights, texel ? 4 : 8); ++l)
@@ -80,14 +58,13 @@ std::uint64_t ShadowBytes(const Options& options)
     // A positional light inside the volume's bounding sphere gets a cube of six faces.
     const bool positional = l < options.Lights.size() && options.Lights[l].Kind != LightSpec::Directional;
     total = SaturatingProduct(SaturatingProduct(mapSize * mapSize, texel), positional ? 6 : 1) + total;
-    if (cached && base != "none")
+    if (parameters.Cached)
     {
-      const std::uint64_t nodes =
-        static_cast<std::uint64_t>(options.ShadowVolumeSize.value_or(texel ? 64 : 128));
-      total += nodes * nodes * nodes * (colored ? 8 : 2);
+      const std::uint64_t nodes = static_cast<std::uint64_t>(parameters.VolumeSize);
+      total += nodes * nodes * nodes * (parameters.IsColored() ? 8 : 2);
     }
   }
-  return base == "none" ? 0 : total;
+  return total;
 }
 
 std::uint64_t VolumeBytes(vtkImageData* data)
@@ -109,7 +86,8 @@ void RequireWithinBudget(const Options& options, vtkImageData* data, bool pass, 
   if (problem.empty())
   {
     problem = CheckMemoryBudget("the shadow structures of --technique " + options.Technique +
-        (options.ShadowMapSize ? " --shadow-map-size " + std::to_string(*options.ShadowMapSize) : ""),
+        (options.Setting("shadow-map-size") ? " --shadow-map-size " +
+              std::to_string(static_cast<int>(options.Setting("shadow-map-size")->at(0))) : ""),
       shadows, budget);
   }
   if (problem.empty())

@@ -69,17 +69,6 @@ std::vector<std::string> Split(const std::string& text, char separator)
 }
 }
 
-std::vector<std::string> TechniqueNames()
-{
-  std::vector<std::string> names{ "none" };
-  for (const char* base : { "rays", "rays-opaque", "rays-color", "shadowmap", "dsm", "dsm-color", "dsm3", "cssm" })
-  {
-    names.push_back(base);
-    names.push_back(std::string(base) + "-cached");
-  }
-  return names;
-}
-
 namespace
 {
 std::array<double, 3> ParseVector(const std::string& option, const std::string& text)
@@ -182,16 +171,16 @@ LightSpec ParseLight(const std::string& text)
 namespace
 {
 // The options that choose and tune a shadow technique; also the keys of a technique spec.
+// Names, keys and ranges come from the technique registry (ShadowTechniques.h).
 bool ParseTechniqueOption(Options& o, const std::string& key, const std::function<std::string()>& next)
 {
   if (key == "--technique")
   {
     o.Technique = next();
-    const auto names = TechniqueNames();
-    if (std::find(names.begin(), names.end(), o.Technique) == names.end())
+    if (!FindShadowTechnique(o.Technique))
     {
       std::string list;
-      for (const auto& name : names)
+      for (const auto& name : ShadowTechniqueNames())
       {
         list += (list.empty() ? "" : ", ") + name;
       }
@@ -199,116 +188,54 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
     }
     return true;
   }
-  if (key == "--shadow-threshold")
+  const ShadowParameterInfo* parameter =
+    key.rfind("--", 0) == 0 ? FindShadowParameter(key.substr(2)) : nullptr;
+  if (!parameter)
   {
-    o.ShadowThreshold = ParseNumber(key, next());
-    if (*o.ShadowThreshold < 0.0 || *o.ShadowThreshold > 1.0)
-    {
-      throw UsageError("--shadow-threshold must be in [0, 1]");
-    }
-    return true;
+    return false;
   }
-  if (key == "--threshold-on")
+  const std::string text = next();
+  try
   {
-    const std::string mode = next();
-    if (mode != "accumulated" && mode != "opacity" && mode != "scalar")
-    {
-      throw UsageError("--threshold-on must be accumulated, opacity or scalar, got '" + mode + "'");
-    }
-    o.ThresholdOn = mode;
-    return true;
+    o.TechniqueSettings.emplace_back(parameter->Key, parameter->Parse(text));
   }
-  if (key == "--shadow-step-factor")
+  catch (const std::invalid_argument& error)
   {
-    o.ShadowStepFactor = ParseNumber(key, next());
-    if (*o.ShadowStepFactor < 0.01 || *o.ShadowStepFactor > 100.0)
-    {
-      throw UsageError("--shadow-step-factor must be in [0.01, 100]");
-    }
-    return true;
+    throw UsageError(std::string("--") + error.what());
   }
-  if (key == "--shadow-volume-size")
-  {
-    o.ShadowVolumeSize = ParseInteger(key, next(), 2, 2048);
-    return true;
-  }
-  if (key == "--shadow-map-size")
-  {
-    o.ShadowMapSize = ParseInteger(key, next(), 1, 65536);
-    return true;
-  }
-  if (key == "--pcf")
-  {
-    o.Filter = next();
-    if (*o.Filter != "none" && *o.Filter != "2x2" && *o.Filter != "3x3" && *o.Filter != "poisson")
-    {
-      throw UsageError("--pcf must be none, 2x2, 3x3 or poisson, got '" + *o.Filter + "'");
-    }
-    return true;
-  }
-  if (key == "--epsilon")
-  {
-    o.Epsilon = ParseNumber(key, next());
-    if (!(*o.Epsilon >= 0.0 && *o.Epsilon <= 1.0))
-    {
-      throw UsageError("--epsilon must be in [0, 1]");
-    }
-    return true;
-  }
-  if (key == "--layers")
-  {
-    o.Layers = ParseInteger(key, next(), 1, 256);
-    return true;
-  }
-  if (key == "--opacity-levels")
-  {
-    const auto parts = Split(next(), ',');
-    if (parts.size() != 3)
-    {
-      throw UsageError("--opacity-levels expects A,B,C");
-    }
-    std::array<double, 3> levels;
-    for (int k = 0; k < 3; ++k)
-    {
-      levels[k] = ParseNumber(key, parts[k]);
-    }
-    o.OpacityLevels = levels;
-    if (!(levels[0] > 0.0 && levels[0] < levels[1] && levels[1] < levels[2] && levels[2] <= 1.0))
-    {
-      throw UsageError("--opacity-levels must increase strictly within (0, 1]");
-    }
-    return true;
-  }
-  if (key == "--cssm-offsets")
-  {
-    o.CssmOffsets = ParseInteger(key, next(), 7, 21);
-    if (*o.CssmOffsets != 7 && *o.CssmOffsets != 13 && *o.CssmOffsets != 21)
-    {
-      throw UsageError("--cssm-offsets must be 7, 13 or 21");
-    }
-    return true;
-  }
-  if (key == "--cssm-seed")
-  {
-    o.CssmSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
-    return true;
-  }
-  if (key == "--cssm-photons")
-  {
-    o.CssmPhotons = ParseInteger(key, next(), 1, 64);
-    return true;
-  }
-  if (key == "--bias")
-  {
-    o.Bias = ParseNumber(key, next());
-    if (*o.Bias < 0.0)
-    {
-      throw UsageError("--bias must not be negative");
-    }
-    return true;
-  }
-  return false;
+  return true;
 }
+}
+
+const std::vector<double>* Options::Setting(const std::string& key) const
+{
+  for (auto at = this->TechniqueSettings.rbegin(); at != this->TechniqueSettings.rend(); ++at)
+  {
+    if (at->first == key)
+    {
+      return &at->second;
+    }
+  }
+  return nullptr;
+}
+
+ShadowParameters Options::TechniqueParameters() const
+{
+  bool cached = false;
+  const ShadowTechniqueInfo* technique = FindShadowTechnique(this->Technique, &cached);
+  if (!technique)
+  {
+    throw UsageError("unknown technique '" + this->Technique + "'");
+  }
+  ShadowParameters parameters = technique->DefaultParameters(cached);
+  for (const auto& [key, values] : this->TechniqueSettings)
+  {
+    if (technique->Reads(key))
+    {
+      FindShadowParameter(key)->Set(parameters, values);
+    }
+  }
+  return parameters;
 }
 
 Options WithTechniqueSpec(const Options& base, const std::string& spec)
@@ -328,6 +255,96 @@ Options WithTechniqueSpec(const Options& base, const std::string& spec)
     }
   }
   return o;
+}
+
+namespace
+{
+// --help's lines for one option: "  --KEY METAVAR", then `text` wrapped from column 26.
+std::string OptionHelp(const std::string& option, const std::string& text)
+{
+  constexpr size_t column = 26, width = 94;
+  std::string help = "  " + option;
+  size_t at = help.size();
+  if (at + 2 > column)
+  {
+    help += "\n";
+    at = 0;
+  }
+  std::istringstream words(text);
+  bool lineStart = true;
+  for (std::string word; words >> word;)
+  {
+    if (!lineStart && at + 1 + word.size() > width)
+    {
+      help += "\n";
+      at = 0;
+      lineStart = true;
+    }
+    if (lineStart)
+    {
+      help += std::string(column - at, ' ');
+      at = column;
+    }
+    else
+    {
+      help += ' ';
+      ++at;
+    }
+    help += word;
+    at += word.size();
+    lineStart = false;
+  }
+  std::replace(help.begin(), help.end(), '\x01', ' ');
+  return help + "\n";
+}
+
+// The technique options, from the registry: names, who reads each key, ranges, defaults.
+std::string TechniqueUsage()
+{
+  std::string names;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    names += (names.empty() ? "" : ", ") + technique.Name +
+      (technique.Summary.empty() ? "" : " (" + technique.Summary + ")");
+  }
+  std::string usage = OptionHelp("--technique NAME", "shadow technique: " + names +
+      "; NAME-cached caches any of them in a 3D shadow volume (e.g. dsm-cached)");
+  const ShadowParameters defaults;
+  const auto& shared = SharedShadowParameterKeys();
+  for (const ShadowParameterInfo& parameter : ShadowParameterInfos())
+  {
+    std::string readers;
+    if (std::find(shared.begin(), shared.end(), parameter.Key) == shared.end())
+    {
+      for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+      {
+        if (technique.Reads(parameter.Key))
+        {
+          readers += (readers.empty() ? "" : ", ") + technique.Name;
+        }
+      }
+      readers += ": ";
+    }
+    using Type = ShadowParameterInfo::Type;
+    const bool choice = parameter.Kind == Type::Choice;
+    std::string metavar = parameter.Metavar;
+    for (size_t c = 0; choice && c < parameter.Choices.size(); ++c)
+    {
+      metavar += (c == 0 ? "" : "|") + parameter.Choices[c];
+    }
+    const std::string text = parameter.RangeText();
+    const std::string range = choice ? std::string()
+      : parameter.Kind == Type::Levels ? ", increasing within " + text
+                                       : (text[0] == '[' ? ", in " : ", ") + text;
+    std::string unbroken = range; // a range is not broken across lines
+    std::replace(unbroken.begin() + (unbroken.empty() ? 0 : 2), unbroken.end(), ' ', '\x01');
+    const std::string fallback = parameter.Format(parameter.Get(defaults));
+    usage += OptionHelp("--" + parameter.Key + " " + metavar,
+      readers + parameter.Help + unbroken + " (default " +
+        (parameter.DefaultText.empty() ? fallback : parameter.DefaultText) + ")");
+  }
+  return usage;
+}
 }
 
 std::string Options::Usage()
@@ -415,30 +432,7 @@ VIEW:
 
 RENDERING:
   --sample-distance D     world distance between samples (default: half the smallest voxel edge)
-  --technique NAME        shadow technique: none (default), rays (translucent shadow
-                          rays), rays-opaque, rays-color (coloured), shadowmap, dsm (deep
-                          shadow map), dsm-color, dsm3 (opacity levels), cssm (coloured
-                          stochastic shadow map); NAME-cached caches any of them in a 3D
-                          shadow volume (e.g. dsm-cached)
-  --shadow-threshold T    rays-opaque, shadowmap: occluder threshold in [0, 1] (default 0.5)
-  --threshold-on accumulated|opacity|scalar
-                          what the threshold is compared with: the opacity accumulated
-                          along the light ray (default: a translucent body's hard shadow),
-                          each sample's opacity, or each sample's normalized scalar
-  --shadow-step-factor F  feeler / light-ray step as a factor of the sample distance (default 1)
-  --shadow-volume-size N  *-cached: shadow volume nodes along the longest axis (default
-                          128 for rays, 64 for the map techniques)
-  --shadow-map-size N     shadowmap, dsm*, cssm: texels per side (default 512)
-  --epsilon E             dsm: bound on the compressed visibility's error, in [0, 1]
-                          (default 0.02)
-  --layers N              dsm: nodes per texel, 1 to 256 (default 8)
-  --opacity-levels A,B,C  dsm3: opacity levels (default 0.1,0.5,0.9)
-  --cssm-offsets M        cssm: texel offsets averaged per lookup, 7, 13 or 21 (default 13)
-  --cssm-seed S           cssm: seed of the random thresholds (default 0)
-  --cssm-photons N        cssm: photons per texel, 1 to 64 (default 1)
-  --pcf none|2x2|3x3|poisson   shadowmap filter (default 3x3)
-  --bias B                shadowmap depth bias in feeler steps (default 2)
-  --no-shading            no gradient shading (emission and absorption only)
+)" + TechniqueUsage() + R"(  --no-shading            no gradient shading (emission and absorption only)
   --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
   --no-empty-space-skipping
   --backend osmesa|egl    headless OpenGL backend (default: VTK_DEEPSHADOW_BACKEND or osmesa)

@@ -2,10 +2,13 @@
 #ifndef deepshadow_tool_Options_h
 #define deepshadow_tool_Options_h
 
+#include "ShadowTechniques.h"
+
 #include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deepshadow
@@ -44,9 +47,6 @@ struct MeshSpec
   double Scale = 1.0;
 };
 
-/** Techniques the tool can choose (see --technique): each base name, and NAME-cached. */
-std::vector<std::string> TechniqueNames();
-
 struct Options
 {
   std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | help
@@ -72,21 +72,10 @@ struct Options
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;
   bool ReplaceNonFinite = false;
-  std::string Technique = "none";
-  // The technique's parameters: unset ones keep the technique's own defaults.
-  std::optional<double> ShadowThreshold;
-  std::string ThresholdOn = "accumulated"; // accumulated | opacity | scalar
-  std::optional<double> ShadowStepFactor;
-  std::optional<int> ShadowVolumeSize;
-  std::optional<int> ShadowMapSize;
-  std::optional<std::string> Filter;
-  std::optional<double> Bias;
-  std::optional<double> Epsilon;
-  std::optional<int> Layers;
-  std::optional<std::array<double, 3>> OpacityLevels;
-  std::optional<int> CssmOffsets;
-  std::optional<unsigned int> CssmSeed;
-  std::optional<int> CssmPhotons;
+  std::string Technique = "none"; // a name of the technique registry (ShadowTechniques.h)
+  // The technique parameters given (--KEY or a spec's KEY=VALUE, registry keys, checked),
+  // in order; the others keep the technique's defaults.
+  std::vector<std::pair<std::string, std::vector<double>>> TechniqueSettings;
   std::string Backend; // "" = VTK_DEEPSHADOW_BACKEND or OSMesa
 
   // Outputs and measurement.
@@ -111,6 +100,14 @@ struct Options
   int ErrorHeight = 256;
   // report
   bool Quick = false; // the short sweep at smaller sizes
+
+  /** The value given for a technique parameter (the last one), or null. */
+  const std::vector<double>* Setting(const std::string& key) const;
+  /**
+   * The chosen technique's parameters: its registry defaults, then the settings given for
+   * the keys it reads (the others are ignored, as each technique ignores them).
+   */
+  ShadowParameters TechniqueParameters() const;
 
   /** Parses argv; throws UsageError. `--help` sets Command to "help". */
   static Options Parse(int argc, char* argv[]);

@@ -14,7 +14,7 @@
 #include "Measure.h"
 #include "ReportChart.h"
 
-#include "Shadows.h"
+#include "ShadowTechniques.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowStandardScene.h"
 
@@ -36,32 +36,33 @@ namespace tool
 {
 namespace
 {
-// Every technique over its parameters: step factors, cache sizes, map sizes, PCF kernels,
-// epsilon and layers, CSSM offsets and photons, cached and recomputed.
-const std::vector<std::string> FullSweep{ "rays", "rays:shadow-step-factor=0.5",
-  "rays:shadow-step-factor=2", "rays:shadow-step-factor=4", "rays-cached",
-  "rays-cached:shadow-volume-size=64", "rays-cached:shadow-volume-size=256", "rays-opaque",
-  "rays-color", "shadowmap", "shadowmap:shadow-map-size=256", "shadowmap:shadow-map-size=1024",
-  "shadowmap:shadow-map-size=2048", "shadowmap:pcf=none", "shadowmap:pcf=2x2",
-  "shadowmap:pcf=poisson", "shadowmap-cached", "dsm", "dsm:epsilon=0", "dsm:epsilon=0.01",
-  "dsm:epsilon=0.05", "dsm:epsilon=0.1", "dsm:layers=1", "dsm:layers=2", "dsm:layers=4",
-  "dsm:layers=16", "dsm:shadow-map-size=256", "dsm:shadow-map-size=1024",
-  "dsm:shadow-step-factor=2", "dsm-cached", "dsm-cached:shadow-volume-size=128", "dsm-color",
-  "dsm-color-cached", "dsm3", "dsm3:shadow-map-size=256", "dsm3-cached", "cssm",
-  "cssm:cssm-offsets=7", "cssm:cssm-offsets=21", "cssm:cssm-photons=4", "cssm-cached" };
+// Every technique over its parameters (the registry's sweeps: step factors, cache and map
+// sizes, PCF kernels, epsilon and layers, CSSM offsets and photons, cached and recomputed);
+// `quick`: one or two settings per technique, a first look in a few minutes.
+std::vector<std::string> Sweep(bool quick)
+{
+  std::vector<std::string> specs;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    for (const ShadowSweepEntry& entry : technique.Sweep)
+    {
+      if (entry.Quick || !quick)
+      {
+        specs.push_back(technique.Name + entry.Suffix);
+      }
+    }
+  }
+  return specs;
+}
 
 // The guard: a translucent technique (every one but opaque rays and shadow maps) at its
 // defaults must be at least as accurate as no shadows at all; its error is the image's RMSE
 // against the ground truth of its kind, grey or coloured.
 bool GuardedByNone(const std::string& technique, const std::string& parameters)
 {
-  return parameters == "defaults" && technique != "none" && technique.rfind("rays-opaque", 0) != 0 &&
-    technique.rfind("shadowmap", 0) != 0;
+  const ShadowTechniqueInfo* info = FindShadowTechnique(technique);
+  return parameters == "defaults" && info && info->Kind != ShadowKind::None && !info->Binary;
 }
-
-// One or two settings per technique: a first look in a few minutes.
-const std::vector<std::string> QuickSweep{ "rays", "rays-cached", "shadowmap", "dsm",
-  "dsm:layers=2", "dsm-cached", "dsm-color", "dsm3", "cssm", "cssm-cached" };
 
 struct Row
 {
@@ -394,7 +395,7 @@ int RunReport(const Options& options)
   std::vector<std::string> specs = options.BenchTechniques;
   if (specs.empty())
   {
-    specs = options.Quick ? QuickSweep : FullSweep;
+    specs = Sweep(options.Quick);
   }
   MakeDirectory(options.OutDir);
   auto elapsed = [&]() {

@@ -6,18 +6,15 @@
 
 #include "vtkDeepShadowBoundedScene.h"
 #include "vtkDeepShadowCSGFilter.h"
-#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowHybridScene.h"
 #include "vtkDeepShadowMeshReader.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
-#include "vtkDeepShadowOpacityLevelsTechnique.h"
-#include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
-#include "vtkDeepShadowShadowMapTechnique.h"
-#include "vtkDeepShadowStochasticShadowMapTechnique.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
 #include "vtkDeepShadowVolumeReader.h"
 
@@ -109,104 +106,9 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
 
 vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)
 {
-  std::string name = options.Technique;
-  const std::string cachedSuffix = "-cached";
-  const bool cached = name.size() > cachedSuffix.size() &&
-    name.compare(name.size() - cachedSuffix.size(), cachedSuffix.size(), cachedSuffix) == 0;
-  if (cached)
-  {
-    name.resize(name.size() - cachedSuffix.size());
-  }
-  vtkSmartPointer<vtkDeepShadowTechnique> technique;
-  vtkDeepShadowLightSpaceTechnique* lightSpace = nullptr;
-  if (name == "rays" || name == "rays-opaque" || name == "rays-color")
-  {
-    auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
-    rays->SetOpaque(name == "rays-opaque");
-    rays->SetColored(name == "rays-color");
-    technique = rays;
-  }
-  else if (name == "shadowmap")
-  {
-    auto map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
-    if (options.Bias)
-    {
-      map->SetBias(*options.Bias);
-    }
-    if (options.Filter)
-    {
-      map->SetFilter(*options.Filter == "none" ? vtkDeepShadowShadowMapTechnique::NoFilter
-          : *options.Filter == "2x2"           ? vtkDeepShadowShadowMapTechnique::PCF2x2
-          : *options.Filter == "3x3"           ? vtkDeepShadowShadowMapTechnique::PCF3x3
-                                               : vtkDeepShadowShadowMapTechnique::PoissonDisc);
-    }
-    technique = lightSpace = map;
-  }
-  else if (name == "dsm" || name == "dsm-color")
-  {
-    auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
-    dsm->SetColored(name == "dsm-color");
-    if (options.Epsilon)
-    {
-      dsm->SetEpsilon(*options.Epsilon);
-    }
-    if (options.Layers)
-    {
-      dsm->SetLayers(*options.Layers);
-    }
-    technique = lightSpace = dsm;
-  }
-  else if (name == "dsm3")
-  {
-    auto levels = vtkSmartPointer<vtkDeepShadowOpacityLevelsTechnique>::New();
-    if (options.OpacityLevels)
-    {
-      levels->SetLevels((*options.OpacityLevels)[0], (*options.OpacityLevels)[1], (*options.OpacityLevels)[2]);
-    }
-    technique = lightSpace = levels;
-  }
-  else if (name == "cssm")
-  {
-    auto cssm = vtkSmartPointer<vtkDeepShadowStochasticShadowMapTechnique>::New();
-    if (options.CssmOffsets)
-    {
-      cssm->SetOffsets(*options.CssmOffsets);
-    }
-    if (options.CssmSeed)
-    {
-      cssm->SetSeed(*options.CssmSeed);
-    }
-    if (options.CssmPhotons)
-    {
-      cssm->SetPhotons(*options.CssmPhotons);
-    }
-    technique = lightSpace = cssm;
-  }
-  if (!technique)
-  {
-    return nullptr; // none
-  }
-  if (lightSpace && options.ShadowMapSize)
-  {
-    lightSpace->SetMapSize(*options.ShadowMapSize);
-  }
-  if (options.ShadowThreshold)
-  {
-    technique->SetThreshold(*options.ShadowThreshold);
-  }
-  technique->SetThresholdMode(options.ThresholdOn == "scalar" ? vtkDeepShadowTechnique::ScalarThreshold
-      : options.ThresholdOn == "opacity"                     ? vtkDeepShadowTechnique::OpacityThreshold
-                                                             : vtkDeepShadowTechnique::AccumulatedThreshold);
-  if (options.ShadowStepFactor)
-  {
-    technique->SetStepFactor(*options.ShadowStepFactor);
-  }
-  technique->SetCached(cached);
-  if (options.ShadowVolumeSize)
-  {
-    technique->SetShadowVolumeSize(*options.ShadowVolumeSize);
-  }
-  return technique;
+  // The registry's defaults for the name, the options given applied: its GPU class from the
+  // factory, every parameter set (null for none).
+  return vtkDeepShadowTechniqueFactory::New(options.TechniqueParameters());
 }
 
 namespace

@@ -16,6 +16,7 @@
 #include "Shadows.h"
 
 #include "vtkDeepShadowStandardScene.h"
+#include "ShadowTechniques.h"
 #include "vtkDeepShadowTechnique.h"
 
 #include <cstdio>
@@ -26,9 +27,23 @@ namespace tool
 {
 namespace
 {
-// The techniques measured when --techniques is not given.
-const std::vector<std::string> DefaultTechniques{ "rays", "rays-cached", "rays-opaque",
-  "rays-color", "shadowmap", "dsm", "dsm-cached", "dsm-color", "dsm3", "cssm", "cssm-cached" };
+// The techniques measured when --techniques is not given: each at its defaults, and cached
+// where the registry's quick sweep caches it.
+std::vector<std::string> DefaultTechniques()
+{
+  std::vector<std::string> specs;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    for (const ShadowSweepEntry& entry : technique.Sweep)
+    {
+      if (entry.Suffix.empty() || (entry.Suffix == "-cached" && entry.Quick))
+      {
+        specs.push_back(technique.Name + entry.Suffix);
+      }
+    }
+  }
+  return specs;
+}
 }
 
 int RunShadowBench(const Options& options)
@@ -36,7 +51,7 @@ int RunShadowBench(const Options& options)
   const std::vector<std::string> scenes =
     options.BenchScenes.empty() ? vtkDeepShadowStandardScene::GetSceneNames() : options.BenchScenes;
   const std::vector<std::string> techniques =
-    options.BenchTechniques.empty() ? DefaultTechniques : options.BenchTechniques;
+    options.BenchTechniques.empty() ? DefaultTechniques() : options.BenchTechniques;
 
   std::printf("%-8s %-24s %9s %8s %8s %9s %11s %9s %8s %s\n", "scene", "technique", "frame_ms",
     "camera", "light", "build_ms", "bytes", "rmse", "max", "nodes avg/max");

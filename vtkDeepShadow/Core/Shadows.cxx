@@ -7,6 +7,7 @@
 #include "OpticalModel.h"
 #include "Parallel.h"
 #include "ShadowGrid.h"
+#include "ShadowTechniques.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -31,27 +32,13 @@ ShadowParameters ShadowParameters::GroundTruth(bool colored, double stepFactor)
   return p;
 }
 
+// One validation: each key's range as the registry declares it (ShadowTechniques.cxx).
 std::string ShadowParameters::Validate() const
 {
-  auto finite = [](double v) { return std::isfinite(v); };
-  const std::pair<bool, const char*> rules[] = {
-    { finite(this->StepFactor) && this->StepFactor > 0.0, "the step factor must be positive" },
-    { this->Threshold >= 0.0 && this->Threshold <= 1.0, "the threshold must lie in [0, 1]" },
-    { this->VolumeSize >= 2, "the shadow volume needs at least 2 nodes per axis" },
-    { this->MapSize >= 1, "the map size must be at least 1" },
-    { finite(this->Bias) && this->Bias >= 0.0, "the bias must be finite and not negative" },
-    { finite(this->Epsilon) && this->Epsilon >= 0.0, "epsilon must be finite and not negative" },
-    { this->Layers >= 1, "a deep shadow map needs at least 1 layer" },
-    { this->Levels[0] > 0.0 && this->Levels[0] < this->Levels[1] &&
-        this->Levels[1] < this->Levels[2] && this->Levels[2] <= 1.0,
-      "opacity levels must increase strictly within (0, 1]" },
-    { this->Offsets == 7 || this->Offsets == 13 || this->Offsets == 21,
-      "CSSM offsets must be 7, 13 or 21" },
-    { this->Photons >= 1, "CSSM needs at least 1 photon per texel" },
-  };
-  for (const auto& [holds, problem] : rules)
+  for (const ShadowParameterInfo& parameter : ShadowParameterInfos())
   {
-    if (!holds)
+    const std::string problem = parameter.Check(parameter.Get(*this));
+    if (!problem.empty())
     {
       return problem;
     }
@@ -61,28 +48,7 @@ std::string ShadowParameters::Validate() const
 
 std::string ShadowParameters::Name() const
 {
-  std::string name;
-  switch (this->Kind)
-  {
-    case ShadowKind::None:
-      return "none";
-    case ShadowKind::Rays:
-      name = std::string("rays") + (this->Opaque ? "-opaque" : "") + (this->Colored ? "-color" : "");
-      break;
-    case ShadowKind::ShadowMap:
-      name = "shadowmap";
-      break;
-    case ShadowKind::DeepShadowMap:
-      name = this->Colored ? "dsm-color" : "dsm";
-      break;
-    case ShadowKind::OpacityLevels:
-      name = "dsm3";
-      break;
-    case ShadowKind::Stochastic:
-      name = "cssm";
-      break;
-  }
-  return name + (this->Cached ? "-cached" : "");
+  return ShadowTechniqueOf(*this).Name + (this->Cached && this->Kind != ShadowKind::None ? "-cached" : "");
 }
 
 glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
@@ -277,6 +243,12 @@ private:
 
 }
 
+std::unique_ptr<LightShadow> MakeRayShadow(const ShadowParameters& parameters,
+  const ShadowCaster& caster, const Light& light, double step, int)
+{
+  return std::make_unique<RayShadow>(parameters, caster, light, step);
+}
+
 std::unique_ptr<LightShadow> MakeLightShadow(const ShadowParameters& parameters,
   const ShadowCaster& caster, const Light& light, double viewStep, int threads)
 {
@@ -285,19 +257,13 @@ std::unique_ptr<LightShadow> MakeLightShadow(const ShadowParameters& parameters,
   {
     throw std::invalid_argument("shadow parameters: " + problem);
   }
-  const double step = parameters.StepFactor * viewStep;
-  std::unique_ptr<LightShadow> shadow;
-  switch (parameters.Kind)
+  const ShadowTechniqueInfo& technique = ShadowTechniqueOf(parameters);
+  if (!technique.MakeShadow)
   {
-    case ShadowKind::None:
-      return nullptr;
-    case ShadowKind::Rays:
-      shadow = std::make_unique<RayShadow>(parameters, caster, light, step);
-      break;
-    default:
-      shadow = MakeLightSpaceShadow(parameters, caster, light, step, threads);
-      break;
+    return nullptr; // none
   }
+  const double step = parameters.StepFactor * viewStep;
+  std::unique_ptr<LightShadow> shadow = technique.MakeShadow(parameters, caster, light, step, threads);
   if (parameters.Cached)
   {
     // Once per node of a grid over the volume's box, then trilinear (the GPU's 3D texture).

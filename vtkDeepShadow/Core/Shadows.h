@@ -30,6 +30,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,7 +40,12 @@ namespace deepshadow
 class BoundRegion;
 class SurfaceSet;
 
-enum class ShadowKind
+/**
+ * The technique family a ShadowParameters describes; the registry (ShadowTechniques.h) maps
+ * each to its names, CPU twin and GPU class. A technique added outside this list may use a
+ * kind of its own, e.g. `constexpr ShadowKind MyKind = ShadowKind(100);` in its twin's header.
+ */
+enum class ShadowKind : int
 {
   None,
   Rays,
@@ -105,16 +111,25 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   unsigned int Seed = 0;
   int Photons = 1;          // photons (independent depth triples) per texel
 
+  /**
+   * Parameters of techniques that have no field above, by registry key (a technique added
+   * later or outside the tree); ShadowParameterInfo::Get gives their defaults when absent.
+   */
+  std::map<std::string, std::vector<double>> Extra;
+
   /** Whether the result has a visibility per colour channel (CSSM always has). */
   bool IsColored() const { return this->Colored || this->Kind == ShadowKind::Stochastic; }
-  /** Empty if these parameters are usable, else what is wrong with them. */
+  /**
+   * Empty if these parameters are usable, else what is wrong with them: every key checked
+   * against its range in the technique registry (ShadowTechniques.h).
+   */
   std::string Validate() const;
 
   /** The ground truth: translucent rays, no early termination, at `stepFactor`. */
   static ShadowParameters GroundTruth(bool colored = false, double stepFactor = 0.25);
   /**
-   * A short name: none, rays, rays-opaque, shadowmap, dsm, dsm-color, dsm3, cssm, each with
-   * "-cached" when cached (rays-cached, dsm-cached, ...).
+   * The registry's name of the technique (ShadowTechniques.h): none, rays, rays-opaque,
+   * shadowmap, dsm, dsm-color, dsm3, cssm, each with "-cached" when cached (dsm-cached, ...).
    */
   std::string Name() const;
 };
@@ -210,6 +225,10 @@ public:
 VTKDEEPSHADOWCORE_EXPORT std::unique_ptr<LightShadow> MakeLightShadow(
   const ShadowParameters& parameters, const ShadowCaster& caster, const Light& light,
   double viewStep, int threads = 0);
+
+/** The rays' twin (translucent, opaque or coloured feelers); `step` is the feeler step. */
+VTKDEEPSHADOWCORE_EXPORT std::unique_ptr<LightShadow> MakeRayShadow(const ShadowParameters& parameters,
+  const ShadowCaster& caster, const Light& light, double step, int threads = 0);
 
 /**
  * The feeler itself: transmittance (per channel if Colored) from world point `from` towards

@@ -2,11 +2,7 @@
 
 #include "BoundRegion.h"
 #include "Camera.h"
-#include "DeepShadowMap.h"
-#include "OpacityLevels.h"
 #include "Parallel.h"
-#include "ShadowMap.h"
-#include "StochasticShadowMap.h"
 #include "SurfaceSet.h"
 
 #include <glm/common.hpp>
@@ -414,24 +410,6 @@ size_t LightSpaceShadow::Texel(int face, int x, int y) const
 size_t LightSpaceShadow::TexelCount() const
 {
   return this->Faces.size() * this->Size * this->Size;
-}
-
-std::unique_ptr<LightShadow> MakeLightSpaceShadow(const ShadowParameters& parameters,
-  const ShadowCaster& caster, const Light& light, double step, int threads)
-{
-  switch (parameters.Kind)
-  {
-    case ShadowKind::ShadowMap:
-      return std::make_unique<ShadowMapShadow>(parameters, caster, light, step, threads);
-    case ShadowKind::DeepShadowMap:
-      return std::make_unique<DeepShadowMap>(parameters, caster, light, step, threads);
-    case ShadowKind::OpacityLevels:
-      return std::make_unique<OpacityLevelsShadow>(parameters, caster, light, step, threads);
-    case ShadowKind::Stochastic:
-      return std::make_unique<StochasticShadowMap>(parameters, caster, light, step, threads);
-    default:
-      return nullptr;
-  }
 }
 
 }

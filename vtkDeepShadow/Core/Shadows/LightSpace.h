@@ -196,9 +196,5 @@ protected:
   std::vector<ShadowMapFace> Faces;
 };
 
-/** Builds a light-space technique's shadow (called by MakeLightShadow). */
-std::unique_ptr<LightShadow> MakeLightSpaceShadow(const ShadowParameters& parameters,
-  const ShadowCaster& caster, const Light& light, double step, int threads);
-
 }
 #endif

@@ -5,6 +5,7 @@
 #include "vtkDeepShadowDeepShadowMap.h"
 #include "vtkDeepShadowDeepShadowMapBuild.h"
 
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
@@ -14,6 +15,9 @@
 #include <cstring>
 
 vtkStandardNewMacro(vtkDeepShadowDeepShadowMapTechnique);
+// The GPU class of the registry's DeepShadowMap techniques (deepshadow::ShadowTechniques()).
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::DeepShadowMap,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowDeepShadowMapTechnique::New(); });
 
 // The build's counters: a shader storage buffer the build adds to atomically, read back
 // after it (DeepShadowMapBuild.glsl's DeepShadowStatistics).
@@ -42,12 +46,12 @@ vtkDeepShadowDeepShadowMapTechnique::~vtkDeepShadowDeepShadowMapTechnique() = de
 
 void vtkDeepShadowDeepShadowMapTechnique::SetEpsilon(double epsilon)
 {
-  this->SetClamped("Epsilon", this->Epsilon, epsilon, 0.0, 1.0);
+  this->SetClamped("Epsilon", "epsilon", this->Epsilon, epsilon);
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::SetLayers(int layers)
 {
-  this->SetClamped("Layers", this->Layers, layers, 1, 256);
+  this->SetClamped("Layers", "layers", this->Layers, layers);
 }
 
 deepshadow::ShadowParameters vtkDeepShadowDeepShadowMapTechnique::GetParameters() const
@@ -60,6 +64,14 @@ deepshadow::ShadowParameters vtkDeepShadowDeepShadowMapTechnique::GetParameters(
   parameters.Layers = this->Layers;
   parameters.Colored = this->Colored;
   return parameters;
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetEpsilon(parameters.Epsilon);
+  this->SetLayers(parameters.Layers);
+  this->SetColored(parameters.Colored);
 }
 
 std::vector<double> vtkDeepShadowDeepShadowMapTechnique::GetStructureKey() const

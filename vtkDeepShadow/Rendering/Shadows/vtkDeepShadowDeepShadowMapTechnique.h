@@ -65,6 +65,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:

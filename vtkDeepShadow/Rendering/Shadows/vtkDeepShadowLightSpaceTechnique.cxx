@@ -74,7 +74,13 @@ vtkDeepShadowLightSpaceTechnique::~vtkDeepShadowLightSpaceTechnique() = default;
 
 void vtkDeepShadowLightSpaceTechnique::SetMapSize(int size)
 {
-  this->SetClamped("MapSize", this->MapSize, size, 1, 65536);
+  this->SetClamped("MapSize", "shadow-map-size", this->MapSize, size);
+}
+
+void vtkDeepShadowLightSpaceTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetMapSize(parameters.MapSize);
 }
 
 bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(

@@ -35,6 +35,8 @@ public:
   vtkGetMacro(MapSize, int);
   ///@}
 
+  /** Adds the map size to the shared parameters. */
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:

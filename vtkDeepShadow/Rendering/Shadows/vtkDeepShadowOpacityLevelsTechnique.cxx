@@ -5,17 +5,23 @@
 #include "vtkDeepShadowOpacityLevels.h"
 #include "vtkDeepShadowOpacityLevelsBuild.h"
 
+#include "ShadowTechniques.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkDeepShadowOpacityLevelsTechnique);
+// The GPU class of the registry's OpacityLevels techniques (deepshadow::ShadowTechniques()).
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::OpacityLevels,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowOpacityLevelsTechnique::New(); });
 
 void vtkDeepShadowOpacityLevelsTechnique::SetLevels(double first, double second, double third)
 {
-  if (!(first > 0.0 && first < second && second < third && third <= 1.0))
+  const std::string problem =
+    deepshadow::FindShadowParameter("opacity-levels")->Check({ first, second, third });
+  if (!problem.empty())
   {
-    vtkErrorMacro("opacity levels must increase strictly within (0, 1]; got " << first << ", "
-                                                                              << second << ", " << third);
+    vtkErrorMacro(<< problem << "; got " << first << ", " << second << ", " << third);
     return;
   }
   if (first != this->Levels[0] || second != this->Levels[1] || third != this->Levels[2])
@@ -35,6 +41,12 @@ deepshadow::ShadowParameters vtkDeepShadowOpacityLevelsTechnique::GetParameters(
   parameters.MapSize = this->MapSize;
   parameters.Levels = { { this->Levels[0], this->Levels[1], this->Levels[2] } };
   return parameters;
+}
+
+void vtkDeepShadowOpacityLevelsTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetLevels(parameters.Levels[0], parameters.Levels[1], parameters.Levels[2]);
 }
 
 std::vector<double> vtkDeepShadowOpacityLevelsTechnique::GetStructureKey() const

@@ -38,6 +38,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
   vtkDeepShadowOpacityLevelsTechnique() = default;

@@ -4,9 +4,13 @@
 #include "Shadows.h"
 #include "vtkDeepShadowRayShadow.h"
 
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 
 vtkStandardNewMacro(vtkDeepShadowRayTechnique);
+// The GPU class of the registry's Rays techniques (deepshadow::ShadowTechniques()).
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Rays,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowRayTechnique::New(); });
 
 deepshadow::ShadowParameters vtkDeepShadowRayTechnique::GetParameters() const
 {
@@ -17,6 +21,14 @@ deepshadow::ShadowParameters vtkDeepShadowRayTechnique::GetParameters() const
   parameters.Colored = this->Colored && !this->Opaque;
   parameters.EarlyTermination = this->EarlyTermination;
   return parameters;
+}
+
+void vtkDeepShadowRayTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetOpaque(parameters.Opaque);
+  this->SetColored(parameters.Colored);
+  this->SetEarlyTermination(parameters.EarlyTermination);
 }
 
 std::vector<double> vtkDeepShadowRayTechnique::GetStructureKey() const

@@ -45,6 +45,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
   vtkDeepShadowRayTechnique() = default;

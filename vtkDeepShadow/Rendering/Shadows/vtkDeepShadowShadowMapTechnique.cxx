@@ -6,16 +6,20 @@
 #include "vtkDeepShadowShadowMap.h"
 #include "vtkDeepShadowShadowMapBuild.h"
 
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
 
 vtkStandardNewMacro(vtkDeepShadowShadowMapTechnique);
+// The GPU class of the registry's ShadowMap techniques (deepshadow::ShadowTechniques()).
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::ShadowMap,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowShadowMapTechnique::New(); });
 
 void vtkDeepShadowShadowMapTechnique::SetBias(double bias)
 {
-  this->SetClamped("Bias", this->Bias, bias, 0.0, 1e6);
+  this->SetClamped("Bias", "bias", this->Bias, bias);
 }
 
 deepshadow::ShadowParameters vtkDeepShadowShadowMapTechnique::GetParameters() const
@@ -27,6 +31,13 @@ deepshadow::ShadowParameters vtkDeepShadowShadowMapTechnique::GetParameters() co
   parameters.Bias = this->Bias;
   parameters.Filter = static_cast<deepshadow::ShadowFilter>(this->Filter);
   return parameters;
+}
+
+void vtkDeepShadowShadowMapTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetBias(parameters.Bias);
+  this->SetFilter(static_cast<int>(parameters.Filter));
 }
 
 std::vector<double> vtkDeepShadowShadowMapTechnique::GetStructureKey() const

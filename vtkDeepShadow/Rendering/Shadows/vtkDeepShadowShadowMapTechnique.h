@@ -44,6 +44,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
   vtkDeepShadowShadowMapTechnique() = default;

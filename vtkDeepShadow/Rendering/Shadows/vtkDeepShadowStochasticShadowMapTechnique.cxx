@@ -7,18 +7,25 @@
 #include "vtkDeepShadowStochasticShadowMap.h"
 #include "vtkDeepShadowStochasticShadowMapBuild.h"
 
+#include "ShadowTechniques.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
 
 vtkStandardNewMacro(vtkDeepShadowStochasticShadowMapTechnique);
+// The GPU class of the registry's Stochastic techniques (deepshadow::ShadowTechniques()).
+static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Stochastic,
+  []() -> vtkDeepShadowTechnique* { return vtkDeepShadowStochasticShadowMapTechnique::New(); });
 
 void vtkDeepShadowStochasticShadowMapTechnique::SetOffsets(int offsets)
 {
-  if (offsets != 7 && offsets != 13 && offsets != 21)
+  const std::string problem =
+    deepshadow::FindShadowParameter("cssm-offsets")->Check({ static_cast<double>(offsets) });
+  if (!problem.empty())
   {
-    vtkErrorMacro("CSSM offsets must be 7, 13 or 21, not " << offsets << "; keeping " << this->Offsets);
+    vtkErrorMacro(<< problem << ", not " << offsets << "; keeping " << this->Offsets);
     return;
   }
   if (offsets != this->Offsets)
@@ -30,7 +37,7 @@ void vtkDeepShadowStochasticShadowMapTechnique::SetOffsets(int offsets)
 
 void vtkDeepShadowStochasticShadowMapTechnique::SetPhotons(int photons)
 {
-  this->SetClamped("Photons", this->Photons, photons, 1, 64);
+  this->SetClamped("Photons", "cssm-photons", this->Photons, photons);
 }
 
 deepshadow::ShadowParameters vtkDeepShadowStochasticShadowMapTechnique::GetParameters() const
@@ -43,6 +50,14 @@ deepshadow::ShadowParameters vtkDeepShadowStochasticShadowMapTechnique::GetParam
   parameters.Seed = this->Seed;
   parameters.Photons = this->Photons;
   return parameters;
+}
+
+void vtkDeepShadowStochasticShadowMapTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->Superclass::SetParameters(parameters);
+  this->SetOffsets(parameters.Offsets);
+  this->SetSeed(parameters.Seed);
+  this->SetPhotons(parameters.Photons);
 }
 
 std::vector<std::string> vtkDeepShadowStochasticShadowMapTechnique::GetBuildFeatures() const

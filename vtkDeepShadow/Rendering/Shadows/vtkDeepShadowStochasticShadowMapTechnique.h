@@ -47,6 +47,7 @@ public:
   ///@}
 
   deepshadow::ShadowParameters GetParameters() const override;
+  void SetParameters(const deepshadow::ShadowParameters& parameters) override;
   std::vector<std::string> GetBuildFeatures() const override;
 
 protected:

@@ -6,6 +6,7 @@
 #include "ShadowSlots.h"
 #include "ShadowGrid.h"
 #include "Shadows.h"
+#include "ShadowTechniques.h"
 #include "vtkDeepShadowCachedShadow.h"
 #include "vtkDeepShadowCachedShadowCS.h"
 #include "vtkDeepShadowShadow.h"
@@ -88,17 +89,35 @@ vtkCxxSetObjectMacro(vtkDeepShadowTechnique, ShadowProperty, vtkVolumeProperty);
 
 void vtkDeepShadowTechnique::SetStepFactor(double factor)
 {
-  this->SetClamped("StepFactor", this->StepFactor, factor, 0.01, 100.0);
+  this->SetClamped("StepFactor", "shadow-step-factor", this->StepFactor, factor);
 }
 
 void vtkDeepShadowTechnique::SetThreshold(double threshold)
 {
-  this->SetClamped("Threshold", this->Threshold, threshold, 0.0, 1.0);
+  this->SetClamped("Threshold", "shadow-threshold", this->Threshold, threshold);
 }
 
 void vtkDeepShadowTechnique::SetShadowVolumeSize(int size)
 {
-  this->SetClamped("ShadowVolumeSize", this->ShadowVolumeSize, size, 2, 2048);
+  this->SetClamped("ShadowVolumeSize", "shadow-volume-size", this->ShadowVolumeSize, size);
+}
+
+void vtkDeepShadowTechnique::RegistryRange(const char* key, double& low, double& high)
+{
+  const deepshadow::ShadowParameterInfo* parameter = deepshadow::FindShadowParameter(key);
+  low = parameter->Low;
+  high = parameter->High;
+}
+
+void vtkDeepShadowTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
+{
+  this->SetStepFactor(parameters.StepFactor);
+  this->SetThreshold(parameters.Threshold);
+  this->SetThresholdMode(parameters.Mode == deepshadow::ThresholdMode::Scalar ? ScalarThreshold
+      : parameters.Mode == deepshadow::ThresholdMode::Opacity                 ? OpacityThreshold
+                                                                              : AccumulatedThreshold);
+  this->SetCached(parameters.Cached);
+  this->SetShadowVolumeSize(parameters.VolumeSize);
 }
 
 std::string vtkDeepShadowTechnique::GetName() const
@@ -447,7 +466,7 @@ void vtkDeepShadowTechnique::SetFeelerUniforms(
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
   // shadows are cast by another transfer function than the one the blocks were found for.
   const bool opaqueOnScalar = parameters.Mode == deepshadow::ThresholdMode::Scalar &&
-    (parameters.Opaque || parameters.Kind == deepshadow::ShadowKind::ShadowMap);
+    deepshadow::ShadowTechniqueOf(parameters).Binary;
   sink.Set("u_feelerSkipEmpty", context.Occupancy && this->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
 }
 

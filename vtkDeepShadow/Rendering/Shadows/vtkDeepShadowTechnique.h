@@ -124,6 +124,12 @@ public:
 
   /** The parameters of the CPU twin (deepshadow::MakeLightShadow). */
   virtual deepshadow::ShadowParameters GetParameters() const = 0;
+  /**
+   * The inverse: sets every parameter of this technique from `parameters` through its
+   * setters (clamped to the registry's ranges); the kind is the class's, not theirs.
+   * vtkDeepShadowTechniqueFactory::New() uses it. Subclasses add theirs and call this.
+   */
+  virtual void SetParameters(const deepshadow::ShadowParameters& parameters);
   /** rays, rays-opaque, rays-color, shadowmap, dsm, dsm-color, dsm3, cssm; "-cached" if so. */
   std::string GetName() const;
 
@@ -238,6 +244,19 @@ protected:
       this->Modified();
     }
   }
+
+  /**
+   * SetClamped with the range the technique registry gives `key` (deepshadow::
+   * ShadowParameterInfo), so that the setters, the tool and Validate() share one range.
+   */
+  template <typename T>
+  void SetClamped(const char* name, const char* key, T& member, T value)
+  {
+    double low = 0.0, high = 0.0;
+    RegistryRange(key, low, high);
+    this->SetClamped(name, member, value, static_cast<T>(low), static_cast<T>(high));
+  }
+  static void RegistryRange(const char* key, double& low, double& high);
 
   /** The common part of GetParameters(). */
   void FillParameters(deepshadow::ShadowParameters& parameters) const;

@@ -1,0 +1,506 @@
+#include "ShadowTechniques.h"
+
+#include "DeepShadowMap.h"
+#include "OpacityLevels.h"
+#include "ShadowMap.h"
+#include "StochasticShadowMap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace deepshadow
+{
+namespace
+{
+using Type = ShadowParameterInfo::Type;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Whole numbers in full (2147483647, not 2.14748e+09), others as %g (0.01).
+std::string Number(double value)
+{
+  char text[32];
+  if (value == std::floor(value) && std::abs(value) < 1e15)
+  {
+    std::snprintf(text, sizeof(text), "%.0f", value);
+  }
+  else
+  {
+    std::snprintf(text, sizeof(text), "%g", value);
+  }
+  return text;
+}
+
+// "a, b or c"
+std::string Alternatives(const std::vector<std::string>& items)
+{
+  std::string text;
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    text += (i == 0 ? "" : (i + 1 == items.size() ? " or " : ", ")) + items[i];
+  }
+  return text;
+}
+
+double ParseReal(const std::string& key, const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+  {
+    throw std::invalid_argument(key + " expects a number, got '" + text + "'");
+  }
+  return value;
+}
+
+// Accessors of one ShadowParameters field, as the vector of doubles a parameter's value is.
+template <typename T>
+ShadowParameterInfo Field(ShadowParameterInfo info, T ShadowParameters::*member)
+{
+  info.Get = [member](const ShadowParameters& p) {
+    return std::vector<double>{ static_cast<double>(p.*member) };
+  };
+  info.Set = [member](ShadowParameters& p, const std::vector<double>& v) {
+    p.*member = static_cast<T>(v.at(0));
+  };
+  return info;
+}
+
+ShadowParameterInfo Numeric(const char* key, Type type, double low, double high,
+  const char* metavar, const char* help)
+{
+  ShadowParameterInfo info;
+  info.Key = key;
+  info.Kind = type;
+  info.Low = low;
+  info.High = high;
+  info.Metavar = metavar;
+  info.Help = help;
+  return info;
+}
+
+ShadowParameterInfo Choice(const char* key, std::vector<std::string> choices, const char* help)
+{
+  ShadowParameterInfo info;
+  info.Key = key;
+  info.Kind = Type::Choice;
+  info.Choices = std::move(choices);
+  info.Help = help;
+  return info;
+}
+
+// The parameters, in --help's order. Each range lives here only: the tool refuses values
+// outside it, the VTK setters clamp to it, ShadowParameters::Validate() checks it.
+std::vector<ShadowParameterInfo> MakeParameters()
+{
+  std::vector<ShadowParameterInfo> list;
+  list.push_back(Field(Numeric("shadow-threshold", Type::Number, 0.0, 1.0, "T",
+                         "rays-opaque, shadowmap: occluder threshold"),
+    &ShadowParameters::Threshold));
+  list.push_back(Field(Choice("threshold-on", { "accumulated", "opacity", "scalar" },
+                         "what the threshold is compared with: the opacity accumulated along the "
+                         "light ray (default: a translucent body's hard shadow), each sample's "
+                         "opacity, or each sample's normalized scalar"),
+    &ShadowParameters::Mode));
+  list.push_back(Field(Numeric("shadow-step-factor", Type::Number, 0.01, 100.0, "F",
+                         "feeler / light-ray step as a factor of the sample distance"),
+    &ShadowParameters::StepFactor));
+  auto volume = Numeric("shadow-volume-size", Type::Integer, 2, 2048, "N",
+    "*-cached: shadow volume nodes along the longest axis");
+  volume.DefaultText = "128 for rays, 64 for the map techniques";
+  list.push_back(Field(volume, &ShadowParameters::VolumeSize));
+  list.push_back(Field(Numeric("shadow-map-size", Type::Integer, 1, 65536, "N",
+                         "texels per side"),
+    &ShadowParameters::MapSize));
+  list.push_back(Field(Numeric("epsilon", Type::Number, 0.0, 1.0, "E",
+                         "bound on the compressed visibility's error"),
+    &ShadowParameters::Epsilon));
+  list.push_back(Field(Numeric("layers", Type::Integer, 1, 256, "N", "nodes per texel"),
+    &ShadowParameters::Layers));
+  auto levels = Numeric("opacity-levels", Type::Levels, 0.0, 1.0, "A,B,C", "opacity levels");
+  levels.Get = [](const ShadowParameters& p) {
+    return std::vector<double>(p.Levels.begin(), p.Levels.end());
+  };
+  levels.Set = [](ShadowParameters& p, const std::vector<double>& v) {
+    std::copy_n(v.begin(), 3, p.Levels.begin());
+  };
+  list.push_back(levels);
+  auto offsets = Numeric("cssm-offsets", Type::Integer, 7, 21, "M",
+    "texel offsets averaged per lookup");
+  offsets.Allowed = { 7, 13, 21 };
+  list.push_back(Field(offsets, &ShadowParameters::Offsets));
+  list.push_back(Field(Numeric("cssm-seed", Type::Integer, 0, 2147483647, "S",
+                         "seed of the random thresholds"),
+    &ShadowParameters::Seed));
+  list.push_back(Field(Numeric("cssm-photons", Type::Integer, 1, 64, "N", "photons per texel"),
+    &ShadowParameters::Photons));
+  list.push_back(Field(Choice("pcf", { "none", "2x2", "3x3", "poisson" }, "filter"),
+    &ShadowParameters::Filter));
+  list.push_back(Field(Numeric("bias", Type::Number, 0.0, Infinity, "B",
+                         "depth bias in feeler steps"),
+    &ShadowParameters::Bias));
+  // Keys without a field of their own live in ShadowParameters::Extra.
+  for (ShadowParameterInfo& info : list)
+  {
+    if (!info.Get)
+    {
+      info.Get = [key = info.Key, fallback = info.ExtraDefault](const ShadowParameters& p) {
+        const auto at = p.Extra.find(key);
+        return at == p.Extra.end() ? fallback : at->second;
+      };
+      info.Set = [key = info.Key](ShadowParameters& p, const std::vector<double>& v) { p.Extra[key] = v; };
+    }
+  }
+  return list;
+}
+
+template <typename Twin>
+std::unique_ptr<LightShadow> MakeTwin(const ShadowParameters& parameters,
+  const ShadowCaster& caster, const Light& light, double step, int threads)
+{
+  return std::make_unique<Twin>(parameters, caster, light, step, threads);
+}
+
+// Light-space maps need a smaller cache: their maps already bound the shadows' detail.
+void MapDefaults(ShadowParameters& p)
+{
+  p.VolumeSize = 64;
+}
+
+ShadowTechniqueInfo Technique(const char* name, const char* summary, ShadowKind kind,
+  std::vector<std::string> keys, std::vector<ShadowSweepEntry> sweep)
+{
+  ShadowTechniqueInfo info;
+  info.Name = name;
+  info.Summary = summary;
+  info.Kind = kind;
+  info.Keys = std::move(keys);
+  info.Sweep = std::move(sweep);
+  info.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 0; };
+  return info;
+}
+
+ShadowTechniqueInfo Rays(const char* name, const char* summary, bool opaque, bool colored,
+  std::vector<ShadowSweepEntry> sweep)
+{
+  ShadowTechniqueInfo info = Technique(name, summary, ShadowKind::Rays, {}, std::move(sweep));
+  info.Opaque = opaque;
+  info.Colored = colored;
+  info.MakeShadow = MakeRayShadow;
+  return info;
+}
+
+ShadowTechniqueInfo LightSpaceMap(ShadowTechniqueInfo info)
+{
+  info.Keys.insert(info.Keys.begin(), "shadow-map-size");
+  info.Defaults = MapDefaults;
+  return info;
+}
+
+// The techniques, in the order the tool lists them. A technique is one entry here (and its
+// GPU class, which registers itself with vtkDeepShadowTechniqueFactory under the same kind).
+std::vector<ShadowTechniqueInfo> MakeTechniques()
+{
+  std::vector<ShadowTechniqueInfo> list;
+  list.push_back(Technique("none", "default", ShadowKind::None, {}, {}));
+  list.push_back(Rays("rays", "translucent shadow rays", false, false,
+    { { "", true }, { ":shadow-step-factor=0.5" }, { ":shadow-step-factor=2" },
+      { ":shadow-step-factor=4" }, { "-cached", true }, { "-cached:shadow-volume-size=64" },
+      { "-cached:shadow-volume-size=256" } }));
+  auto opaque = Rays("rays-opaque", "", true, false, { { "" } });
+  opaque.Binary = true;
+  list.push_back(opaque);
+  list.push_back(Rays("rays-color", "coloured", false, true, { { "" } }));
+
+  auto map = LightSpaceMap(Technique("shadowmap", "", ShadowKind::ShadowMap, { "pcf", "bias" },
+    { { "", true }, { ":shadow-map-size=256" }, { ":shadow-map-size=1024" },
+      { ":shadow-map-size=2048" }, { ":pcf=none" }, { ":pcf=2x2" }, { ":pcf=poisson" },
+      { "-cached" } }));
+  map.Binary = true;
+  map.MakeShadow = MakeTwin<ShadowMapShadow>;
+  map.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 4; };
+  list.push_back(map);
+
+  for (const bool colored : { false, true })
+  {
+    auto dsm = LightSpaceMap(Technique(colored ? "dsm-color" : "dsm",
+      colored ? "" : "deep shadow map", ShadowKind::DeepShadowMap, { "epsilon", "layers" },
+      colored ? std::vector<ShadowSweepEntry>{ { "", true }, { "-cached" } }
+              : std::vector<ShadowSweepEntry>{ { "", true }, { ":epsilon=0" }, { ":epsilon=0.01" },
+                  { ":epsilon=0.05" }, { ":epsilon=0.1" }, { ":layers=1" }, { ":layers=2", true },
+                  { ":layers=4" }, { ":layers=16" }, { ":shadow-map-size=256" },
+                  { ":shadow-map-size=1024" }, { ":shadow-step-factor=2" }, { "-cached", true },
+                  { "-cached:shadow-volume-size=128" } }));
+    dsm.Colored = colored;
+    dsm.MakeShadow = MakeTwin<DeepShadowMap>;
+    dsm.TexelBytes = [colored](const ShadowParameters& p) -> std::uint64_t {
+      return (colored ? 16 : 8) * static_cast<std::uint64_t>(p.Layers);
+    };
+    list.push_back(dsm);
+  }
+
+  auto levels = LightSpaceMap(Technique("dsm3", "opacity levels", ShadowKind::OpacityLevels,
+    { "opacity-levels" }, { { "", true }, { ":shadow-map-size=256" }, { "-cached" } }));
+  levels.MakeShadow = MakeTwin<OpacityLevelsShadow>;
+  levels.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 16; };
+  list.push_back(levels);
+
+  auto cssm = LightSpaceMap(Technique("cssm", "coloured stochastic shadow map",
+    ShadowKind::Stochastic, { "cssm-offsets", "cssm-seed", "cssm-photons" },
+    { { "", true }, { ":cssm-offsets=7" }, { ":cssm-offsets=21" }, { ":cssm-photons=4" },
+      { "-cached", true } }));
+  cssm.MakeShadow = MakeTwin<StochasticShadowMap>;
+  cssm.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
+    return 16 * static_cast<std::uint64_t>(p.Photons);
+  };
+  list.push_back(cssm);
+  return list;
+}
+}
+
+std::string ShadowParameterInfo::RangeText() const
+{
+  switch (this->Kind)
+  {
+    case Type::Choice:
+      return Alternatives(this->Choices);
+    case Type::Levels:
+      return "(" + Number(this->Low) + ", " + Number(this->High) + "]";
+    default:
+      break;
+  }
+  if (!this->Allowed.empty())
+  {
+    std::vector<std::string> items;
+    for (double value : this->Allowed)
+    {
+      items.push_back(Number(value));
+    }
+    return Alternatives(items);
+  }
+  if (std::isinf(this->High))
+  {
+    return "not negative";
+  }
+  return "[" + Number(this->Low) + ", " + Number(this->High) + "]";
+}
+
+std::string ShadowParameterInfo::Check(const std::vector<double>& v) const
+{
+  const std::string& key = this->Key;
+  switch (this->Kind)
+  {
+    case Type::Number:
+      if (v.size() == 1 && std::isfinite(v[0]) && v[0] >= this->Low && v[0] <= this->High)
+      {
+        return std::string();
+      }
+      return key + (std::isinf(this->High) && this->Low == 0.0 ? " must not be negative"
+                                                               : " must be in " + this->RangeText());
+    case Type::Integer:
+      if (v.size() != 1 || v[0] != std::floor(v[0]) || !(v[0] >= this->Low && v[0] <= this->High))
+      {
+        return key + " must be a whole number in [" + Number(this->Low) + ", " + Number(this->High) + "]";
+      }
+      if (!this->Allowed.empty() &&
+        std::find(this->Allowed.begin(), this->Allowed.end(), v[0]) == this->Allowed.end())
+      {
+        return key + " must be " + this->RangeText();
+      }
+      return std::string();
+    case Type::Choice:
+      if (v.size() == 1 && v[0] >= 0.0 && v[0] < static_cast<double>(this->Choices.size()) &&
+        v[0] == std::floor(v[0]))
+      {
+        return std::string();
+      }
+      return key + " must be " + this->RangeText();
+    case Type::Levels:
+      if (v.size() == 3 && v[0] > this->Low && v[0] < v[1] && v[1] < v[2] && v[2] <= this->High)
+      {
+        return std::string();
+      }
+      return key + " must increase strictly within " + this->RangeText();
+  }
+  return std::string();
+}
+
+std::vector<double> ShadowParameterInfo::Parse(const std::string& text) const
+{
+  const std::string& key = this->Key;
+  std::vector<double> values;
+  if (this->Kind == Type::Choice)
+  {
+    const auto at = std::find(this->Choices.begin(), this->Choices.end(), text);
+    if (at == this->Choices.end())
+    {
+      throw std::invalid_argument(key + " must be " + this->RangeText() + ", got '" + text + "'");
+    }
+    return { static_cast<double>(at - this->Choices.begin()) };
+  }
+  if (this->Kind == Type::Levels)
+  {
+    std::stringstream stream(text);
+    std::vector<std::string> parts;
+    for (std::string part; std::getline(stream, part, ',');)
+    {
+      parts.push_back(part);
+    }
+    if (parts.size() != 3)
+    {
+      throw std::invalid_argument(key + " expects A,B,C");
+    }
+    for (const std::string& part : parts)
+    {
+      values.push_back(ParseReal(key, part));
+    }
+  }
+  else
+  {
+    values.push_back(ParseReal(key, text));
+    if (this->Kind == Type::Integer &&
+      (values[0] != std::floor(values[0]) || values[0] < this->Low || values[0] > this->High))
+    {
+      throw std::invalid_argument(key + " expects a whole number in [" + Number(this->Low) + ", " +
+        Number(this->High) + "], got '" + text + "'");
+    }
+  }
+  const std::string problem = this->Check(values);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  return values;
+}
+
+std::string ShadowParameterInfo::Format(const std::vector<double>& values) const
+{
+  if (this->Kind == Type::Choice)
+  {
+    return this->Choices.at(static_cast<size_t>(values.at(0)));
+  }
+  std::string text;
+  for (double value : values)
+  {
+    text += (text.empty() ? "" : ",") + Number(value);
+  }
+  return text;
+}
+
+bool ShadowTechniqueInfo::Reads(const std::string& key) const
+{
+  if (this->Kind == ShadowKind::None)
+  {
+    return false;
+  }
+  const auto& shared = SharedShadowParameterKeys();
+  return std::find(this->Keys.begin(), this->Keys.end(), key) != this->Keys.end() ||
+    std::find(shared.begin(), shared.end(), key) != shared.end();
+}
+
+ShadowParameters ShadowTechniqueInfo::DefaultParameters(bool cached) const
+{
+  ShadowParameters p;
+  p.Kind = this->Kind;
+  p.Opaque = this->Opaque;
+  p.Colored = this->Colored;
+  p.Cached = cached;
+  if (this->Defaults)
+  {
+    this->Defaults(p);
+  }
+  return p;
+}
+
+const std::vector<ShadowTechniqueInfo>& ShadowTechniques()
+{
+  static const std::vector<ShadowTechniqueInfo> techniques = MakeTechniques();
+  return techniques;
+}
+
+const std::vector<ShadowParameterInfo>& ShadowParameterInfos()
+{
+  static const std::vector<ShadowParameterInfo> parameters = MakeParameters();
+  return parameters;
+}
+
+const std::vector<std::string>& SharedShadowParameterKeys()
+{
+  static const std::vector<std::string> keys{ "shadow-threshold", "threshold-on",
+    "shadow-step-factor", "shadow-volume-size" };
+  return keys;
+}
+
+const ShadowTechniqueInfo* FindShadowTechnique(const std::string& name, bool* cached)
+{
+  const std::string suffix = "-cached";
+  const bool isCached = name.size() > suffix.size() &&
+    name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const std::string base = isCached ? name.substr(0, name.size() - suffix.size()) : name;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    if (technique.Name == base && !(isCached && technique.Kind == ShadowKind::None))
+    {
+      if (cached)
+      {
+        *cached = isCached;
+      }
+      return &technique;
+    }
+  }
+  return nullptr;
+}
+
+const ShadowTechniqueInfo& ShadowTechniqueOf(const ShadowParameters& parameters)
+{
+  // The exact flags first; then the kind alone (a flag that kind does not vary).
+  const ShadowTechniqueInfo* sameKind = nullptr;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    if (technique.Kind != parameters.Kind)
+    {
+      continue;
+    }
+    if (technique.Opaque == parameters.Opaque && technique.Colored == parameters.Colored)
+    {
+      return technique;
+    }
+    if (!sameKind || (technique.Colored == parameters.Colored && sameKind->Colored != parameters.Colored))
+    {
+      sameKind = &technique;
+    }
+  }
+  return sameKind ? *sameKind : ShadowTechniques().front();
+}
+
+const ShadowParameterInfo* FindShadowParameter(const std::string& key)
+{
+  for (const ShadowParameterInfo& parameter : ShadowParameterInfos())
+  {
+    if (parameter.Key == key)
+    {
+      return &parameter;
+    }
+  }
+  return nullptr;
+}
+
+std::vector<std::string> ShadowTechniqueNames()
+{
+  std::vector<std::string> names;
+  for (const ShadowTechniqueInfo& technique : ShadowTechniques())
+  {
+    names.push_back(technique.Name);
+    if (technique.Kind != ShadowKind::None)
+    {
+      names.push_back(technique.Name + "-cached");
+    }
+  }
+  return names;
+}
+
+}
