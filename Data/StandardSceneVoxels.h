@@ -4,6 +4,8 @@
 #ifndef deepshadow_StandardSceneVoxels_h
 #define deepshadow_StandardSceneVoxels_h
 
+#include "Jitter.h"
+
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
@@ -20,14 +22,7 @@ namespace scenes
 // operations (+, -, *, /, sqrt) and exact ones (floor, fabs, fmod, ldexp, min, max): they give
 // the same bits everywhere, unlike libm's exp, sin or atan2.
 
-// PCG-style 32-bit hash (Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020).
-inline uint32_t PcgHash(uint32_t v)
-{
-  const uint32_t state = v * 747796405u + 2891336453u;
-  const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-  return (word >> 22u) ^ word;
-}
-
+// Hashes: Core's PcgHash (Jitter.h), the one the jitter uses on the CPU and the GPU.
 inline uint32_t Hash3(int x, int y, int z, uint32_t seed)
 {
   return PcgHash(seed +
