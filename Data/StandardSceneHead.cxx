@@ -253,10 +253,33 @@ struct HeadModel
     out.Add(-1e9, hu::White);
   }
 
-  // Hounsfield value of the phantom at p before the scanner blur and noise.
+  // Hounsfield value of the phantom at p before the scanner blur and noise: the regions in
+  // priority order; once the voxel is covered the rest are not evaluated.
   double Value(const double p[3], Composer& out) const
   {
-    const double x = p[0], y = p[1], z = p[2];
+    this->Skin(p, out);
+    if (out.Full())
+    {
+      return out.Finish(0.0);
+    }
+    this->FaceSoftParts(p, out);
+    if (out.Full())
+    {
+      return out.Finish(0.0);
+    }
+    this->Vault(p, out);
+    if (out.Full())
+    {
+      return out.Finish(0.0);
+    }
+    this->FaceBones(p, out);
+    this->Spine(p, out);
+    return out.Finish(hu::Muscle);
+  }
+
+  // Skin, the fat under it, the nostrils.
+  void Skin(const double p[3], Composer& out) const
+  {
     // Below -6 - HalfWidth the skin and fat layers no longer reach the voxel.
     const double skin = this->SkinDistance(p, -6.0 - out.HalfWidth);
     double air = -skin;
@@ -270,11 +293,12 @@ struct HeadModel
     out.Add(air, hu::Air);
     out.Add(-2.5 - skin, hu::Skin);
     out.Add(-6.0 - skin, hu::Fat);
-    if (out.Full())
-    {
-      return out.Finish(0.0);
-    }
+  }
 
+  // Teeth, eyes, air spaces.
+  void FaceSoftParts(const double p[3], Composer& out) const
+  {
+    const double x = p[0], y = p[1], z = p[2];
     // Dental arches: upper and lower rows of teeth on a U, meeting at z = -60.5. The position
     // along the arch is a pseudo-angle (no atan2: it must be bit-exact); 16 teeth per row.
     if (y < -25.0 && z > -74.0 && z < -46.0)
@@ -319,11 +343,11 @@ struct HeadModel
     out.Add(std::max(EllipseDistance(x, y, 0.0, -14.0, 11.0, 6.0), std::fabs(z + 60.0) - 40.0),
       hu::SinusAir); // oropharynx
     out.Add(std::max(EllipseDistance(x, y, 0.0, -16.0, 8.0, 8.0), z + 100.0), hu::SinusAir);
-    if (out.Full())
-    {
-      return out.Finish(0.0);
-    }
+  }
 
+  void Vault(const double p[3], Composer& out) const
+  {
+    const double x = p[0], y = p[1], z = p[2];
     // Cranial vault: cortical tables around the diploe, thicker towards the base; the skull
     // base plate (thin over the orbits, thick at the back) with the foramen magnum; the brain.
     const double outer = EllipsoidDistance(p, this->SkullOuter);
@@ -356,11 +380,12 @@ struct HeadModel
     // Brainstem through the foramen magnum.
     out.Add(std::max(EllipseDistance(x, y, 0.0, 20.0, 11.0, 11.0), std::max(-55.0 - z, z - base)),
       hu::White + 3.0);
-    if (out.Full())
-    {
-      return out.Finish(0.0);
-    }
+  }
 
+  void FaceBones(const double p[3], Composer& out) const
+  {
+    const double x = p[0], y = p[1], z = p[2];
+    const double base = SkullBase(y);
     // Orbits: fat around the eye, bony walls open at the front.
     for (const Ellipsoid& o : this->Orbits)
     {
@@ -415,7 +440,11 @@ struct HeadModel
         out.Add(EllipsoidDistance(p, r), hu::Mandible);
       }
     }
+  }
 
+  void Spine(const double p[3], Composer& out) const
+  {
+    const double x = p[0], y = p[1], z = p[2];
     // Cervical spine: cord in the canal, posterior arch, vertebral bodies with discs.
     if (z < -40.0 + out.HalfWidth)
     {
@@ -431,7 +460,6 @@ struct HeadModel
       out.Add(std::max(body, -1.5 - body), hu::Vertebra);
       out.Add(body, hu::Cancellous);
     }
-    return out.Finish(hu::Muscle);
   }
 };
 
