@@ -8,6 +8,7 @@
 #include "GL/FloatTexels.h"
 #include "GL/FramebufferCopy.h"
 #include "LightingUniforms.h"
+#include "PassFrame.h"
 #include "SurfaceSet.h"
 #include "ShaderComposer.h"
 #include "Translucency/TranslucentLayers.h"
@@ -48,7 +49,6 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <optional>
 #include <set>
 
 namespace adapter = deepshadow::adapter;
@@ -217,18 +217,9 @@ public:
 
   std::string LastSource;
 
-  // vtkDeepShadowPass's early call: prepare only, and what mesh receivers read then.
+  // vtkDeepShadowPass's early call: prepare only (what mesh receivers read goes to its frame).
   bool PrepareOnly = false;
   bool KeepPasses = false;
-  std::optional<deepshadow::ShadowContext> Receivers;
-
-  // vtkDeepShadowPass's translucent layers for this frame.
-  const deepshadow::TranslucentLayers* Layers = nullptr;
-  // vtkDeepShadowPass's grid of what the other volumes cast onto this one, for this frame.
-  const deepshadow::OtherVolumeShadows* Others = nullptr;
-  // vtkDeepShadowPass's segments this volume is drawn into instead of the screen, this frame.
-  deepshadow::VolumeSegments* Segments = nullptr;
-  int SegmentGuest = 0;
 
   void Release(vtkWindow* window)
   {
@@ -267,19 +258,11 @@ public:
     auto surfaces = std::move(this->Surfaces);
     // What the pass set for this frame survives a data change inside it.
     const bool prepareOnly = this->PrepareOnly;
-    const deepshadow::TranslucentLayers* layers = this->Layers;
-    const deepshadow::OtherVolumeShadows* others = this->Others;
-    deepshadow::VolumeSegments* segments = this->Segments;
-    const int segmentGuest = this->SegmentGuest;
     *this = Internals();
     this->LastSource = lastSource;
     this->Bounds = std::move(bounds);
     this->Surfaces = std::move(surfaces);
     this->PrepareOnly = prepareOnly;
-    this->Layers = layers;
-    this->Others = others;
-    this->Segments = segments;
-    this->SegmentGuest = segmentGuest;
   }
 };
 
@@ -538,13 +521,18 @@ const deepshadow::ShadowContext* vtkDeepShadowVolumeMapper::PrepareShadows(
   vtkRenderer* renderer, vtkVolume* volume)
 {
   Internals& impl = *this->Impl;
-  impl.Receivers.reset();
+  if (!this->Frame)
+  {
+    return nullptr;
+  }
+  this->Frame->Prepared.erase(this);
   impl.PrepareOnly = true;
   this->Render(renderer, volume);
   impl.PrepareOnly = false;
   // The frame's Render() keeps what this found to do in LastPasses.
   impl.KeepPasses = true;
-  return impl.Receivers ? &impl.Receivers.value() : nullptr;
+  const auto prepared = this->Frame->Prepared.find(this);
+  return prepared != this->Frame->Prepared.end() ? &prepared->second : nullptr;
 }
 
 void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
@@ -840,9 +828,9 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   if (impl.PrepareOnly)
   {
     // vtkDeepShadowPass: receivers drawn before the volume read the structures built now.
-    if (technique)
+    if (technique && this->Frame)
     {
-      impl.Receivers = context;
+      this->Frame->Prepared.insert_or_assign(this, context);
     }
     return;
   }
@@ -883,8 +871,10 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     }
   }
   // Shadows of the other volumes, when they cast any (a volume receives with a technique).
+  const deepshadow::OtherVolumeShadows* passOthers =
+    this->Frame ? this->Frame->OthersOnto(this) : nullptr;
   const deepshadow::OtherVolumeShadows* others =
-    technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
+    technique && passOthers && passOthers->Any() ? passOthers : nullptr;
   if (others)
   {
     features.insert({ "OtherVolumeShadows", "ShadowGrid" });
@@ -898,13 +888,16 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   {
     features.insert("OpaqueDepth");
   }
-  const deepshadow::TranslucentLayers* layers = impl.Layers;
+  const deepshadow::TranslucentLayers* layers =
+    this->Frame ? this->Frame->LayersFor(this) : nullptr;
   if (layers)
   {
     features.insert("TranslucentLayers");
     runtime["TranslucentLayers"] = layers->GetShaderFeature();
   }
-  deepshadow::VolumeSegments* segments = layers ? nullptr : impl.Segments;
+  int segmentGuest = 0;
+  deepshadow::VolumeSegments* segments =
+    layers || !this->Frame ? nullptr : this->Frame->SegmentsFor(volume, segmentGuest);
   if (segments)
   {
     features.insert("VolumeSegments");
@@ -1044,7 +1037,7 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     glEnable(GL_DEPTH_CLAMP);
     if (segments)
     {
-      segments->Begin(window, impl.SegmentGuest);
+      segments->Begin(window, segmentGuest);
     }
     glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
     if (segments)
@@ -1089,24 +1082,14 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
   ++this->RenderCount;
 }
 
-void vtkDeepShadowVolumeMapper::SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others)
+void vtkDeepShadowVolumeMapper::SetPassFrame(deepshadow::PassFrame* frame)
 {
-  this->Impl->Others = others;
-}
-
-void vtkDeepShadowVolumeMapper::SetTranslucentLayers(const deepshadow::TranslucentLayers* layers)
-{
-  this->Impl->Layers = layers;
-}
-
-void vtkDeepShadowVolumeMapper::SetVolumeSegments(deepshadow::VolumeSegments* segments, int guest)
-{
-  this->Impl->Segments = segments;
-  this->Impl->SegmentGuest = guest;
-}
-
-void vtkDeepShadowVolumeMapper::SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces)
-{
+  this->Frame = frame;
+  if (!frame)
+  {
+    return; // the casting surfaces stay until a frame replaces them
+  }
+  std::shared_ptr<const deepshadow::SurfaceSet> surfaces = frame->SurfacesFor(this);
   if (surfaces != this->Impl->Surfaces)
   {
     this->Impl->Surfaces = std::move(surfaces);
