@@ -103,64 +103,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     }
   }
 
-  // The casting meshes in world coordinates: gathered again only when one of them changed.
-  std::vector<double> key;
-  for (const auto& [actor, mapper] : meshes)
-  {
-    if (!mapper->GetCastShadows())
-    {
-      continue;
-    }
-    vtkPolyData* input = mapper->GetInput();
-    key.insert(key.end(), { static_cast<double>(reinterpret_cast<uintptr_t>(actor)),
-      static_cast<double>(mapper->GetMTime()), static_cast<double>(input ? input->GetMTime() : 0),
-      static_cast<double>(actor->GetProperty()->GetMTime()) });
-    const double* m = actor->GetMatrix()->GetData();
-    key.insert(key.end(), m, m + 16);
-  }
-  if (key != impl.SurfaceKey || (impl.Surfaces == nullptr) != key.empty())
-  {
-    impl.SurfaceKey = key;
-    impl.Surfaces.reset();
-    this->LastError.clear();
-    std::vector<deepshadow::SurfaceMesh> casting;
-    for (const auto& [actor, mapper] : meshes)
-    {
-      deepshadow::SurfaceMesh mesh;
-      std::string error;
-      if (!mapper->GetCastShadows())
-      {
-        continue;
-      }
-      if (mapper->GetSurfaceMesh(actor, mesh, error))
-      {
-        casting.push_back(std::move(mesh));
-      }
-      else
-      {
-        vtkWarningMacro("a mesh casts no shadow: " << error);
-      }
-    }
-    try
-    {
-      if (!casting.empty())
-      {
-        impl.Surfaces = std::make_shared<const deepshadow::SurfaceSet>(std::move(casting));
-        this->CastingMeshes = impl.Surfaces->GetSurfaceCount();
-      }
-      else
-      {
-        this->CastingMeshes = 0;
-      }
-    }
-    catch (const std::invalid_argument& e)
-    {
-      this->LastError = std::string("meshes cast no shadows: ") + e.what();
-      this->CastingMeshes = 0;
-      vtkErrorMacro(<< this->LastError);
-    }
-    ++this->SurfaceSetBuilds;
-  }
+  this->UpdateCastingSurfaces(meshes);
 
   // Every volume with a technique casts shadows onto the others and onto the meshes. The
   // first one is the meshes' shadow source and holds the casting meshes (so that they count
@@ -246,6 +189,69 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     entry.second->SetPassFrame(nullptr);
   }
   impl.Frame = deepshadow::PassFrame();
+}
+
+void vtkDeepShadowPass::UpdateCastingSurfaces(
+  const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes)
+{
+  Internals& impl = *this->Impl;
+  std::vector<double> key;
+  for (const auto& [actor, mapper] : meshes)
+  {
+    if (!mapper->GetCastShadows())
+    {
+      continue;
+    }
+    vtkPolyData* input = mapper->GetInput();
+    key.insert(key.end(), { static_cast<double>(reinterpret_cast<uintptr_t>(actor)),
+      static_cast<double>(mapper->GetMTime()), static_cast<double>(input ? input->GetMTime() : 0),
+      static_cast<double>(actor->GetProperty()->GetMTime()) });
+    const double* m = actor->GetMatrix()->GetData();
+    key.insert(key.end(), m, m + 16);
+  }
+  if (key != impl.SurfaceKey || (impl.Surfaces == nullptr) != key.empty())
+  {
+    impl.SurfaceKey = key;
+    impl.Surfaces.reset();
+    this->LastError.clear();
+    std::vector<deepshadow::SurfaceMesh> casting;
+    for (const auto& [actor, mapper] : meshes)
+    {
+      deepshadow::SurfaceMesh mesh;
+      std::string error;
+      if (!mapper->GetCastShadows())
+      {
+        continue;
+      }
+      if (mapper->GetSurfaceMesh(actor, mesh, error))
+      {
+        casting.push_back(std::move(mesh));
+      }
+      else
+      {
+        vtkWarningMacro("a mesh casts no shadow: " << error);
+      }
+    }
+    try
+    {
+      if (!casting.empty())
+      {
+        impl.Surfaces = std::make_shared<const deepshadow::SurfaceSet>(std::move(casting));
+        this->CastingMeshes = impl.Surfaces->GetSurfaceCount();
+      }
+      else
+      {
+        this->CastingMeshes = 0;
+      }
+    }
+    catch (const std::invalid_argument& e)
+    {
+      this->LastError = std::string("meshes cast no shadows: ") + e.what();
+      this->CastingMeshes = 0;
+      vtkErrorMacro(<< this->LastError);
+    }
+    ++this->SurfaceSetBuilds;
+  }
 }
 
 void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
