@@ -8,6 +8,7 @@
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -337,6 +338,41 @@ inline vtkSmartPointer<vtkImageData> MakeSmokeVolume(const glm::dvec3& centre)
       }
   return image;
 }
+
+/**
+ * A standard scene (vtkDeepShadowStandardScene) at a resolution scale in its own renderer:
+ * its volume drawn by a vtkDeepShadowVolumeMapper with the scene's property, seen by the
+ * scene's camera and, when `lit`, lit by a scene light from the scene's light direction. The
+ * test adds Renderer to its window.
+ */
+struct StandardSceneView
+{
+  vtkNew<vtkDeepShadowStandardScene> Scene;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkDeepShadowVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkLight> Light;
+
+  StandardSceneView(const std::string& name, double scale, bool lit)
+  {
+    this->Scene->SetScene(name);
+    this->Scene->SetResolutionScale(scale);
+    this->Mapper->SetInputData(this->Scene->GetVolume());
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Scene->GetVolumeProperty());
+    this->Renderer->AddVolume(this->Volume);
+    if (lit)
+    {
+      double direction[3];
+      this->Scene->GetLightDirection(direction);
+      this->Light->SetLightTypeToSceneLight();
+      this->Light->SetPosition(direction);
+      this->Light->SetFocalPoint(0.0, 0.0, 0.0);
+      this->Renderer->AddLight(this->Light);
+    }
+    this->Scene->ApplyCamera(this->Renderer->GetActiveCamera());
+  }
+};
 
 /**
  * The scene the shadow tests share: MakeShadowVolume() with a coloured transfer function,

@@ -9,20 +9,12 @@
 
 int TestEmptySpaceSkipping(int, char*[])
 {
-  vtkNew<vtkDeepShadowStandardScene> scene;
-  scene->SetScene("spheres");
-  scene->SetResolutionScale(0.5);
   vtkNew<vtkDeepShadowRenderWindow> window;
   window->SetSize(160, 160);
-  vtkNew<vtkRenderer> renderer;
+  deepshadow::testing::StandardSceneView view("spheres", 0.5, false);
+  vtkRenderer* renderer = view.Renderer;
+  vtkDeepShadowVolumeMapper* mapper = view.Mapper;
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(scene->GetVolume());
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(scene->GetVolumeProperty());
-  renderer->AddVolume(volume);
-  scene->ApplyCamera(renderer->GetActiveCamera());
   renderer->ResetCameraClippingRange();
 
   bool ok = true;

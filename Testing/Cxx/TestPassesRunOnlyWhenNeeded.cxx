@@ -60,28 +60,17 @@ int TestPassesRunOnlyWhenNeeded(int, char*[])
   bool ok = true;
   for (const std::string& name : vtkDeepShadowStandardScene::GetSceneNames())
   {
-    vtkNew<vtkDeepShadowStandardScene> source;
-    source->SetScene(name);
-    source->SetResolutionScale(0.25); // the passes do not depend on the size; the time does
     vtkNew<vtkDeepShadowRenderWindow> window;
     window->SetSize(48, 48);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    vtkNew<vtkDeepShadowVolumeMapper> mapper;
-    mapper->SetInputData(source->GetVolume());
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(source->GetVolumeProperty());
-    renderer->AddVolume(volume);
-    source->ApplyCamera(renderer->GetActiveCamera());
+    // The passes do not depend on the size; the time does.
+    deepshadow::testing::StandardSceneView view(name, 0.25, true);
+    vtkDeepShadowStandardScene* source = view.Scene;
+    vtkDeepShadowVolumeMapper* mapper = view.Mapper;
+    vtkLight* light = view.Light;
+    window->AddRenderer(view.Renderer);
     double direction[3];
     source->GetLightDirection(direction);
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(direction);
-    light->SetFocalPoint(0.0, 0.0, 0.0);
-    renderer->AddLight(light);
-    vtkCamera* camera = renderer->GetActiveCamera();
+    vtkCamera* camera = view.Renderer->GetActiveCamera();
 
     ok = ExpectPasses(name, "first frame, unshadowed", window, mapper,
            "volume-upload transfer-table occupancy ray-cast") && ok;

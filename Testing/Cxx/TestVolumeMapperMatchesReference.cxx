@@ -33,27 +33,12 @@ int TestVolumeMapperMatchesReference(int argc, char* argv[])
   bool ok = true;
   for (const std::string& name : vtkDeepShadowStandardScene::GetSceneNames())
   {
-    vtkNew<vtkDeepShadowStandardScene> scene;
-    scene->SetScene(name);
-    scene->SetResolutionScale(scales.at(name));
-    vtkNew<vtkRenderer> renderer;
+    deepshadow::testing::StandardSceneView view(name, scales.at(name), true);
+    vtkRenderer* renderer = view.Renderer;
+    vtkDeepShadowVolumeMapper* mapper = view.Mapper;
     renderer->SetBackground(0.08, 0.09, 0.12);
     window->GetRenderers()->RemoveAllItems();
     window->AddRenderer(renderer);
-    vtkNew<vtkDeepShadowVolumeMapper> mapper;
-    mapper->SetInputData(scene->GetVolume());
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(scene->GetVolumeProperty());
-    renderer->AddVolume(volume);
-    double direction[3];
-    scene->GetLightDirection(direction);
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetFocalPoint(0.0, 0.0, 0.0);
-    light->SetPosition(direction);
-    renderer->AddLight(light);
-    scene->ApplyCamera(renderer->GetActiveCamera());
     renderer->ResetCameraClippingRange();
 
     window->Render();

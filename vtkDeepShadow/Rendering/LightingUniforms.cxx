@@ -7,6 +7,21 @@
 namespace deepshadow
 {
 
+PackedLight PackLight(const Light& light)
+{
+  PackedLight packed;
+  packed.Positional = light.Positional ? 1 : 0;
+  packed.Position = glm::vec3(light.Position);
+  packed.Direction = glm::vec3(light.Positional ? glm::normalize(light.FocalPoint - light.Position)
+                                                : glm::normalize(light.Position - light.FocalPoint));
+  packed.Diffuse = glm::vec3(light.Diffuse);
+  packed.Specular = glm::vec3(light.Specular);
+  packed.Attenuation = glm::vec3(light.Attenuation);
+  packed.ConeCos = static_cast<float>(light.ConeCosine());
+  packed.Exponent = static_cast<float>(light.Exponent);
+  return packed;
+}
+
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,
   const Material& material)
 {
@@ -15,16 +30,15 @@ void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vt
   std::vector<float> coneCos, exponent;
   for (const Light& light : lights)
   {
-    // Directional: towards the light. Positional: the spot axis, from the light.
-    directions.emplace_back(light.Positional ? glm::normalize(light.FocalPoint - light.Position)
-                                             : glm::normalize(light.Position - light.FocalPoint));
-    positions.emplace_back(light.Position);
-    diffuse.emplace_back(light.Diffuse);
-    specular.emplace_back(light.Specular);
-    attenuation.emplace_back(light.Attenuation);
-    positional.push_back(light.Positional ? 1 : 0);
-    coneCos.push_back(static_cast<float>(light.ConeCosine())); // < -1: no cone
-    exponent.push_back(static_cast<float>(light.Exponent));
+    const PackedLight packed = PackLight(light);
+    positional.push_back(packed.Positional);
+    positions.push_back(packed.Position);
+    directions.push_back(packed.Direction);
+    diffuse.push_back(packed.Diffuse);
+    specular.push_back(packed.Specular);
+    attenuation.push_back(packed.Attenuation);
+    coneCos.push_back(packed.ConeCos);
+    exponent.push_back(packed.Exponent);
   }
   sink.Set("u_lightCount", static_cast<int>(lights.size()));
   sink.Set("u_lightPositional", positional);

@@ -7,12 +7,32 @@
 #include "OpticalModel.h"
 #include "Volume/ShadowContext.h"
 
+#include <glm/vec3.hpp>
+
 #include <vector>
 
 class vtkRenderer;
 
 namespace deepshadow
 {
+
+/**
+ * One light as the shaders take it: Lighting.glsl's u_light* arrays and the cached-shadow
+ * pass's u_light* uniforms read the same fields, packed here only.
+ */
+struct PackedLight
+{
+  int Positional = 0;
+  glm::vec3 Position{ 0.0f };
+  // Unit: towards a directional light; a positional light's spot axis, from the light.
+  glm::vec3 Direction{ 0.0f };
+  glm::vec3 Diffuse{ 0.0f };
+  glm::vec3 Specular{ 0.0f };
+  glm::vec3 Attenuation{ 0.0f };
+  float ConeCos = 0.0f; // < -1: no cone
+  float Exponent = 0.0f;
+};
+PackedLight PackLight(const Light& light);
 
 /** Lights in world space (in the order given), ambient light, two-sided lighting, material. */
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,

@@ -1,5 +1,6 @@
 #include "vtkDeepShadowPass.h"
 
+#include "PassFrame.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Volume/ShadowContext.h"
 #include "SurfaceSet.h"
@@ -30,8 +31,8 @@ class vtkDeepShadowPass::Internals
 public:
   std::vector<double> SurfaceKey;
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
-  std::vector<vtkDeepShadowPolyDataMapper*> Receivers;
-  std::vector<vtkDeepShadowVolumeMapper*> VolumeReceivers;
+  // What the mappers read this frame; empty between frames.
+  deepshadow::PassFrame Frame;
   deepshadow::TranslucentLayers Layers;
   std::string SegmentError; // the last one said (once per change)
 
@@ -102,7 +103,98 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     }
   }
 
-  // The casting meshes in world coordinates: gathered again only when one of them changed.
+  this->UpdateCastingSurfaces(meshes);
+
+  // Every volume with a technique casts shadows onto the others and onto the meshes. The
+  // first one is the meshes' shadow source and holds the casting meshes (so that they count
+  // once); the others reach each receiver through a grid (deepshadow::OtherVolumeShadows).
+  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> shadowing;
+  for (const auto& entry : volumes)
+  {
+    if (entry.second->GetShadowTechnique())
+    {
+      shadowing.push_back(entry);
+    }
+  }
+  // One frame object for all our mappers, handed over now and taken back at the end. (A
+  // volume takes its casting surfaces from it at once: a replaced set marks it modified.)
+  impl.Frame = deepshadow::PassFrame();
+  impl.Frame.Surfaces = impl.Surfaces;
+  impl.Frame.SurfaceHolder = shadowing.empty() ? nullptr : shadowing.front().second;
+  for (const auto& entry : volumes)
+  {
+    entry.second->SetPassFrame(&impl.Frame);
+  }
+  for (const auto& entry : meshes)
+  {
+    entry.second->SetPassFrame(&impl.Frame);
+  }
+  std::vector<deepshadow::VolumeCaster> casters(shadowing.size());
+  if (!meshes.empty() || shadowing.size() > 1)
+  {
+    for (size_t v = 0; v < shadowing.size(); ++v)
+    {
+      casters[v].Context = shadowing[v].second->PrepareShadows(renderer, shadowing[v].first);
+      casters[v].Technique = shadowing[v].second->GetShadowTechnique();
+    }
+  }
+  impl.Frame.Source = casters.empty() ? nullptr : casters.front().Context;
+  impl.Frame.SourceTechnique = impl.Frame.Source ? casters.front().Technique : nullptr;
+  this->UpdateOtherVolumeShadows(renderer, shadowing, casters, meshes);
+
+  // Translucent meshes go into layers, and the volumes after the first into segments, when
+  // the first volume will merge them into its march.
+  const bool glWindow = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) != nullptr;
+  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
+  if (this->TranslucentLayers > 0 && !volumes.empty() && glWindow)
+  {
+    for (const auto& entry : meshes)
+    {
+      if (entry.first->HasTranslucentPolygonalGeometry())
+      {
+        peeled.push_back(entry);
+      }
+    }
+  }
+  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> guests;
+  if (this->VolumeSegments > 0 && glWindow && volumes.size() > 1)
+  {
+    guests.assign(volumes.begin() + 1, volumes.end());
+  }
+  this->PeeledLayers = 0;
+  this->TranslucentLayersOverflowed = false;
+  this->MergedVolumes = 0;
+  if (peeled.empty() && guests.empty())
+  {
+    this->Superclass::Render(state);
+  }
+  else
+  {
+    this->RenderMerged(state, volumes.front().second, guests, peeled);
+  }
+  if (guests.empty())
+  {
+    impl.Layers.GetSegments().Release(renderer->GetRenderWindow());
+  }
+  this->VolumeSegmentBytes = impl.Layers.GetSegments().GetBytes();
+  this->TranslucentLayerBytes = impl.Layers.GetBytes();
+
+  // The frame ends: the mappers let go of it, and it lets go of the contexts.
+  for (const auto& entry : volumes)
+  {
+    entry.second->SetPassFrame(nullptr);
+  }
+  for (const auto& entry : meshes)
+  {
+    entry.second->SetPassFrame(nullptr);
+  }
+  impl.Frame = deepshadow::PassFrame();
+}
+
+void vtkDeepShadowPass::UpdateCastingSurfaces(
+  const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes)
+{
+  Internals& impl = *this->Impl;
   std::vector<double> key;
   for (const auto& [actor, mapper] : meshes)
   {
@@ -160,90 +252,6 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
     }
     ++this->SurfaceSetBuilds;
   }
-
-  // Every volume with a technique casts shadows onto the others and onto the meshes. The
-  // first one is the meshes' shadow source and holds the casting meshes (so that they count
-  // once); the others reach each receiver through a grid (deepshadow::OtherVolumeShadows).
-  // (Set once per volume: a replaced set marks the mapper modified.)
-  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> shadowing;
-  for (const auto& entry : volumes)
-  {
-    const bool source = shadowing.empty() && entry.second->GetShadowTechnique();
-    entry.second->SetCastingSurfaces(source ? impl.Surfaces : nullptr);
-    if (entry.second->GetShadowTechnique())
-    {
-      shadowing.push_back(entry);
-    }
-  }
-  std::vector<deepshadow::VolumeCaster> casters(shadowing.size());
-  if (!meshes.empty() || shadowing.size() > 1)
-  {
-    for (size_t v = 0; v < shadowing.size(); ++v)
-    {
-      casters[v].Context = shadowing[v].second->PrepareShadows(renderer, shadowing[v].first);
-      casters[v].Technique = shadowing[v].second->GetShadowTechnique();
-    }
-  }
-  const deepshadow::ShadowContext* source = casters.empty() ? nullptr : casters.front().Context;
-  vtkDeepShadowTechnique* technique = source ? casters.front().Technique : nullptr;
-  for (const auto& [actor, mapper] : meshes)
-  {
-    mapper->SetShadowSource(source, technique);
-  }
-  impl.Receivers.clear();
-  for (const auto& entry : meshes)
-  {
-    impl.Receivers.push_back(entry.second);
-  }
-  this->UpdateOtherVolumeShadows(renderer, shadowing, casters, meshes);
-
-  // Translucent meshes go into layers, and the volumes after the first into segments, when
-  // the first volume will merge them into its march.
-  const bool glWindow = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) != nullptr;
-  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
-  if (this->TranslucentLayers > 0 && !volumes.empty() && glWindow)
-  {
-    for (const auto& entry : meshes)
-    {
-      if (entry.first->HasTranslucentPolygonalGeometry())
-      {
-        peeled.push_back(entry);
-      }
-    }
-  }
-  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> guests;
-  if (this->VolumeSegments > 0 && glWindow && volumes.size() > 1)
-  {
-    guests.assign(volumes.begin() + 1, volumes.end());
-  }
-  this->PeeledLayers = 0;
-  this->TranslucentLayersOverflowed = false;
-  this->MergedVolumes = 0;
-  if (peeled.empty() && guests.empty())
-  {
-    this->Superclass::Render(state);
-  }
-  else
-  {
-    this->RenderMerged(state, volumes.front().second, guests, peeled);
-  }
-  if (guests.empty())
-  {
-    impl.Layers.GetSegments().Release(renderer->GetRenderWindow());
-  }
-  this->VolumeSegmentBytes = impl.Layers.GetSegments().GetBytes();
-  this->TranslucentLayerBytes = impl.Layers.GetBytes();
-
-  // The source and the grids are set for this frame only.
-  for (vtkDeepShadowPolyDataMapper* mapper : impl.Receivers)
-  {
-    mapper->SetShadowSource(nullptr, nullptr);
-    mapper->SetOtherVolumeShadows(nullptr);
-  }
-  for (vtkDeepShadowVolumeMapper* mapper : impl.VolumeReceivers)
-  {
-    mapper->SetOtherVolumeShadows(nullptr);
-  }
 }
 
 void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
@@ -253,7 +261,6 @@ void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
 {
   Internals& impl = *this->Impl;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  impl.VolumeReceivers.clear();
   this->OtherVolumeShadowBytes = 0;
   // Casters other than `skip` whose structures are ready.
   const auto othersThan = [&casters](size_t skip) {
@@ -297,10 +304,9 @@ void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
       impl.VolumeGrids.erase(found);
     }
     const deepshadow::ShadowContext& context = *casters[v].Context;
-    mapper->SetOtherVolumeShadows(update(grid,
+    impl.Frame.Others[mapper] = update(grid,
       deepshadow::GridFrame::OverVolume(context.Dims, context.IndexToWorld, this->OtherVolumeShadowSize),
-      others));
-    impl.VolumeReceivers.push_back(mapper);
+      others);
   }
   const std::vector<deepshadow::VolumeCaster> others = othersThan(0); // the source aside
   for (const auto& [actor, mapper] : meshes)
@@ -333,7 +339,7 @@ void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,
       entry.Frame = deepshadow::GridFrame::OverBox(lo, hi, this->OtherVolumeShadowSize);
       entry.Key = key;
     }
-    mapper->SetOtherVolumeShadows(update(entry.Grid, entry.Frame, others));
+    impl.Frame.Others[mapper] = update(entry.Grid, entry.Frame, others);
   }
   // Receivers gone from the scene give their grids back.
   impl.ReleaseGrids(window);
@@ -389,11 +395,15 @@ void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowV
   {
     impl.SegmentError.clear();
     segments.Clear(window); // a guest not drawn this frame (bad input) leaves no old picture
+    // The guests are drawn here only (into their slices); the loop below skips them.
+    impl.Frame.Segments = &segments;
     for (size_t g = 0; g < guests.size(); ++g)
     {
-      guests[g].second->SetVolumeSegments(&segments, static_cast<int>(g));
-      this->NumberOfRenderedProps += guests[g].first->RenderVolumetricGeometry(renderer);
-      guests[g].second->SetVolumeSegments(nullptr, 0);
+      impl.Frame.Guests[guests[g].first] = static_cast<int>(g);
+    }
+    for (const auto& guest : guests)
+    {
+      this->NumberOfRenderedProps += guest.first->RenderVolumetricGeometry(renderer);
     }
     this->MergedVolumes = static_cast<int>(guests.size());
   }
@@ -415,7 +425,8 @@ void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowV
 
   // The merging volume, and volumes that are not ours, as vtkDefaultPass draws them; the
   // merged ones are drawn already.
-  merging->SetTranslucentLayers(&impl.Layers);
+  impl.Frame.Merging = merging;
+  impl.Frame.Layers = &impl.Layers;
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = state->GetPropArray()[i];
@@ -424,7 +435,6 @@ void vtkDeepShadowPass::RenderMerged(const vtkRenderState* state, vtkDeepShadowV
       this->NumberOfRenderedProps += prop->RenderVolumetricGeometry(renderer);
     }
   }
-  merging->SetTranslucentLayers(nullptr);
   this->RenderOverlay(state);
 }
 

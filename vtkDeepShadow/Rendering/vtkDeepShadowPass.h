@@ -5,9 +5,9 @@
  * Set it on a renderer (renderer->SetPass(pass)) as VTK's render passes are. Each frame it
  * gathers the visible casters: volumes drawn by vtkDeepShadowVolumeMapper and meshes drawn by
  * vtkDeepShadowPolyDataMapper with CastShadows on. The casting meshes, in world coordinates,
- * go to every such volume (vtkDeepShadowVolumeMapper::SetCastingSurfaces) and into its
- * technique's structure of each light; they are gathered again only when a mesh, its
- * property, its actor's placement or the set of casting meshes changed (GetSurfaceSetBuilds).
+ * go to every such volume and into its technique's structure of each light; they are
+ * gathered again only when a mesh, its property, its actor's placement or the set of casting
+ * meshes changed (GetSurfaceSetBuilds).
  * Every visible volume with a shadow technique casts shadows onto the other volumes with a
  * technique and onto the meshes with ReceiveShadows on: a light's visibility is the product
  * of every caster's (optical depths add along a light ray). The first such volume is the
@@ -17,7 +17,10 @@
  * node and light), filled by each caster's own lookup and rebuilt only when a caster, its
  * structures, a light or the receiver's placement changed (GetOtherVolumeShadowBuilds). All
  * shadow structures are brought up to date before anything is drawn; then the props are
- * drawn as vtkDefaultPass draws them (opaque, translucent, volumes, overlay).
+ * drawn as vtkDefaultPass draws them (opaque, translucent, volumes, overlay). What the pass
+ * gives its mappers for a frame (casting surfaces, shadow source, other volumes' grids,
+ * layers, segments) is one object (PassFrame.h), handed to each mapper when the frame starts
+ * and taken back when it ends.
  *
  * Along each view ray, volumes and translucent meshes are composited in depth order: the
  * translucent meshes are peeled into TranslucentLayers layers (depth peeling); each visible
@@ -139,6 +142,9 @@ protected:
   void RenderMerged(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
     const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& guests,
     const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled);
+  /** The casting meshes in world coordinates, gathered again only when one of them changed. */
+  void UpdateCastingSurfaces(
+    const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes);
   /** Brings each receiver's grid of the other volumes' shadows up to date and hands it over. */
   void UpdateOtherVolumeShadows(vtkRenderer* renderer,
     const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& shadowing,

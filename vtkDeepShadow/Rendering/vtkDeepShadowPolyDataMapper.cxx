@@ -2,6 +2,7 @@
 
 #include "CoreAdapter.h"
 #include "LightingUniforms.h"
+#include "PassFrame.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Volume/ShadowContext.h"
@@ -79,10 +80,8 @@ public:
   bool Uploaded = false;
   std::string LastSource;
 
-  const deepshadow::ShadowContext* Context = nullptr;
-  vtkDeepShadowTechnique* Technique = nullptr;
+  const deepshadow::PassFrame* Frame = nullptr;
   const deepshadow::PeelStep* Peel = nullptr;
-  const deepshadow::OtherVolumeShadows* Others = nullptr;
 
   /**
    * Triangles, normals and colours of the input, rebuilt only when something they depend on
@@ -106,16 +105,9 @@ void vtkDeepShadowPolyDataMapper::SetPeelStep(const deepshadow::PeelStep* step)
   this->Impl->Peel = step;
 }
 
-void vtkDeepShadowPolyDataMapper::SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others)
+void vtkDeepShadowPolyDataMapper::SetPassFrame(const deepshadow::PassFrame* frame)
 {
-  this->Impl->Others = others;
-}
-
-void vtkDeepShadowPolyDataMapper::SetShadowSource(
-  const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique)
-{
-  this->Impl->Context = context;
-  this->Impl->Technique = context ? technique : nullptr;
+  this->Impl->Frame = frame;
 }
 
 namespace
@@ -345,8 +337,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   }
 
   // Shader: lit always; shadowed when the pass gave a source and the mesh receives.
-  const deepshadow::ShadowContext* context = this->ReceiveShadows ? impl.Context : nullptr;
-  vtkDeepShadowTechnique* technique = context ? impl.Technique : nullptr;
+  const deepshadow::PassFrame* frame = impl.Frame;
+  const deepshadow::ShadowContext* context =
+    this->ReceiveShadows && frame ? frame->Source : nullptr;
+  vtkDeepShadowTechnique* technique = context ? frame->SourceTechnique : nullptr;
   std::set<std::string> features{ "Lighting", "Phong", "MeshNormal" };
   std::map<std::string, deepshadow::ShaderFeature> runtime;
   if (technique)
@@ -364,8 +358,9 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
     }
   }
   // What the other shadowing volumes cast, on a grid over this mesh.
+  const deepshadow::OtherVolumeShadows* passOthers = frame ? frame->OthersOnto(this) : nullptr;
   const deepshadow::OtherVolumeShadows* others =
-    technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
+    technique && passOthers && passOthers->Any() ? passOthers : nullptr;
   if (others)
   {
     features.insert({ "OtherVolumeShadows", "ShadowGrid" });

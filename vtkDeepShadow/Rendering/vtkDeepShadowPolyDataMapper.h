@@ -36,12 +36,10 @@
 
 namespace deepshadow
 {
-class OtherVolumeShadows;
+struct PassFrame;
 struct PeelStep;
-struct ShadowContext;
 struct SurfaceMesh;
 }
-class vtkDeepShadowTechnique;
 class vtkPolyData;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPolyDataMapper : public vtkPolyDataMapper
@@ -119,10 +117,12 @@ public:
   ///@}
 
   // ---- Used by vtkDeepShadowPass, not by applications ----
-  /** Where this frame's shadows come from (null: lit without shadows). */
-  void SetShadowSource(const deepshadow::ShadowContext* context, vtkDeepShadowTechnique* technique);
-  /** What the scene's other shadowing volumes cast onto this mesh this frame (null: none). */
-  void SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others);
+  /**
+   * What the pass hands the mesh for one frame (null after it): where its shadows come from
+   * (the scene's shadow source; none: lit without shadows) and what the scene's other
+   * shadowing volumes cast onto it.
+   */
+  void SetPassFrame(const deepshadow::PassFrame* frame);
   /** While set, Render draws one layer of depth peeling (see Translucency/TranslucentLayers.h). */
   void SetPeelStep(const deepshadow::PeelStep* step);
 

@@ -2,6 +2,7 @@
 
 #include "CoreAdapter.h"
 #include "GL/FramebufferCopy.h"
+#include "PassFrame.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "SurfaceSet.h"
@@ -42,7 +43,6 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
-#include <optional>
 
 namespace adapter = deepshadow::adapter;
 
@@ -135,18 +135,8 @@ public:
 
   std::string LastSource;
 
-  // vtkDeepShadowPass prepared this frame (PrepareShadows): Render() keeps the passes it ran,
-  // and mesh receivers read Receivers.
+  // vtkDeepShadowPass prepared this frame (PrepareShadows): Render() keeps the passes it ran.
   bool PreparedByPass = false;
-  std::optional<deepshadow::ShadowContext> Receivers;
-
-  // vtkDeepShadowPass's translucent layers for this frame.
-  const deepshadow::TranslucentLayers* Layers = nullptr;
-  // vtkDeepShadowPass's grid of what the other volumes cast onto this one, for this frame.
-  const deepshadow::OtherVolumeShadows* Others = nullptr;
-  // vtkDeepShadowPass's segments this volume is drawn into instead of the screen, this frame.
-  deepshadow::VolumeSegments* Segments = nullptr;
-  int SegmentGuest = 0;
 
   // The GPU resources and what was made from them; what was set (bounds, surfaces, the pass's
   // state, the composed source) stays.
@@ -161,7 +151,6 @@ public:
     this->Box.Release();
     this->EffectiveStep = 0.0;
     this->PreparedByPass = false;
-    this->Receivers.reset();
   }
 };
 
@@ -470,17 +459,22 @@ const deepshadow::ShadowContext* vtkDeepShadowVolumeMapper::PrepareShadows(
   vtkRenderer* renderer, vtkVolume* volume)
 {
   Internals& impl = *this->Impl;
-  impl.Receivers.reset();
+  if (!this->Frame)
+  {
+    return nullptr;
+  }
+  this->Frame->Prepared.erase(this);
   this->BeginFrame();
   deepshadow::RayCastFrame frame;
   // Receivers drawn before the volume read the structures built now.
   if (this->Prepare(renderer, volume, frame) && frame.Technique)
   {
-    impl.Receivers = frame.Context;
+    this->Frame->Prepared.insert_or_assign(this, frame.Context);
   }
   // The frame's Render() keeps what this found to do in LastPasses.
   impl.PreparedByPass = true;
-  return impl.Receivers ? &impl.Receivers.value() : nullptr;
+  const auto prepared = this->Frame->Prepared.find(this);
+  return prepared != this->Frame->Prepared.end() ? &prepared->second : nullptr;
 }
 
 bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume, deepshadow::RayCastFrame& frame)
@@ -538,6 +532,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
 
   // Viewport, camera, lights, and the volume as the GPU holds it.
   frame.Renderer = renderer;
+  frame.Volume = volume;
   frame.Property = property;
   renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X0, &frame.Y0);
   frame.View = adapter::MakeCamera(renderer);
@@ -646,9 +641,13 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   frame.TerminationOpacity = static_cast<float>(this->TerminationOpacity);
   frame.Opaque = HasOpaqueGeometry(frame.Renderer) ? &impl.Opaque : nullptr;
   // Shadows of the other volumes, when they cast any (a volume receives with a technique).
-  frame.Others = frame.Technique && impl.Others && impl.Others->Any() ? impl.Others : nullptr;
-  frame.Layers = impl.Layers;
-  frame.Segments = impl.Layers ? nullptr : impl.Segments;
+  const deepshadow::OtherVolumeShadows* others =
+    this->Frame ? this->Frame->OthersOnto(this) : nullptr;
+  frame.Others = frame.Technique && others && others->Any() ? others : nullptr;
+  frame.Layers = this->Frame ? this->Frame->LayersFor(this) : nullptr;
+  frame.Segments = frame.Layers || !this->Frame
+    ? nullptr
+    : this->Frame->SegmentsFor(frame.Volume, frame.SegmentGuest);
 
   // The shader for the features in use.
   const deepshadow::ComposedFeatures features = deepshadow::ComposeVolumeFeatures(frame);
@@ -679,7 +678,7 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   std::function<void()> begin, end;
   if (frame.Segments)
   {
-    begin = [&] { frame.Segments->Begin(window, impl.SegmentGuest); };
+    begin = [&] { frame.Segments->Begin(window, frame.SegmentGuest); };
     end = [&] { frame.Segments->End(window); };
   }
   // With layers the shader composited the opaque image itself; segments are not colours.
@@ -691,24 +690,14 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   return true;
 }
 
-void vtkDeepShadowVolumeMapper::SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others)
+void vtkDeepShadowVolumeMapper::SetPassFrame(deepshadow::PassFrame* frame)
 {
-  this->Impl->Others = others;
-}
-
-void vtkDeepShadowVolumeMapper::SetTranslucentLayers(const deepshadow::TranslucentLayers* layers)
-{
-  this->Impl->Layers = layers;
-}
-
-void vtkDeepShadowVolumeMapper::SetVolumeSegments(deepshadow::VolumeSegments* segments, int guest)
-{
-  this->Impl->Segments = segments;
-  this->Impl->SegmentGuest = guest;
-}
-
-void vtkDeepShadowVolumeMapper::SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces)
-{
+  this->Frame = frame;
+  if (!frame)
+  {
+    return; // the casting surfaces stay until a frame replaces them
+  }
+  std::shared_ptr<const deepshadow::SurfaceSet> surfaces = frame->SurfacesFor(this);
   if (surfaces != this->Impl->Surfaces)
   {
     this->Impl->Surfaces = std::move(surfaces);

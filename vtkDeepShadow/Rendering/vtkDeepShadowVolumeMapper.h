@@ -48,10 +48,7 @@
 class vtkDeepShadowTechnique;
 namespace deepshadow
 {
-class OtherVolumeShadows;
-class SurfaceSet;
-class TranslucentLayers;
-class VolumeSegments;
+struct PassFrame;
 struct RayCastFrame;
 struct ShadowContext;
 }
@@ -177,44 +174,34 @@ public:
   ///@}
 
   /**
-   * Surfaces that cast shadows onto the volume (and onto whatever receives the volume's
-   * shadows), in world coordinates: vtkDeepShadowPass sets them from the scene's casting
-   * meshes; null (the default) for none. Every technique meets them on its light rays and
-   * feelers: an opaque surface stops the light, a translucent one lets through its
-   * transmission (deepshadow::SurfaceTransmission). The set is uploaded again only when it is
-   * replaced or the volume moves (counter SurfaceUploads, pass "surface-upload"), and shadow
-   * structures are rebuilt then only.
+   * Used by vtkDeepShadowPass: what it hands the volume for one frame (deepshadow::PassFrame),
+   * set when the frame starts and null after it. From it the volume takes:
+   * - the surfaces that cast shadows onto it (and onto whatever receives its shadows), in
+   *   world coordinates, the scene's casting meshes; every technique meets them on its light
+   *   rays and feelers: an opaque surface stops the light, a translucent one lets through its
+   *   transmission (deepshadow::SurfaceTransmission). The set stays with the mapper after the
+   *   frame; a replaced set marks it modified. It is uploaded again only when it is replaced
+   *   or the volume moves (counter SurfaceUploads, pass "surface-upload"), and shadow
+   *   structures are rebuilt then only;
+   * - what the scene's other shadowing volumes cast onto this one, on a grid over its box,
+   *   multiplied into each light's visibility (with a technique only: a volume receives
+   *   shadows when it has one);
+   * - the peeled layers of the translucent meshes, which the ray caster composites at their
+   *   depths along each view ray, with the opaque image behind them (the volume's pixels are
+   *   replaced, not blended);
+   * - the segments to draw the volume into, as a guest (pieces along each view ray that the
+   *   merging volume sorts in among its own samples; pass "ray-cast-segments"), instead of
+   *   onto the screen.
    */
-  void SetCastingSurfaces(std::shared_ptr<const deepshadow::SurfaceSet> surfaces);
+  void SetPassFrame(deepshadow::PassFrame* frame);
 
   /**
-   * Used by vtkDeepShadowPass before opaque geometry is drawn: brings the volume's data,
-   * tables and the technique's shadow structures up to date without drawing. Returns what
-   * mesh receivers read to look the structures up (null without a working technique); valid
-   * until the next frame. The frame's Render() then finds nothing left to build.
+   * Used by vtkDeepShadowPass before opaque geometry is drawn, with its frame set: brings the
+   * volume's data, tables and the technique's shadow structures up to date without drawing.
+   * Returns what mesh receivers read to look the structures up, kept in the frame (null
+   * without a working technique). The frame's Render() then finds nothing left to build.
    */
   const deepshadow::ShadowContext* PrepareShadows(vtkRenderer* renderer, vtkVolume* volume);
-
-  /**
-   * Used by vtkDeepShadowPass for one frame: what the scene's other shadowing volumes cast
-   * onto this one, on a grid over its box, multiplied into each light's visibility (with a
-   * technique only: a volume receives shadows when it has one). Null: none.
-   */
-  void SetOtherVolumeShadows(const deepshadow::OtherVolumeShadows* others);
-
-  /**
-   * Used by vtkDeepShadowPass for one frame: the peeled layers of the translucent meshes,
-   * which the ray caster composites at their depths along each view ray, with the opaque
-   * image behind them (the volume's pixels are replaced, not blended). Null: none.
-   */
-  void SetTranslucentLayers(const deepshadow::TranslucentLayers* layers);
-
-  /**
-   * Used by vtkDeepShadowPass for one frame: draw the volume, as guest `guest`, into
-   * `segments` (pieces along each view ray that the merging volume sorts in among its own
-   * samples; pass "ray-cast-segments") instead of onto the screen. Null: onto the screen.
-   */
-  void SetVolumeSegments(deepshadow::VolumeSegments* segments, int guest);
 
   /** The input as image data (only vtkImageData inputs are accepted). */
   vtkImageData* GetImageInput();
@@ -328,6 +315,8 @@ private:
 
   class Internals;
   std::unique_ptr<Internals> Impl;
+  // vtkDeepShadowPass's frame while it draws (outside Internals: a release keeps it).
+  deepshadow::PassFrame* Frame = nullptr;
 };
 
 #endif

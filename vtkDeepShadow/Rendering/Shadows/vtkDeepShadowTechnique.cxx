@@ -13,6 +13,7 @@
 
 #include "CoreAdapter.h"
 #include "GL/ComputeProgram.h"
+#include "LightingUniforms.h"
 #include "ShaderComposer.h"
 
 #include "vtkOpenGLRenderWindow.h"
@@ -360,9 +361,12 @@ bool vtkDeepShadowTechnique::RunGridPass(deepshadow::ComputeProgram& program,
     {
       program.Set("u_firstCaster", (storeMask >> slab) & 1);
     }
-    program.Set("u_lightPositional", light.Positional ? 1 : 0);
-    program.Set("u_lightPosition", glm::vec3(light.Position));
-    program.Set("u_lightToward", glm::vec3(glm::normalize(light.Position - light.FocalPoint)));
+    // The shader reads u_lightToward for directional lights only (towards the light);
+    // positional ones aim from u_lightPosition.
+    const deepshadow::PackedLight packed = deepshadow::PackLight(light);
+    program.Set("u_lightPositional", packed.Positional);
+    program.Set("u_lightPosition", packed.Position);
+    program.Set("u_lightToward", packed.Direction);
     program.Dispatch(frame.Dims, glm::ivec3(4));
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, format);

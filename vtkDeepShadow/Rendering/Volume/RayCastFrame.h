@@ -9,6 +9,7 @@
 class vtkDeepShadowTechnique;
 class vtkRenderer;
 class vtkTextureObject;
+class vtkVolume;
 class vtkVolumeProperty;
 
 namespace deepshadow
@@ -22,6 +23,7 @@ struct RayCastFrame
 {
   ShadowContext Context;
   vtkRenderer* Renderer = nullptr;
+  vtkVolume* Volume = nullptr;
   vtkVolumeProperty* Property = nullptr;
   Camera View;
   int X0 = 0, Y0 = 0, Width = 0, Height = 0; // the renderer's tile
@@ -40,6 +42,7 @@ struct RayCastFrame
   const OtherVolumeShadows* Others = nullptr; // null: none cast, or no technique receives them
   const TranslucentLayers* Layers = nullptr;  // null: no translucent meshes
   VolumeSegments* Segments = nullptr;         // drawn into, not onto the screen (not with Layers)
+  int SegmentGuest = 0;                       // this volume's slice of Segments
 };
 
 }
