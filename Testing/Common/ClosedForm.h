@@ -1,5 +1,5 @@
-// Closed-form answers for homogeneous media, shared by the CPU (Testing/Unit) and GPU
-// (Testing/Cxx) tests: what light gets through a body of known shape and opacity, computed
+// Closed-form answers for homogeneous media, shared by the CPU (Core) and GPU
+// (Rendering) tests: what light gets through a body of known shape and opacity, computed
 // from geometry alone and never from a renderer of this project, so that a mistake a
 // technique shares with its twin still fails.
 //

@@ -1,5 +1,5 @@
-// Closed-form scenes shared by the CPU (Testing/Unit/TestClosedFormShadows.cxx) and GPU
-// (Testing/Cxx/TestClosedFormShadowsGPU.cxx) tests: homogeneous bodies in volume grids with
+// Closed-form scenes shared by the CPU (Core: TestClosedFormShadows.cxx) and GPU
+// (Rendering: TestClosedFormShadowsGPU.cxx) tests: homogeneous bodies in volume grids with
 // their Beer-Lambert answers (ClosedForm.h), the techniques by name, and Judge(), which holds
 // one answer against the closed form within what the technique is allowed, each term with its
 // reason: the march's sampling (a path covers whole samples), where the grid puts the body's
@@ -13,12 +13,12 @@
 
 #include "ClosedForm.h"
 
-#include "LightSpace.h"
-#include "Shadows.h"
-#include "StochasticShadowMap.h"
-#include "SurfaceSet.h"
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/Shadows/LightSpace.h"
+#include "Core/Shadows.h"
+#include "Core/Shadows/StochasticShadowMap.h"
+#include "Core/Geometry/SurfaceSet.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

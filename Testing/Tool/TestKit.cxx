@@ -10,7 +10,7 @@
 //                                       RMSE (linear RGB in [0, 1]) breaks it
 #include "SeedFiles.h"
 
-#include "Image.h"
+#include "Core/Image.h"
 
 #include "vtkImageData.h"
 #include "vtkNew.h"

@@ -11,7 +11,7 @@
 #ifndef deepshadow_csg_CGALBoolean_h
 #define deepshadow_csg_CGALBoolean_h
 
-#include "CSGExpression.h" // For CSGNode, CSGOperation
+#include "Core/Bound/CSGExpression.h" // For CSGNode, CSGOperation
 
 #include "vtkType.h" // For vtkIdType
 

@@ -1,7 +1,7 @@
 #include "vtkDeepShadowCSGFilter.h"
 
 #include "CGALBoolean.h"
-#include "CSGExpression.h"
+#include "Core/Bound/CSGExpression.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkInformation.h"

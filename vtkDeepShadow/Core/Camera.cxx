@@ -1,4 +1,4 @@
-#include "Camera.h"
+#include "Core/Camera.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>

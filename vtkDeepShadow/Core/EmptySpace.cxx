@@ -1,4 +1,4 @@
-#include "EmptySpace.h"
+#include "Core/EmptySpace.h"
 
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>

@@ -5,8 +5,8 @@
 #ifndef deepshadow_EmptySpace_h
 #define deepshadow_EmptySpace_h
 
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec3.hpp>

@@ -1,4 +1,4 @@
-#include "Image.h"
+#include "Core/Image.h"
 
 #include <algorithm>
 #include <cmath>

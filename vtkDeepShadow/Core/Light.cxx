@@ -1,4 +1,4 @@
-#include "Light.h"
+#include "Core/Light.h"
 
 #include <glm/geometric.hpp>
 

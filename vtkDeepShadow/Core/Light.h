@@ -4,7 +4,7 @@
 #ifndef deepshadow_Light_h
 #define deepshadow_Light_h
 
-#include "OpticalModel.h"
+#include "Core/OpticalModel.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec3.hpp>

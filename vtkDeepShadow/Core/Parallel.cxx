@@ -1,4 +1,4 @@
-#include "Parallel.h"
+#include "Core/Parallel.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,8 +1,8 @@
-#include "ReferenceRenderer.h"
+#include "Core/ReferenceRenderer.h"
 
-#include "Jitter.h"
-#include "Parallel.h"
-#include "ShadowGrid.h"
+#include "Core/Jitter.h"
+#include "Core/Parallel.h"
+#include "Core/Shadows/ShadowGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -32,16 +32,16 @@
 #ifndef deepshadow_ReferenceRenderer_h
 #define deepshadow_ReferenceRenderer_h
 
-#include "BoundRegion.h"
-#include "Camera.h"
-#include "Image.h"
-#include "Light.h"
-#include "OpticalModel.h"
-#include "Shadows.h"
-#include "SurfaceSet.h"
-#include "EmptySpace.h"
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/Bound/BoundRegion.h"
+#include "Core/Camera.h"
+#include "Core/Image.h"
+#include "Core/Light.h"
+#include "Core/OpticalModel.h"
+#include "Core/Shadows.h"
+#include "Core/Geometry/SurfaceSet.h"
+#include "Core/EmptySpace.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec4.hpp>

@@ -1,9 +1,9 @@
-#include "ShadowTechniques.h"
+#include "Core/ShadowTechniques.h"
 
-#include "DeepShadowMap.h"
-#include "OpacityLevels.h"
-#include "ShadowMap.h"
-#include "StochasticShadowMap.h"
+#include "Core/Shadows/DeepShadowMap.h"
+#include "Core/Shadows/OpacityLevels.h"
+#include "Core/Shadows/ShadowMap.h"
+#include "Core/Shadows/StochasticShadowMap.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #ifndef deepshadow_ShadowTechniques_h
 #define deepshadow_ShadowTechniques_h
 
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <cstdint>

@@ -1,13 +1,13 @@
-#include "Shadows.h"
+#include "Core/Shadows.h"
 
-#include "BoundRegion.h"
-#include "SurfaceSet.h"
-#include "Camera.h"
-#include "LightSpace.h"
-#include "OpticalModel.h"
-#include "Parallel.h"
-#include "ShadowGrid.h"
-#include "ShadowTechniques.h"
+#include "Core/Bound/BoundRegion.h"
+#include "Core/Geometry/SurfaceSet.h"
+#include "Core/Camera.h"
+#include "Core/Shadows/LightSpace.h"
+#include "Core/OpticalModel.h"
+#include "Core/Parallel.h"
+#include "Core/Shadows/ShadowGrid.h"
+#include "Core/ShadowTechniques.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -19,10 +19,10 @@
 #ifndef deepshadow_Shadows_h
 #define deepshadow_Shadows_h
 
-#include "EmptySpace.h"
-#include "Light.h"
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/EmptySpace.h"
+#include "Core/Light.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/mat4x4.hpp>

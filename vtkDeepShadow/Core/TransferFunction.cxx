@@ -1,6 +1,6 @@
-#include "TransferFunction.h"
+#include "Core/TransferFunction.h"
 
-#include "OpticalModel.h"
+#include "Core/OpticalModel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "VolumeGrid.h"
+#include "Core/VolumeGrid.h"
 
 #include <glm/common.hpp>
 #include <glm/mat4x4.hpp>

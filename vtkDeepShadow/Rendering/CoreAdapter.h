@@ -3,13 +3,13 @@
 #ifndef vtkDeepShadowCoreAdapter_h
 #define vtkDeepShadowCoreAdapter_h
 
-#include "BoundRegion.h"
-#include "Camera.h"
-#include "Light.h"
-#include "OpticalModel.h"
-#include "SurfaceSet.h"
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/Bound/BoundRegion.h"
+#include "Core/Camera.h"
+#include "Core/Light.h"
+#include "Core/OpticalModel.h"
+#include "Core/Geometry/SurfaceSet.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 
 #include <glm/mat4x4.hpp>
 

@@ -3,8 +3,8 @@
 #ifndef vtkDeepShadowLightingUniforms_h
 #define vtkDeepShadowLightingUniforms_h
 
-#include "Light.h"
-#include "OpticalModel.h"
+#include "Core/Light.h"
+#include "Core/OpticalModel.h"
 #include "Volume/ShadowContext.h"
 
 #include <glm/vec3.hpp>

@@ -5,7 +5,7 @@
 #ifndef vtkDeepShadowImageConversion_h
 #define vtkDeepShadowImageConversion_h
 
-#include "Image.h"                        // For deepshadow::Image
+#include "Core/Image.h"                        // For deepshadow::Image
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkSmartPointer.h"              // For vtkSmartPointer
 

@@ -3,7 +3,7 @@
 #include "PassFrame.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Volume/ShadowContext.h"
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"

@@ -6,7 +6,7 @@
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Volume/ShadowContext.h"
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowSurfaceFS.h"
 #include "vtkDeepShadowSurfaceVS.h"

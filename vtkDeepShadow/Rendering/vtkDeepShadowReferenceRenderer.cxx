@@ -1,8 +1,8 @@
 #include "vtkDeepShadowReferenceRenderer.h"
 
 #include "CoreAdapter.h"
-#include "ReferenceRenderer.h"
-#include "Shadows.h"
+#include "Core/ReferenceRenderer.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowTechnique.h"

@@ -5,7 +5,7 @@
 #include "PassFrame.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "Volume/BoxDrawer.h"
 #include "Volume/OccupancyTexture.h"

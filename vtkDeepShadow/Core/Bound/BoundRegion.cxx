@@ -1,4 +1,4 @@
-#include "BoundRegion.h"
+#include "Core/Bound/BoundRegion.h"
 
 #include <glm/geometric.hpp>
 

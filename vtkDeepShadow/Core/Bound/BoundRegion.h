@@ -13,8 +13,8 @@
 #ifndef deepshadow_BoundRegion_h
 #define deepshadow_BoundRegion_h
 
-#include "CSGExpression.h"
-#include "TriangleBVH.h"
+#include "Core/Bound/CSGExpression.h"
+#include "Core/Geometry/TriangleBVH.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec2.hpp>

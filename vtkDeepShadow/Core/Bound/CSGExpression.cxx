@@ -1,4 +1,4 @@
-#include "CSGExpression.h"
+#include "Core/Bound/CSGExpression.h"
 
 #include <algorithm>
 #include <cctype>

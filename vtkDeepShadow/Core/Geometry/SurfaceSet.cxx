@@ -1,4 +1,4 @@
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include <glm/geometric.hpp>
 

@@ -10,8 +10,8 @@
 #ifndef deepshadow_SurfaceSet_h
 #define deepshadow_SurfaceSet_h
 
-#include "OpticalModel.h"
-#include "TriangleBVH.h"
+#include "Core/OpticalModel.h"
+#include "Core/Geometry/TriangleBVH.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/mat4x4.hpp>

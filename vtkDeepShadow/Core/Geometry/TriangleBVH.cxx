@@ -1,4 +1,4 @@
-#include "TriangleBVH.h"
+#include "Core/Geometry/TriangleBVH.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
-#include "DeepShadowMap.h"
+#include "Core/Shadows/DeepShadowMap.h"
 
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include <glm/common.hpp>
 

@@ -18,7 +18,7 @@
 #ifndef deepshadow_DeepShadowMap_h
 #define deepshadow_DeepShadowMap_h
 
-#include "LightSpace.h"
+#include "Core/Shadows/LightSpace.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <array>

@@ -1,9 +1,9 @@
-#include "LightSpace.h"
+#include "Core/Shadows/LightSpace.h"
 
-#include "BoundRegion.h"
-#include "Camera.h"
-#include "Parallel.h"
-#include "SurfaceSet.h"
+#include "Core/Bound/BoundRegion.h"
+#include "Core/Camera.h"
+#include "Core/Parallel.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

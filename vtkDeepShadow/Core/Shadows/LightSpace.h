@@ -15,7 +15,7 @@
 #ifndef deepshadow_LightSpace_h
 #define deepshadow_LightSpace_h
 
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
-#include "OpacityLevels.h"
+#include "Core/Shadows/OpacityLevels.h"
 
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include <algorithm>
 #include <cmath>

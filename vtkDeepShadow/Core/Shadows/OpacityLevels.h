@@ -18,7 +18,7 @@
 #ifndef deepshadow_OpacityLevels_h
 #define deepshadow_OpacityLevels_h
 
-#include "DeepShadowMap.h"
+#include "Core/Shadows/DeepShadowMap.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <array>

@@ -1,6 +1,6 @@
-#include "ShadowGrid.h"
+#include "Core/Shadows/ShadowGrid.h"
 
-#include "Parallel.h"
+#include "Core/Parallel.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -5,7 +5,7 @@
 #ifndef deepshadow_ShadowGrid_h
 #define deepshadow_ShadowGrid_h
 
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/mat4x4.hpp>

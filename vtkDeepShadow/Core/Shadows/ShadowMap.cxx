@@ -1,6 +1,6 @@
-#include "ShadowMap.h"
+#include "Core/Shadows/ShadowMap.h"
 
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #ifndef deepshadow_ShadowMap_h
 #define deepshadow_ShadowMap_h
 
-#include "LightSpace.h"
+#include "Core/Shadows/LightSpace.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec2.hpp>

@@ -1,8 +1,8 @@
-#include "StochasticShadowMap.h"
+#include "Core/Shadows/StochasticShadowMap.h"
 
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
-#include "Jitter.h"
+#include "Core/Jitter.h"
 
 #include <cmath>
 #include <stdexcept>

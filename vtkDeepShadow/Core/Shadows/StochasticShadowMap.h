@@ -18,7 +18,7 @@
 #ifndef deepshadow_StochasticShadowMap_h
 #define deepshadow_StochasticShadowMap_h
 
-#include "LightSpace.h"
+#include "Core/Shadows/LightSpace.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec2.hpp>

@@ -13,7 +13,7 @@
 #ifndef vtkDeepShadowOtherVolumeShadows_h
 #define vtkDeepShadowOtherVolumeShadows_h
 
-#include "ShadowGrid.h"
+#include "Core/Shadows/ShadowGrid.h"
 
 #include "vtkSmartPointer.h"
 

@@ -2,7 +2,7 @@
 #ifndef vtkDeepShadowShadowSlots_h
 #define vtkDeepShadowShadowSlots_h
 
-#include "Light.h"
+#include "Core/Light.h"
 
 #include <glm/mat4x4.hpp>
 

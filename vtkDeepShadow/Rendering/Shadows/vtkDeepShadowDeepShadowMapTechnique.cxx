@@ -1,7 +1,7 @@
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 
 #include "Volume/ShadowContext.h"
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowDeepShadowMap.h"
 #include "vtkDeepShadowDeepShadowMapBuild.h"
 

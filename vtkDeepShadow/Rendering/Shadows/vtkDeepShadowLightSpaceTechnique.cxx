@@ -1,7 +1,7 @@
 #include "vtkDeepShadowLightSpaceTechnique.h"
 
 #include "GL/ComputeProgram.h"
-#include "LightSpace.h"
+#include "Core/Shadows/LightSpace.h"
 #include "Volume/ShadowContext.h"
 #include "ShadowSlots.h"
 #include "vtkDeepShadowLightSpace.h"

@@ -1,11 +1,11 @@
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
 
 #include "Volume/ShadowContext.h"
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowOpacityLevels.h"
 #include "vtkDeepShadowOpacityLevelsBuild.h"
 
-#include "ShadowTechniques.h"
+#include "Core/ShadowTechniques.h"
 #include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"

@@ -1,7 +1,7 @@
 #include "vtkDeepShadowRayTechnique.h"
 
 #include "Volume/ShadowContext.h"
-#include "Shadows.h"
+#include "Core/Shadows.h"
 #include "vtkDeepShadowRayShadow.h"
 
 #include "vtkDeepShadowTechniqueFactory.h"

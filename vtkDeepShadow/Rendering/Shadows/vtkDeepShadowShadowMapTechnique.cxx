@@ -2,7 +2,7 @@
 
 #include "ShaderComposer.h"
 #include "Volume/ShadowContext.h"
-#include "ShadowMap.h"
+#include "Core/Shadows/ShadowMap.h"
 #include "vtkDeepShadowShadowMap.h"
 #include "vtkDeepShadowShadowMapBuild.h"
 

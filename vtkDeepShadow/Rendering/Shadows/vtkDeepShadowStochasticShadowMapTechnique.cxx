@@ -2,12 +2,12 @@
 
 #include "ShaderComposer.h"
 #include "Volume/ShadowContext.h"
-#include "Shadows.h"
-#include "StochasticShadowMap.h"
+#include "Core/Shadows.h"
+#include "Core/Shadows/StochasticShadowMap.h"
 #include "vtkDeepShadowStochasticShadowMap.h"
 #include "vtkDeepShadowStochasticShadowMapBuild.h"
 
-#include "ShadowTechniques.h"
+#include "Core/ShadowTechniques.h"
 #include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"

@@ -1,6 +1,6 @@
 #include "vtkDeepShadowTechniqueFactory.h"
 
-#include "ShadowTechniques.h"
+#include "Core/ShadowTechniques.h"
 #include "vtkDeepShadowTechnique.h"
 
 #include <map>

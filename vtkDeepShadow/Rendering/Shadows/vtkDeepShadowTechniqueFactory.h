@@ -10,7 +10,7 @@
 #ifndef vtkDeepShadowTechniqueFactory_h
 #define vtkDeepShadowTechniqueFactory_h
 
-#include "Shadows.h"                       // For deepshadow::ShadowKind, ShadowParameters
+#include "Core/Shadows.h"                       // For deepshadow::ShadowKind, ShadowParameters
 #include "vtkDeepShadowRenderingModule.h"  // For export macro
 #include "vtkSmartPointer.h"               // For vtkSmartPointer
 

@@ -3,7 +3,7 @@
 #ifndef vtkDeepShadowOccupancyTexture_h
 #define vtkDeepShadowOccupancyTexture_h
 
-#include "EmptySpace.h"
+#include "Core/EmptySpace.h"
 
 #include "vtkSmartPointer.h"
 #include "vtkType.h"

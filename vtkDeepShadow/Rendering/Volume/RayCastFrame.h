@@ -3,7 +3,7 @@
 #ifndef vtkDeepShadowRayCastFrame_h
 #define vtkDeepShadowRayCastFrame_h
 
-#include "Camera.h"
+#include "Core/Camera.h"
 #include "Volume/ShadowContext.h"
 
 class vtkDeepShadowTechnique;

@@ -5,10 +5,10 @@
 #define vtkDeepShadowShadowContext_h
 
 #include "GL/UniformSink.h"
-#include "Light.h"
+#include "Core/Light.h"
 #include "ShaderComposer.h"
-#include "TransferFunction.h"
-#include "VolumeGrid.h"
+#include "Core/TransferFunction.h"
+#include "Core/VolumeGrid.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>

@@ -4,7 +4,7 @@
 #ifndef vtkDeepShadowTransferTableTexture_h
 #define vtkDeepShadowTransferTableTexture_h
 
-#include "TransferFunction.h"
+#include "Core/TransferFunction.h"
 
 #include "vtkSmartPointer.h"
 

@@ -1,9 +1,9 @@
 #include "Volume/TriangleHierarchy.h"
 
-#include "BoundRegion.h"
+#include "Core/Bound/BoundRegion.h"
 #include "CoreAdapter.h"
 #include "GL/FloatTexels.h"
-#include "SurfaceSet.h"
+#include "Core/Geometry/SurfaceSet.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"

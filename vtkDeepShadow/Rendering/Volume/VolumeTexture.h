@@ -3,7 +3,7 @@
 #ifndef vtkDeepShadowVolumeTexture_h
 #define vtkDeepShadowVolumeTexture_h
 
-#include "EmptySpace.h"
+#include "Core/EmptySpace.h"
 
 #include "vtkSmartPointer.h"
 #include "vtkType.h"

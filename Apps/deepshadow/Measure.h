@@ -1,0 +1,103 @@
+// How shadow-bench and report measure a technique on a standard scene, in one place:
+// - the frame time while only the camera orbits (structures reused) and while the key light
+//   turns 3 degrees a frame (a rebuild every frame), medians after a warm-up, GL finished;
+// - the build time (median over the light-moving frames) and the shadow memory;
+// - the image and its shadow term (vtkDeepShadowVolumeMapper::OutputShadowTerm) at the error
+//   size, from the start view, to compare with the ground truth: the CPU reference with
+//   translucent shadow rays at a quarter step (coloured for coloured techniques). Meshes show
+//   their shadow term too (vtkDeepShadowPolyDataMapper::OutputShadowTerm).
+#ifndef deepshadow_tool_Measure_h
+#define deepshadow_tool_Measure_h
+
+#include "Core/Image.h"
+#include "Options.h"
+#include "SceneSetup.h"
+
+// SceneBench holds a SceneSetup by value: its smart pointers need the complete types.
+#include "vtkCamera.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowVolumeMapper.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+
+#include <string>
+#include <vector>
+
+namespace deepshadow
+{
+namespace tool
+{
+
+/** What one technique (or none) measured on one scene. */
+struct Measurement
+{
+  double CameraMs = 0.0; // frame while only the camera moves
+  double LightMs = 0.0;  // frame while the light moves (a build every frame)
+  double BuildMs = 0.0;  // 0 for techniques that build nothing
+  long long ShadowBytes = 0;
+  bool RebuiltForCamera = false; // must stay false: a camera move rebuilds nothing
+  std::vector<std::string> CameraPasses; // GPU passes of a camera-only frame
+  std::vector<std::string> Features;     // shader features composed
+  Image Picture;    // at the error size, start view
+  Image ShadowTerm; // the same, shadow term alone (empty unless asked for)
+  // Deep shadow maps only (see vtkDeepShadowDeepShadowMapTechnique).
+  double NodesAverage = 0.0;
+  int NodesMax = 0;
+  long long TexelsOverflowed = 0;
+  double EpsilonMax = 0.0;
+};
+
+/** The ground truth of a scene's start view at the error size. */
+struct GroundTruth
+{
+  Image Picture;
+  Image ShadowTerm;
+  double Milliseconds = 0.0;
+};
+
+/** A standard scene set up for measuring, with its start view and key light. */
+class SceneBench
+{
+public:
+  /** Builds scene `name` with `options`' sizes (throws UsageError for an unknown scene). */
+  SceneBench(const Options& options, const std::string& name);
+
+  /**
+   * Measures `technique` (null: unshadowed); `shadowTerm` also captures the shadow term. A
+   * scene with a second volume (hybrid-smoke) gives it `second`, a technique of the same
+   * kind: builds, times and memory are then both techniques' together (and the grids that
+   * carry each volume's shadows to the other).
+   */
+  Measurement Measure(vtkDeepShadowTechnique* technique, bool shadowTerm,
+    vtkDeepShadowTechnique* second = nullptr);
+
+  /** The ground truth, grey or coloured, computed once per kind. */
+  const GroundTruth& Truth(bool colored);
+
+  SceneSetup& Setup() { return this->Scene; }
+  /** The options the scene was built with (its name in Scene). */
+  const Options& GetOptions() const { return this->Settings; }
+
+private:
+  void Restore();
+  void Orbit();
+  void TurnLight();
+  Image Capture(bool shadowTerm);
+
+  Options Settings;
+  SceneSetup Scene;
+  vtkNew<vtkCamera> StartCamera;
+  vtkLight* Key = nullptr;
+  double StartPosition[3] = { 0.0, 0.0, 0.0 };
+  GroundTruth Truths[2];
+  bool HaveTruth[2] = { false, false };
+};
+
+}
+}
+#endif

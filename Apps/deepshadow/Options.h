@@ -1,0 +1,126 @@
+// Command-line options of the deepshadow tool: parsed once, validated, with one-line errors.
+#ifndef deepshadow_tool_Options_h
+#define deepshadow_tool_Options_h
+
+#include "Core/ShadowTechniques.h"
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace deepshadow
+{
+namespace tool
+{
+
+/** Bad arguments, unreadable files, unsupported data: printed as one line, exit code 2. */
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/** A light given on the command line (--light-dir, --light-pos, --light). */
+struct LightSpec
+{
+  enum Type
+  {
+    Directional, // Vector: direction towards the light
+    Positional,  // Vector: position
+    Spot         // Vector: position; aims at the volume's centre with ConeAngle
+  };
+  Type Kind = Directional;
+  std::array<double, 3> Vector{ { 0.0, 0.0, 1.0 } };
+  double ConeAngle = 30.0;
+  double Intensity = 1.0;
+};
+
+/** A mesh given on the command line (--mesh and the options that follow it). */
+struct MeshSpec
+{
+  std::string File;
+  double Opacity = 1.0;
+  std::array<double, 3> Color{ { 0.8, 0.8, 0.8 } };
+  std::array<double, 3> Translate{ { 0.0, 0.0, 0.0 } };
+  double Scale = 1.0;
+};
+
+struct Options
+{
+  std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | help
+  std::vector<std::string> Arguments; // as given, after the command
+
+  // What to render.
+  std::string Scene;      // standard scene name
+  std::string VolumeFile; // or a file
+  double SceneScale = 1.0;
+  std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
+  std::string Csg;                     // --csg: how they combine ("" = their union)
+  std::vector<MeshSpec> Meshes;        // --mesh, repeatable: meshes that cast and receive
+  bool Ground = false;                 // --ground: a ground plane under the volume
+  int TranslucentLayers = 4;           // --translucent-layers: peeled layers merged into the volume
+  int VolumeSegments = 8;              // --volume-segments: a second volume's pieces merged into the first
+  bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
+  int Width = 512;
+  int Height = 512;
+  double SampleDistance = 0.0; // 0: the mapper's default
+  std::vector<LightSpec> Lights; // empty: the scene's key light, or the headlight for files
+  bool Shade = true;
+  bool Jitter = false;
+  unsigned int JitterSeed = 0;
+  bool EmptySpaceSkipping = true;
+  bool ReplaceNonFinite = false;
+  std::string Technique = "none"; // a name of the technique registry (ShadowTechniques.h)
+  // The technique parameters given (--KEY or a spec's KEY=VALUE, registry keys, checked),
+  // in order; the others keep the technique's defaults.
+  std::vector<std::pair<std::string, std::vector<double>>> TechniqueSettings;
+  std::string Backend; // "" = VTK_DEEPSHADOW_BACKEND or OSMesa
+
+  // Outputs and measurement.
+  std::string Out;
+  std::string Json;
+  std::string OutDir;
+  int Frames = 5;
+  bool Verbose = false; // show VTK's own error and warning messages
+  unsigned long long MemoryBudget = 0; // --memory-budget; 0: half the machine's memory
+
+  // reference
+  bool GpuTwin = false;
+  bool GroundTruth = false; // translucent shadow rays at a fine step, whatever the technique
+  int Threads = 0;
+
+  // bench
+  std::vector<int> BenchSizes{ 128, 256 };
+  // shadow-bench
+  std::vector<std::string> BenchScenes; // empty: all standard scenes
+  std::vector<std::string> BenchTechniques; // empty: all but none
+  int ErrorWidth = 256;
+  int ErrorHeight = 256;
+  // report
+  bool Quick = false; // the short sweep at smaller sizes
+
+  /** The value given for a technique parameter (the last one), or null. */
+  const std::vector<double>* Setting(const std::string& key) const;
+  /**
+   * The chosen technique's parameters: its registry defaults, then the settings given for
+   * the keys it reads (the others are ignored, as each technique ignores them).
+   */
+  ShadowParameters TechniqueParameters() const;
+
+  /** Parses argv; throws UsageError. `--help` sets Command to "help". */
+  static Options Parse(int argc, char* argv[]);
+  static std::string Usage();
+};
+
+/**
+ * A technique spec, NAME[:OPTION=VALUE...] with OPTION a technique option without its dashes
+ * (dsm:layers=2:shadow-map-size=1024, cssm:cssm-photons=4): `base` with them applied.
+ * Throws UsageError.
+ */
+Options WithTechniqueSpec(const Options& base, const std::string& spec);
+
+}
+}
+#endif
