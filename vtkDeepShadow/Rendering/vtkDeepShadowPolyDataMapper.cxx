@@ -10,7 +10,7 @@
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowSurfaceFS.h"
 #include "vtkDeepShadowSurfaceVS.h"
-#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -413,7 +413,7 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   {
     context->ActivateVolumeTextures();
     context->SetVolumeUniforms(sink);
-    technique->Bind(sink, *context, true);
+    vtkDeepShadowTechnique::Internals::Bind(technique, sink, *context, true);
     const double bias = this->ShadowBias > 0.0
       ? this->ShadowBias
       : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());

@@ -15,7 +15,7 @@
 #include "Volume/TriangleHierarchy.h"
 #include "Volume/VolumeFeatures.h"
 #include "Volume/VolumeTexture.h"
-#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 #include "vtkDeepShadowVolumeFS.h"
 #include "vtkDeepShadowVolumeVS.h"
 
@@ -593,7 +593,7 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   if (technique)
   {
     context.Transfer = adapter::MakeTransferFunction(frame.Property);
-    const bool prepared = technique->Prepare(context);
+    const bool prepared = vtkDeepShadowTechnique::Internals::Prepare(technique, context);
     const std::vector<std::string>& passes = technique->GetLastPasses();
     this->LastPasses.insert(this->LastPasses.end(), passes.begin(), passes.end());
     if (!prepared)

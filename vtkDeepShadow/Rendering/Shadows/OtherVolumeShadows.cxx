@@ -1,7 +1,7 @@
 #include "OtherVolumeShadows.h"
 
 #include "Volume/ShadowContext.h"
-#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
@@ -84,7 +84,8 @@ bool OtherVolumeShadows::Update(vtkOpenGLRenderWindow* window, const GridFrame& 
   int written = 0;
   for (const VolumeCaster& caster : casters)
   {
-    written = caster.Technique->EvaluateOnGrid(*caster.Context, this->Grid, frame, written);
+    written = vtkDeepShadowTechnique::Internals::EvaluateOnGrid(
+      caster.Technique, *caster.Context, this->Grid, frame, written);
     if (written < 0)
     {
       error = "a volume casts no shadow onto the others: " + caster.Technique->GetLastError();

@@ -1,4 +1,5 @@
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "Volume/ShadowContext.h"
 #include "Core/Shadows.h"
@@ -15,6 +16,31 @@
 #include <cstring>
 
 vtkStandardNewMacro(vtkDeepShadowDeepShadowMapTechnique);
+
+// The hooks with internal types: what it binds and builds with.
+class vtkDeepShadowDeepShadowMapTechnique::Hooks : public vtkDeepShadowLightSpaceTechnique::Hooks
+{
+public:
+  explicit Hooks(vtkDeepShadowDeepShadowMapTechnique& self)
+    : vtkDeepShadowLightSpaceTechnique::Hooks(self)
+    , Technique(&self)
+  {
+  }
+
+  int GetLayersPerFace(const deepshadow::ShadowContext&) const override
+  {
+    return this->Technique->Layers;
+  }
+
+  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
+  {
+    sink.Set("u_epsilon", static_cast<float>(this->Technique->Epsilon));
+  }
+
+private:
+  vtkDeepShadowDeepShadowMapTechnique* Technique;
+};
+
 // The GPU class of the registry's DeepShadowMap techniques (deepshadow::ShadowTechniques()).
 static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::DeepShadowMap,
   []() -> vtkDeepShadowTechnique* { return vtkDeepShadowDeepShadowMapTechnique::New(); });
@@ -40,6 +66,7 @@ public:
 vtkDeepShadowDeepShadowMapTechnique::vtkDeepShadowDeepShadowMapTechnique()
   : Stats(new Statistics)
 {
+  Internals::SetHooks(this, std::make_unique<Hooks>(*this));
 }
 
 vtkDeepShadowDeepShadowMapTechnique::~vtkDeepShadowDeepShadowMapTechnique() = default;
@@ -104,12 +131,6 @@ std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const
 {
   return std::string("//@Dec\nconst bool DsmColored = ") + (this->Colored ? "true" : "false") +
     ";\n" + vtkDeepShadowDeepShadowMap;
-}
-
-void vtkDeepShadowDeepShadowMapTechnique::SetBuildUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
-{
-  sink.Set("u_epsilon", static_cast<float>(this->Epsilon));
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::BeginMapBuild()

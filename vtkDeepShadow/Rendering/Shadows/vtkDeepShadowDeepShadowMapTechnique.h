@@ -74,12 +74,10 @@ protected:
 
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
-  int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Layers; }
   bool DefersTexels() const override { return true; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   int LookupLoopIterations() const override;
-  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
   void BeginMapBuild() override;
   void EndMapBuild() override;
 
@@ -88,6 +86,9 @@ protected:
   bool Colored = false;
 
 private:
+  // Its hooks that take internal types (vtkDeepShadowTechniqueInternals.h), in the .cxx.
+  class Hooks;
+
   vtkDeepShadowDeepShadowMapTechnique(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
   void operator=(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
 

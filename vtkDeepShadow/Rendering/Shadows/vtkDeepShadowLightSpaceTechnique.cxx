@@ -1,4 +1,4 @@
-#include "vtkDeepShadowLightSpaceTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "GL/ComputeProgram.h"
 #include "Core/Shadows/LightSpace.h"
@@ -83,17 +83,18 @@ void vtkDeepShadowLightSpaceTechnique::SetParameters(const deepshadow::ShadowPar
   this->SetMapSize(parameters.MapSize);
 }
 
-bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
+bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots)
 {
-  Maps& maps = *this->LightMaps;
+  vtkDeepShadowLightSpaceTechnique* self = this->Self;
+  Maps& maps = *self->LightMaps;
   maps.Window = context.Window;
   GLint maxSize = 0, maxLayers = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-  if (this->MapSize > maxSize)
+  if (self->MapSize > maxSize)
   {
-    this->LastError = "shadow map size " + std::to_string(this->MapSize) +
+    self->LastError = "shadow map size " + std::to_string(self->MapSize) +
       " exceeds this GL's texture limit of " + std::to_string(maxSize);
     return false;
   }
@@ -106,9 +107,9 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
     maps.Faces[slot] = deepshadow::ShadowMapFaces(context.Lights[static_cast<size_t>(slots.Light(slot))], bounds);
     facesPerLight = std::max(facesPerLight, static_cast<int>(maps.Faces[slot].size()));
   }
-  const unsigned int format = this->GetTexelFormat();
+  const unsigned int format = self->GetTexelFormat();
   const int layersPerFace = this->GetLayersPerFace(context);
-  const bool sameShape = maps.Texture && maps.Size == this->MapSize && maps.Format == format &&
+  const bool sameShape = maps.Texture && maps.Size == self->MapSize && maps.Format == format &&
     maps.LayersPerFace == layersPerFace;
   // Grow only: fewer shadow-casting lights keep the others' maps.
   const int slabs = std::max(sameShape ? maps.Slabs : 1, slots.Count());
@@ -116,7 +117,7 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
   const long long layers = static_cast<long long>(slabs) * facesPerLight * layersPerFace;
   if (layers > maxLayers)
   {
-    this->LastError = std::to_string(layers) + " light-space layers (" + std::to_string(slabs) +
+    self->LastError = std::to_string(layers) + " light-space layers (" + std::to_string(slabs) +
       " lights x " + std::to_string(facesPerLight) + " faces x " + std::to_string(layersPerFace) +
       " per face) exceed this GL's limit of " + std::to_string(maxLayers);
     return false;
@@ -133,7 +134,7 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
     }
     glGenTextures(1, &maps.Texture);
     glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
-    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, this->MapSize, this->MapSize, static_cast<GLsizei>(layers));
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, self->MapSize, self->MapSize, static_cast<GLsizei>(layers));
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -141,15 +142,15 @@ bool vtkDeepShadowLightSpaceTechnique::AllocateStructures(
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     if (glGetError() != GL_NO_ERROR)
     {
-      this->LastError = "the GL could not allocate " +
-        std::to_string(layers * this->MapSize * this->MapSize * BytesPerTexel(format)) +
+      self->LastError = "the GL could not allocate " +
+        std::to_string(layers * self->MapSize * self->MapSize * BytesPerTexel(format)) +
         " bytes of light-space maps";
       glDeleteTextures(1, &maps.Texture);
       maps.Texture = 0;
       return false;
     }
     maps.Format = format;
-    maps.Size = this->MapSize;
+    maps.Size = self->MapSize;
     maps.Slabs = slabs;
     maps.FacesPerLight = facesPerLight;
     maps.LayersPerFace = layersPerFace;
@@ -169,24 +170,25 @@ long long vtkDeepShadowLightSpaceTechnique::GetStructureBytes() const
     maps.LayersPerFace * BytesPerTexel(maps.Format);
 }
 
-bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext& context,
+bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::ShadowContext& context,
   const deepshadow::ShadowSlots&, const std::vector<int>& stale)
 {
-  Maps& maps = *this->LightMaps;
-  if (!this->BeginBuildPass(maps.Build, vtkDeepShadowLightSpaceCS, context, "Build", this->GetBuildSource()))
+  vtkDeepShadowLightSpaceTechnique* self = this->Self;
+  Maps& maps = *self->LightMaps;
+  if (!Internals::BeginBuildPass(self, maps.Build, vtkDeepShadowLightSpaceCS, context, "Build", self->GetBuildSource()))
   {
     return false;
   }
   deepshadow::UniformSink sink(&maps.Build);
-  maps.Build.Set("u_size", this->MapSize);
+  maps.Build.Set("u_size", self->MapSize);
   maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
   this->SetBuildUniforms(sink, context);
-  this->BeginMapBuild();
-  const bool defers = this->DefersTexels();
+  self->BeginMapBuild();
+  const bool defers = self->DefersTexels();
   if (defers)
   {
     // Room for every texel of a face.
-    const GLsizeiptr bytes = sizeof(GLuint) * (1 + static_cast<GLsizeiptr>(this->MapSize) * this->MapSize);
+    const GLsizeiptr bytes = sizeof(GLuint) * (1 + static_cast<GLsizeiptr>(self->MapSize) * self->MapSize);
     GLint64 allocated = 0;
     if (!maps.Deferred)
     {
@@ -222,8 +224,8 @@ bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, maps.Deferred);
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(deferred), &deferred);
       }
-      maps.Build.Dispatch(glm::ivec3(this->MapSize, this->MapSize, 1), glm::ivec3(8, 8, 1));
-      this->LastPasses.emplace_back("light-space-build");
+      maps.Build.Dispatch(glm::ivec3(self->MapSize, self->MapSize, 1), glm::ivec3(8, 8, 1));
+      self->LastPasses.emplace_back("light-space-build");
       if (defers)
       {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, maps.Deferred);
@@ -234,7 +236,7 @@ bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext
         // The deferred texels, 64 to a group (the pass's 8 x 8 invocations).
         maps.Build.Set("u_deferredPass", 1);
         maps.Build.Dispatch(glm::ivec3(static_cast<int>(deferred), 1, 1), glm::ivec3(64, 1, 1));
-        this->LastPasses.emplace_back("light-space-deferred");
+        self->LastPasses.emplace_back("light-space-deferred");
       }
     }
   }
@@ -244,8 +246,8 @@ bool vtkDeepShadowLightSpaceTechnique::BuildStructures(deepshadow::ShadowContext
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, maps.Format);
-  this->EndBuildPass(context);
-  this->EndMapBuild();
+  Internals::EndBuildPass(self, context);
+  self->EndMapBuild();
   return true;
 }
 
@@ -254,10 +256,11 @@ std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
   return vtkDeepShadowLightSpace + this->GetMapLookupSource();
 }
 
-void vtkDeepShadowLightSpaceTechnique::BindLookup(
+void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
 {
-  Maps& maps = *this->LightMaps;
+  vtkDeepShadowLightSpaceTechnique* self = this->Self;
+  Maps& maps = *self->LightMaps;
   maps.Unit = context.Window->GetTextureUnitManager()->Allocate();
   glActiveTexture(GL_TEXTURE0 + maps.Unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
@@ -284,7 +287,7 @@ void vtkDeepShadowLightSpaceTechnique::BindLookup(
   sink.Set("u_shadowUp", up);
   sink.Set("u_shadowExtent", extent);
   sink.Set("u_shadowNear", nearDistance);
-  sink.Set("u_shadowSize", static_cast<float>(this->MapSize));
+  sink.Set("u_shadowSize", static_cast<float>(self->MapSize));
   sink.Set("u_shadowFacesPerLight", maps.FacesPerLight);
   sink.Set("u_shadowLayersPerFace", maps.LayersPerFace);
   this->SetMapLookupUniforms(sink, context);

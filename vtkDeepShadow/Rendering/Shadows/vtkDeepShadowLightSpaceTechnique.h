@@ -47,28 +47,25 @@ protected:
 
   /** GL internal format of its texels (GL_R32F, GL_RG32F or GL_RGBA32F). */
   virtual unsigned int GetTexelFormat() const = 0;
-  /** Layers per face (deep shadow map nodes, stochastic photons, opacity levels' mesh steps). */
-  virtual int GetLayersPerFace(const deepshadow::ShadowContext&) const { return 1; }
   /** Its build: the parts Dec and Texel of vtkDeepShadowLightSpaceCS.glsl's runtime Build. */
   virtual std::string GetBuildSource() const = 0;
   /** Its lookup, over Shadows/LightSpace.glsl. */
   virtual std::string GetMapLookupSource() const = 0;
-  virtual void SetBuildUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
-  virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
   /** Whether its build defers texels to a second dispatch (deferTexel() in the build). */
   virtual bool DefersTexels() const { return false; }
   /** Around the build pass's dispatches (the deep shadow map gathers statistics). */
   virtual void BeginMapBuild() {}
   virtual void EndMapBuild() {}
+  /**
+   * Its layers per face and its build and lookup uniforms take internal types: they are
+   * Hooks's (vtkDeepShadowTechniqueInternals.h), which builds the maps.
+   */
+  class Hooks;
 
   // ---- vtkDeepShadowTechnique ----
   int GetMaxShadowLights() const override { return 4; }
-  bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;
-  bool BuildStructures(deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots,
-    const std::vector<int>& stale) override;
   long long GetStructureBytes() const override;
   std::string GetLookupSource() const override;
-  void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
   void UnbindLookup() override;
 
   int MapSize = 512;

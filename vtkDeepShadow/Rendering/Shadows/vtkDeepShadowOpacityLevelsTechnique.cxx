@@ -1,4 +1,5 @@
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "Volume/ShadowContext.h"
 #include "Core/Shadows.h"
@@ -11,6 +12,44 @@
 #include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkDeepShadowOpacityLevelsTechnique);
+
+// The hooks with internal types: what it binds and builds with.
+class vtkDeepShadowOpacityLevelsTechnique::Hooks : public vtkDeepShadowLightSpaceTechnique::Hooks
+{
+public:
+  explicit Hooks(vtkDeepShadowOpacityLevelsTechnique& self)
+    : vtkDeepShadowLightSpaceTechnique::Hooks(self)
+    , Technique(&self)
+  {
+  }
+
+  /** The levels, and with casting meshes their steps in a second texel. */
+  int GetLayersPerFace(const deepshadow::ShadowContext& context) const override
+  {
+    return context.Surfaces ? 2 : 1;
+  }
+
+  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
+  {
+    const double* levels = this->Technique->Levels;
+    sink.Set("u_levels", glm::vec3(levels[0], levels[1], levels[2]));
+  }
+
+  void SetMapLookupUniforms(
+    deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override
+  {
+    this->SetBuildUniforms(sink, context);
+  }
+
+private:
+  vtkDeepShadowOpacityLevelsTechnique* Technique;
+};
+
+vtkDeepShadowOpacityLevelsTechnique::vtkDeepShadowOpacityLevelsTechnique()
+{
+  Internals::SetHooks(this, std::make_unique<Hooks>(*this));
+}
+
 // The GPU class of the registry's OpacityLevels techniques (deepshadow::ShadowTechniques()).
 static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::OpacityLevels,
   []() -> vtkDeepShadowTechnique* { return vtkDeepShadowOpacityLevelsTechnique::New(); });
@@ -59,11 +98,6 @@ unsigned int vtkDeepShadowOpacityLevelsTechnique::GetTexelFormat() const
   return GL_RGBA32F;
 }
 
-int vtkDeepShadowOpacityLevelsTechnique::GetLayersPerFace(const deepshadow::ShadowContext& context) const
-{
-  return context.Surfaces ? 2 : 1;
-}
-
 std::string vtkDeepShadowOpacityLevelsTechnique::GetBuildSource() const
 {
   return vtkDeepShadowOpacityLevelsBuild;
@@ -72,18 +106,6 @@ std::string vtkDeepShadowOpacityLevelsTechnique::GetBuildSource() const
 std::string vtkDeepShadowOpacityLevelsTechnique::GetMapLookupSource() const
 {
   return vtkDeepShadowOpacityLevels;
-}
-
-void vtkDeepShadowOpacityLevelsTechnique::SetBuildUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
-{
-  sink.Set("u_levels", glm::vec3(this->Levels[0], this->Levels[1], this->Levels[2]));
-}
-
-void vtkDeepShadowOpacityLevelsTechnique::SetMapLookupUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
-{
-  this->SetBuildUniforms(sink, context);
 }
 
 void vtkDeepShadowOpacityLevelsTechnique::PrintSelf(ostream& os, vtkIndent indent)

@@ -41,21 +41,20 @@ public:
   void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
-  vtkDeepShadowOpacityLevelsTechnique() = default;
+  vtkDeepShadowOpacityLevelsTechnique();
   ~vtkDeepShadowOpacityLevelsTechnique() override = default;
 
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
-  /** The levels, and with casting meshes their steps in a second texel. */
-  int GetLayersPerFace(const deepshadow::ShadowContext& context) const override;
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
-  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
-  void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   double Levels[3] = { 0.1, 0.5, 0.9 };
 
 private:
+  // Its hooks that take internal types (vtkDeepShadowTechniqueInternals.h), in the .cxx.
+  class Hooks;
+
   vtkDeepShadowOpacityLevelsTechnique(const vtkDeepShadowOpacityLevelsTechnique&) = delete;
   void operator=(const vtkDeepShadowOpacityLevelsTechnique&) = delete;
 };

@@ -1,4 +1,5 @@
 #include "vtkDeepShadowRayTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "Volume/ShadowContext.h"
 #include "Core/Shadows.h"
@@ -8,6 +9,30 @@
 #include "vtkObjectFactory.h"
 
 vtkStandardNewMacro(vtkDeepShadowRayTechnique);
+
+// The hooks with internal types: what it binds and builds with.
+class vtkDeepShadowRayTechnique::Hooks : public vtkDeepShadowTechnique::Hooks
+{
+public:
+  explicit Hooks(vtkDeepShadowRayTechnique& self)
+    : Technique(&self)
+  {
+  }
+
+  void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
+  {
+    sink.Set("u_shadowOpaque", this->Technique->Opaque ? 1 : 0);
+  }
+
+private:
+  vtkDeepShadowRayTechnique* Technique;
+};
+
+vtkDeepShadowRayTechnique::vtkDeepShadowRayTechnique()
+{
+  Internals::SetHooks(this, std::make_unique<Hooks>(*this));
+}
+
 // The GPU class of the registry's Rays techniques (deepshadow::ShadowTechniques()).
 static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Rays,
   []() -> vtkDeepShadowTechnique* { return vtkDeepShadowRayTechnique::New(); });
@@ -39,12 +64,6 @@ std::vector<double> vtkDeepShadowRayTechnique::GetStructureKey() const
 std::string vtkDeepShadowRayTechnique::GetLookupSource() const
 {
   return vtkDeepShadowRayShadow;
-}
-
-void vtkDeepShadowRayTechnique::BindLookup(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
-{
-  sink.Set("u_shadowOpaque", this->Opaque ? 1 : 0);
 }
 
 void vtkDeepShadowRayTechnique::PrintSelf(ostream& os, vtkIndent indent)

@@ -48,20 +48,22 @@ public:
   void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
-  vtkDeepShadowRayTechnique() = default;
+  vtkDeepShadowRayTechnique();
   ~vtkDeepShadowRayTechnique() override = default;
 
   int GetMaxShadowLights() const override { return 8; }
   std::vector<double> GetStructureKey() const override;
   std::string GetLookupSource() const override;
   bool LookupNeedsFeeler() const override { return true; }
-  void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   bool Opaque = false;
   bool Colored = false;
   bool EarlyTermination = true;
 
 private:
+  // Its hooks that take internal types (vtkDeepShadowTechniqueInternals.h), in the .cxx.
+  class Hooks;
+
   vtkDeepShadowRayTechnique(const vtkDeepShadowRayTechnique&) = delete;
   void operator=(const vtkDeepShadowRayTechnique&) = delete;
 };

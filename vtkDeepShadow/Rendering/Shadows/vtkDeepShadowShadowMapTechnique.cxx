@@ -1,4 +1,5 @@
 #include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "ShaderComposer.h"
 #include "Volume/ShadowContext.h"
@@ -13,6 +14,33 @@
 #include <algorithm>
 
 vtkStandardNewMacro(vtkDeepShadowShadowMapTechnique);
+
+// The hooks with internal types: what it binds and builds with.
+class vtkDeepShadowShadowMapTechnique::Hooks : public vtkDeepShadowLightSpaceTechnique::Hooks
+{
+public:
+  explicit Hooks(vtkDeepShadowShadowMapTechnique& self)
+    : vtkDeepShadowLightSpaceTechnique::Hooks(self)
+    , Technique(&self)
+  {
+  }
+
+  void SetMapLookupUniforms(
+    deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override
+  {
+    const double step = Internals::FeelerStep(this->Technique, context);
+    sink.Set("u_shadowBias", static_cast<float>(this->Technique->Bias * step));
+  }
+
+private:
+  vtkDeepShadowShadowMapTechnique* Technique;
+};
+
+vtkDeepShadowShadowMapTechnique::vtkDeepShadowShadowMapTechnique()
+{
+  Internals::SetHooks(this, std::make_unique<Hooks>(*this));
+}
+
 // The GPU class of the registry's ShadowMap techniques (deepshadow::ShadowTechniques()).
 static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::ShadowMap,
   []() -> vtkDeepShadowTechnique* { return vtkDeepShadowShadowMapTechnique::New(); });
@@ -77,12 +105,6 @@ std::string vtkDeepShadowShadowMapTechnique::GetMapLookupSource() const
   }
   return "//@Dec\n#define SHADOW_FILTER " + std::to_string(this->Filter) + "\n" +
     deepshadow::GlslConstantArray("vec2", "POISSON_DISC", "POISSON_TAPS", disc) + vtkDeepShadowShadowMap;
-}
-
-void vtkDeepShadowShadowMapTechnique::SetMapLookupUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
-{
-  sink.Set("u_shadowBias", static_cast<float>(this->Bias * this->FeelerStep(context)));
 }
 
 void vtkDeepShadowShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

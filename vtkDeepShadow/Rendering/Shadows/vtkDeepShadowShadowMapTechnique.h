@@ -47,7 +47,7 @@ public:
   void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 
 protected:
-  vtkDeepShadowShadowMapTechnique() = default;
+  vtkDeepShadowShadowMapTechnique();
   ~vtkDeepShadowShadowMapTechnique() override = default;
 
   std::vector<double> GetStructureKey() const override;
@@ -56,12 +56,14 @@ protected:
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   int LookupLoopIterations() const override;
-  void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   double Bias = 2.0;
   int Filter = PCF3x3;
 
 private:
+  // Its hooks that take internal types (vtkDeepShadowTechniqueInternals.h), in the .cxx.
+  class Hooks;
+
   vtkDeepShadowShadowMapTechnique(const vtkDeepShadowShadowMapTechnique&) = delete;
   void operator=(const vtkDeepShadowShadowMapTechnique&) = delete;
 };

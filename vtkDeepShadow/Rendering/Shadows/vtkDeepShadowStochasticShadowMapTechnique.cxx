@@ -1,4 +1,5 @@
 #include "vtkDeepShadowStochasticShadowMapTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "ShaderComposer.h"
 #include "Volume/ShadowContext.h"
@@ -15,6 +16,36 @@
 #include <algorithm>
 
 vtkStandardNewMacro(vtkDeepShadowStochasticShadowMapTechnique);
+
+// The hooks with internal types: what it binds and builds with.
+class vtkDeepShadowStochasticShadowMapTechnique::Hooks : public vtkDeepShadowLightSpaceTechnique::Hooks
+{
+public:
+  explicit Hooks(vtkDeepShadowStochasticShadowMapTechnique& self)
+    : vtkDeepShadowLightSpaceTechnique::Hooks(self)
+    , Technique(&self)
+  {
+  }
+
+  int GetLayersPerFace(const deepshadow::ShadowContext&) const override
+  {
+    return this->Technique->Photons;
+  }
+
+  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
+  {
+    sink.Set("u_cssmSeed", static_cast<int>(this->Technique->Seed));
+  }
+
+private:
+  vtkDeepShadowStochasticShadowMapTechnique* Technique;
+};
+
+vtkDeepShadowStochasticShadowMapTechnique::vtkDeepShadowStochasticShadowMapTechnique()
+{
+  Internals::SetHooks(this, std::make_unique<Hooks>(*this));
+}
+
 // The GPU class of the registry's Stochastic techniques (deepshadow::ShadowTechniques()).
 static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshadow::ShadowKind::Stochastic,
   []() -> vtkDeepShadowTechnique* { return vtkDeepShadowStochasticShadowMapTechnique::New(); });
@@ -103,12 +134,6 @@ std::string vtkDeepShadowStochasticShadowMapTechnique::GetMapLookupSource() cons
   }
   return deepshadow::GlslConstantArray("ivec2", "CSSM_OFFSET", "CSSM_OFFSETS", offsets) +
     vtkDeepShadowStochasticShadowMap;
-}
-
-void vtkDeepShadowStochasticShadowMapTechnique::SetBuildUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext&)
-{
-  sink.Set("u_cssmSeed", static_cast<int>(this->Seed));
 }
 
 void vtkDeepShadowStochasticShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

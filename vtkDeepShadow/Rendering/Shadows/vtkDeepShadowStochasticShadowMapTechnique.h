@@ -51,23 +51,24 @@ public:
   std::vector<std::string> GetBuildFeatures() const override;
 
 protected:
-  vtkDeepShadowStochasticShadowMapTechnique() = default;
+  vtkDeepShadowStochasticShadowMapTechnique();
   ~vtkDeepShadowStochasticShadowMapTechnique() override = default;
 
   std::vector<double> GetStructureKey() const override;
   std::vector<double> GetLookupKey() const override;
   unsigned int GetTexelFormat() const override;
-  int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Photons; }
   std::string GetBuildSource() const override;
   std::string GetMapLookupSource() const override;
   int LookupLoopIterations() const override;
-  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
   int Offsets = 13;
   unsigned int Seed = 0;
   int Photons = 1;
 
 private:
+  // Its hooks that take internal types (vtkDeepShadowTechniqueInternals.h), in the .cxx.
+  class Hooks;
+
   vtkDeepShadowStochasticShadowMapTechnique(const vtkDeepShadowStochasticShadowMapTechnique&) = delete;
   void operator=(const vtkDeepShadowStochasticShadowMapTechnique&) = delete;
 };

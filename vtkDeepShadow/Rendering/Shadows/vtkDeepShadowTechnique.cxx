@@ -1,4 +1,4 @@
-#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "Core/OpticalModel.h"
 #include "Volume/ShadowContext.h"
@@ -39,46 +39,16 @@ double NowMilliseconds()
 constexpr int MaxCachedLights = 8;
 }
 
-class vtkDeepShadowTechnique::Internals
-{
-public:
-  // The feeler's table: the casting transfer function, opacity corrected for the feeler step
-  // (the same holder as the ray caster's table).
-  deepshadow::TransferTableTexture FeelerTable;
-  // Zero-opacity blocks of the volume's opacity may be skipped (not with a shadow property).
-  bool SkipEmpty = true;
-  deepshadow::ShadowSlots Slots;
-  // Build timing of the current Prepare.
-  double PassStart = 0.0;
-  double PassMilliseconds = 0.0;
-  int Passes = 0;
-
-  // The cache ("PP"): one slab of a 3D texture per shadow-casting light.
-  vtkSmartPointer<vtkTextureObject> Cache;
-  deepshadow::GridFrame CacheFrame;
-  glm::ivec3 CacheDims{ 0 };
-  int CacheSlabs = 0;
-  bool CacheColored = false;
-  deepshadow::ShadowSlots CacheSlots;
-  deepshadow::ComputeProgram CacheBuild;
-  // The lookup evaluated on other volumes' grids (deepshadow::OtherVolumeShadows).
-  deepshadow::ComputeProgram OtherBuild;
-
-  void ReleaseCache(vtkWindow* window)
-  {
-    if (this->Cache)
-    {
-      this->Cache->ReleaseGraphicsResources(window);
-      this->Cache = nullptr;
-    }
-    this->CacheBuild.Release();
-    this->CacheSlots.Invalidate();
-  }
-};
+using Internals = vtkDeepShadowTechnique::Internals;
 
 vtkDeepShadowTechnique::vtkDeepShadowTechnique()
   : Impl(new Internals)
 {
+}
+
+void Internals::SetHooks(vtkDeepShadowTechnique* self, std::unique_ptr<Hooks> hooks)
+{
+  self->Impl->TechniqueHooks = std::move(hooks);
 }
 
 vtkDeepShadowTechnique::~vtkDeepShadowTechnique()
@@ -153,46 +123,55 @@ void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parame
   parameters.VolumeSize = this->ShadowVolumeSize;
 }
 
-double vtkDeepShadowTechnique::FeelerStep(const deepshadow::ShadowContext& context) const
+double Internals::FeelerStep(
+  const vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context)
 {
-  return this->StepFactor * context.ViewStep;
+  return self->StepFactor * context.ViewStep;
 }
 
-bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
+bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext& context)
 {
-  Internals& impl = *this->Impl;
-  this->LastError.clear();
-  this->LastPasses.clear();
+  Internals& impl = *self->Impl;
+  self->LastError.clear();
+  self->LastPasses.clear();
   impl.PassMilliseconds = 0.0;
   impl.Passes = 0;
-  const deepshadow::ShadowParameters parameters = this->GetParameters();
+  if (!impl.TechniqueHooks)
+  {
+    // Every hook call comes after a successful Prepare: one check here keeps a technique
+    // written outside the tree that forgot its hooks from crashing later.
+    self->LastError = std::string(self->GetClassName()) +
+      " installed no hooks (call Internals::SetHooks in its constructor)";
+    return false;
+  }
+  const deepshadow::ShadowParameters parameters = self->GetParameters();
   const bool colored = parameters.IsColored();
   // The drawn opacity decides which blocks view rays sample (a cache may skip the others).
   const std::vector<double> drawnOpacityKey = context.TransferKey(false);
-  if (this->ShadowProperty)
+  if (self->ShadowProperty)
   {
-    context.Transfer = deepshadow::adapter::MakeTransferFunction(this->ShadowProperty);
+    context.Transfer = deepshadow::adapter::MakeTransferFunction(self->ShadowProperty);
   }
-  impl.SkipEmpty = this->ShadowProperty == nullptr;
+  impl.SkipEmpty = self->ShadowProperty == nullptr;
 
-  this->UpdateFeelerTable(context, colored);
+  UpdateFeelerTable(self, context, colored);
 
   // Which lights get a shadow, and which of their structures are stale.
-  const int maxLights = this->Cached ? std::min(this->GetMaxShadowLights(), MaxCachedLights)
-                                     : this->GetMaxShadowLights();
+  const int maxLights = self->Cached ? std::min(self->GetMaxShadowLights(), MaxCachedLights)
+                                     : self->GetMaxShadowLights();
   const int dropped = impl.Slots.Assign(context.Lights, maxLights);
   if (dropped > 0)
   {
-    vtkWarningMacro(<< dropped << " shadow-casting lights beyond " << maxLights << " cast no shadow ("
-                    << this->GetName() << ")");
+    vtkWarningWithObjectMacro(self, << dropped << " shadow-casting lights beyond " << maxLights
+                                    << " cast no shadow (" << self->GetName() << ")");
   }
-  if (!this->AllocateStructures(context, impl.Slots))
+  if (!impl.TechniqueHooks->AllocateStructures(context, impl.Slots))
   {
     impl.Slots.Invalidate();
     return false;
   }
-  std::vector<double> key = this->GetStructureKey();
-  key.insert(key.end(), { this->StepFactor, this->Threshold, static_cast<double>(this->ThresholdMode),
+  std::vector<double> key = self->GetStructureKey();
+  key.insert(key.end(), { self->StepFactor, self->Threshold, static_cast<double>(self->ThresholdMode),
     colored ? 1.0 : 0.0, impl.SkipEmpty ? 1.0 : 0.0 });
   const std::vector<double> transferKey = context.TransferKey(colored);
   key.insert(key.end(), transferKey.begin(), transferKey.end());
@@ -207,7 +186,7 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
   }
   if (!stale.empty())
   {
-    if (!this->BuildStructures(context, impl.Slots, stale))
+    if (!impl.TechniqueHooks->BuildStructures(context, impl.Slots, stale))
     {
       impl.Slots.Invalidate();
       return false;
@@ -218,9 +197,9 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
     }
   }
 
-  if (this->Cached)
+  if (self->Cached)
   {
-    if (!this->PrepareCache(context, key, drawnOpacityKey, rebuilt))
+    if (!PrepareCache(self, context, key, drawnOpacityKey, rebuilt))
     {
       return false;
     }
@@ -232,16 +211,17 @@ bool vtkDeepShadowTechnique::Prepare(deepshadow::ShadowContext& context)
 
   if (!rebuilt.empty())
   {
-    this->BuildCount += static_cast<int>(rebuilt.size());
-    this->LastBuildMilliseconds = impl.PassMilliseconds;
+    self->BuildCount += static_cast<int>(rebuilt.size());
+    self->LastBuildMilliseconds = impl.PassMilliseconds;
   }
   return true;
 }
 
-void vtkDeepShadowTechnique::UpdateFeelerTable(const deepshadow::ShadowContext& context, bool colored)
+void Internals::UpdateFeelerTable(
+  vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context, bool colored)
 {
-  Internals& impl = *this->Impl;
-  const double step = this->FeelerStep(context);
+  Internals& impl = *self->Impl;
+  const double step = FeelerStep(self, context);
   std::vector<double> tableKey = context.TransferKey(colored);
   tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
     static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
@@ -249,27 +229,27 @@ void vtkDeepShadowTechnique::UpdateFeelerTable(const deepshadow::ShadowContext& 
   {
     impl.FeelerTable.Update(
       context.Window, context.Transfer, context.Range, context.TableSize, step, std::move(tableKey));
-    this->LastPasses.emplace_back("feeler-table");
+    self->LastPasses.emplace_back("feeler-table");
   }
 }
 
-bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
+bool Internals::PrepareCache(vtkDeepShadowTechnique* self, deepshadow::ShadowContext& context,
   std::vector<double> key, const std::vector<double>& drawnOpacityKey, std::set<int>& rebuilt)
 {
-  Internals& impl = *this->Impl;
-  const bool colored = this->GetParameters().IsColored();
-  const int maxLights = std::min(this->GetMaxShadowLights(), MaxCachedLights);
+  Internals& impl = *self->Impl;
+  const bool colored = self->GetParameters().IsColored();
+  const int maxLights = std::min(self->GetMaxShadowLights(), MaxCachedLights);
   // The cache depends on everything the structure and the lookup do, on its own size, and
   // (where it skips nodes no view sample reads) on the blocks the drawn opacity leaves.
   const deepshadow::GridFrame frame =
-    deepshadow::GridFrame::OverVolume(context.Dims, context.IndexToWorld, this->ShadowVolumeSize);
+    deepshadow::GridFrame::OverVolume(context.Dims, context.IndexToWorld, self->ShadowVolumeSize);
   const glm::ivec3 dims = frame.Dims;
   const glm::vec3 reach = glm::vec3(context.Dims - 1) / glm::vec3(dims - 1);
   const bool skipEmpty = context.Occupancy &&
     std::max({ reach.x, reach.y, reach.z }) <= context.BlockSize;
-  const std::vector<double> lookupKey = this->GetLookupKey();
+  const std::vector<double> lookupKey = self->GetLookupKey();
   key.insert(key.end(), lookupKey.begin(), lookupKey.end());
-  key.insert(key.end(), { static_cast<double>(this->ShadowVolumeSize), skipEmpty ? 1.0 : 0.0 });
+  key.insert(key.end(), { static_cast<double>(self->ShadowVolumeSize), skipEmpty ? 1.0 : 0.0 });
   if (skipEmpty)
   {
     key.insert(key.end(), drawnOpacityKey.begin(), drawnOpacityKey.end());
@@ -280,7 +260,7 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
   const int slabs = std::max(impl.Cache && dims == impl.CacheDims ? impl.CacheSlabs : 1, impl.Slots.Count());
   if (std::max({ dims.x, dims.y, dims.z * slabs }) > max3D)
   {
-    this->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
+    self->LastError = "the shadow volume (" + std::to_string(dims.x) + "x" +
       std::to_string(dims.y) + "x" + std::to_string(dims.z) + " per light) exceeds this GL's 3D "
       "texture limit of " + std::to_string(max3D);
     return false;
@@ -321,30 +301,30 @@ bool vtkDeepShadowTechnique::PrepareCache(deepshadow::ShadowContext& context,
     {
       slotsAndSlabs.emplace_back(slot, slot);
     }
-    if (!this->RunGridPass(impl.CacheBuild, colored ? "#define CACHE_COLORED\n" : "", context,
+    if (!RunGridPass(self, impl.CacheBuild, colored ? "#define CACHE_COLORED\n" : "", context,
           impl.Cache, colored, frame, slotsAndSlabs, impl.CacheSlots, skipEmpty, reach, -1))
     {
       impl.CacheSlots.Invalidate();
       return false;
     }
-    this->LastPasses.insert(this->LastPasses.end(), staleCache.size(), "shadow-cache");
+    self->LastPasses.insert(self->LastPasses.end(), staleCache.size(), "shadow-cache");
     rebuilt.insert(staleCache.begin(), staleCache.end());
   }
   return true;
 }
 
-bool vtkDeepShadowTechnique::RunGridPass(deepshadow::ComputeProgram& program,
+bool Internals::RunGridPass(vtkDeepShadowTechnique* self, deepshadow::ComputeProgram& program,
   const std::string& defines, const deepshadow::ShadowContext& context, vtkTextureObject* grid, bool colored,
   const deepshadow::GridFrame& frame, const std::vector<std::pair<int, int>>& slotsAndSlabs,
   const deepshadow::ShadowSlots& slots, bool skipEmpty, const glm::vec3& reach, int storeMask)
 {
-  const std::string lookup = "//@Dec\n" + defines + this->GetLookupSource();
-  if (!this->BeginBuildPass(program, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
+  const std::string lookup = "//@Dec\n" + defines + self->GetLookupSource();
+  if (!BeginBuildPass(self, program, vtkDeepShadowCachedShadowCS, context, "Lookup", lookup))
   {
     return false;
   }
   deepshadow::UniformSink sink(&program);
-  this->BindLookup(sink, context);
+  self->Impl->TechniqueHooks->BindLookup(sink, context);
   program.Set("u_shadowDims", frame.Dims);
   program.Set("u_cacheSkipEmpty", skipEmpty ? 1 : 0);
   program.Set("u_cacheReach", reach);
@@ -370,15 +350,15 @@ bool vtkDeepShadowTechnique::RunGridPass(deepshadow::ComputeProgram& program,
     program.Dispatch(frame.Dims, glm::ivec3(4));
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, format);
-  this->UnbindLookup();
-  this->EndBuildPass(context);
+  self->UnbindLookup();
+  EndBuildPass(self, context);
   return true;
 }
 
-int vtkDeepShadowTechnique::EvaluateOnGrid(const deepshadow::ShadowContext& context,
+int Internals::EvaluateOnGrid(vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context,
   vtkTextureObject* grid, const deepshadow::GridFrame& frame, int writtenSlabs)
 {
-  Internals& impl = *this->Impl;
+  Internals& impl = *self->Impl;
   // Slab l holds light l of the context; each light with a structure of ours.
   std::vector<std::pair<int, int>> slotsAndSlabs;
   for (int slot = 0; slot < impl.Slots.Count(); ++slot)
@@ -389,7 +369,7 @@ int vtkDeepShadowTechnique::EvaluateOnGrid(const deepshadow::ShadowContext& cont
   {
     return writtenSlabs;
   }
-  if (!this->RunGridPass(impl.OtherBuild, "#define OTHER_VOLUMES\n", context, grid, true, frame,
+  if (!RunGridPass(self, impl.OtherBuild, "#define OTHER_VOLUMES\n", context, grid, true, frame,
         slotsAndSlabs, impl.Slots, false, glm::vec3(0.0), ~writtenSlabs & 0xff))
   {
     return -1;
@@ -447,41 +427,41 @@ void vtkDeepShadowTechnique::DeactivateFeelerTable()
   }
 }
 
-void vtkDeepShadowTechnique::SetFeelerUniforms(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) const
+void Internals::SetFeelerUniforms(const vtkDeepShadowTechnique* self,
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
 {
-  const double step = this->FeelerStep(context);
-  const deepshadow::ShadowParameters parameters = this->GetParameters();
-  sink.Set("u_feelerTable", this->Impl->FeelerTable.GetTexture()->GetTextureUnit());
+  const double step = FeelerStep(self, context);
+  const deepshadow::ShadowParameters parameters = self->GetParameters();
+  sink.Set("u_feelerTable", self->Impl->FeelerTable.GetTexture()->GetTextureUnit());
   sink.Set("u_feelerStep", static_cast<float>(step));
   // Per-sample opacity thresholds are compared with the table's step-corrected opacity.
   sink.Set("u_feelerThreshold",
     static_cast<float>(parameters.Mode == deepshadow::ThresholdMode::Opacity
-        ? deepshadow::CorrectOpacity(this->Threshold, step, context.Transfer.OpacityUnitDistance)
-        : this->Threshold));
+        ? deepshadow::CorrectOpacity(self->Threshold, step, context.Transfer.OpacityUnitDistance)
+        : self->Threshold));
   sink.Set("u_feelerThresholdMode", static_cast<int>(parameters.Mode));
   sink.Set("u_scalarRange", glm::vec2(context.ShaderRange()));
   sink.Set("u_feelerTermination",
     parameters.EarlyTermination ? static_cast<float>(deepshadow::ShadowTerminationTransmittance) : 0.0f);
   if (context.Surfaces)
   {
-    sink.Set("u_surfaceThreshold", static_cast<float>(this->Threshold));
+    sink.Set("u_surfaceThreshold", static_cast<float>(self->Threshold));
   }
   // Zero-opacity blocks cannot stop a feeler, unless the threshold is on the scalar or the
   // shadows are cast by another transfer function than the one the blocks were found for.
   const bool opaqueOnScalar = parameters.Mode == deepshadow::ThresholdMode::Scalar &&
     deepshadow::ShadowTechniqueOf(parameters).Binary;
-  sink.Set("u_feelerSkipEmpty", context.Occupancy && this->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
+  sink.Set("u_feelerSkipEmpty", context.Occupancy && self->Impl->SkipEmpty && !opaqueOnScalar ? 1 : 0);
 }
 
-bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
+bool Internals::BeginBuildPass(vtkDeepShadowTechnique* self, deepshadow::ComputeProgram& program,
   const std::string& shaderTemplate, const deepshadow::ShadowContext& context,
   const std::string& runtimeName, const std::string& runtimeSource)
 {
   std::set<std::string> features{ "Feeler" };
   std::map<std::string, deepshadow::ShaderFeature> runtime;
   context.AddVolumeFeatures(features, runtime, true);
-  for (const std::string& feature : this->GetBuildFeatures())
+  for (const std::string& feature : self->GetBuildFeatures())
   {
     features.insert(feature);
   }
@@ -491,34 +471,34 @@ bool vtkDeepShadowTechnique::BeginBuildPass(deepshadow::ComputeProgram& program,
   }
   if (!program.Build(deepshadow::ComposeShader(shaderTemplate, features, runtime)))
   {
-    this->LastError = program.Error();
+    self->LastError = program.Error();
     return false;
   }
-  this->Impl->PassStart = NowMilliseconds();
+  self->Impl->PassStart = NowMilliseconds();
   context.ActivateVolumeTextures();
-  this->ActivateFeelerTable();
+  self->ActivateFeelerTable();
   program.Use();
   deepshadow::UniformSink sink(&program);
   context.SetVolumeUniforms(sink);
-  this->SetFeelerUniforms(sink, context);
+  SetFeelerUniforms(self, sink, context);
   return true;
 }
 
-void vtkDeepShadowTechnique::EndBuildPass(const deepshadow::ShadowContext& context)
+void Internals::EndBuildPass(vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context)
 {
   glFinish(); // the build time includes the GPU's work
-  this->DeactivateFeelerTable();
+  self->DeactivateFeelerTable();
   context.DeactivateVolumeTextures();
   // VTK tracks the bound program; ours replaced it.
   context.Window->GetShaderCache()->ReleaseCurrentShader();
-  this->Impl->PassMilliseconds += NowMilliseconds() - this->Impl->PassStart;
-  ++this->Impl->Passes;
+  self->Impl->PassMilliseconds += NowMilliseconds() - self->Impl->PassStart;
+  ++self->Impl->Passes;
 }
 
-void vtkDeepShadowTechnique::Bind(
-  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context, bool direct)
+void Internals::Bind(vtkDeepShadowTechnique* self, deepshadow::UniformSink& sink,
+  const deepshadow::ShadowContext& context, bool direct)
 {
-  Internals& impl = *this->Impl;
+  Internals& impl = *self->Impl;
   std::vector<float> attenuation;
   for (const deepshadow::Light& light : context.Lights)
   {
@@ -526,7 +506,7 @@ void vtkDeepShadowTechnique::Bind(
   }
   sink.Set("u_shadowSlot", impl.Slots.SlotOfEachLight(static_cast<int>(context.Lights.size())));
   sink.Set("u_shadowAttenuation", attenuation);
-  if (this->Cached && !direct)
+  if (self->Cached && !direct)
   {
     impl.Cache->Activate();
     sink.Set("u_shadowVolume", impl.Cache->GetTextureUnit());
@@ -535,12 +515,12 @@ void vtkDeepShadowTechnique::Bind(
     sink.Set("u_shadowSlabs", static_cast<float>(impl.CacheSlabs));
     return;
   }
-  if (this->LookupNeedsFeeler())
+  if (self->LookupNeedsFeeler())
   {
-    this->ActivateFeelerTable();
-    this->SetFeelerUniforms(sink, context);
+    self->ActivateFeelerTable();
+    SetFeelerUniforms(self, sink, context);
   }
-  this->BindLookup(sink, context);
+  self->Impl->TechniqueHooks->BindLookup(sink, context);
 }
 
 void vtkDeepShadowTechnique::Unbind(bool direct)

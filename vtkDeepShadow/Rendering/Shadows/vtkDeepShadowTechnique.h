@@ -31,26 +31,16 @@
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkObject.h"
 
-#include <glm/vec3.hpp> // For glm::vec3
-
 #include <memory> // For std::unique_ptr
-#include <set>    // For std::set
 #include <string> // For std::string
-#include <utility> // For std::pair
 #include <vector> // For std::vector
 
-class vtkTextureObject;
 class vtkVolumeProperty;
 class vtkWindow;
 
 namespace deepshadow
 {
-class ComputeProgram;
-struct GridFrame;
-struct ShadowContext;
-struct ShadowParameters;
-class ShadowSlots;
-class UniformSink;
+struct ShadowParameters; // DeepShadow::Core's Shadows.h (installed)
 }
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowTechnique : public vtkObject
@@ -149,8 +139,10 @@ public:
 
   // ---- Used by vtkDeepShadowVolumeMapper, not by applications ----
 
-  /** Brings the shadow structures up to date; false (and GetLastError()) on failure. */
-  bool Prepare(deepshadow::ShadowContext& context);
+  // Prepare, Bind and the grid evaluation take the module's internal types: they are
+  // vtkDeepShadowTechnique::Internals's (vtkDeepShadowTechniqueInternals.h, not installed).
+  class Internals;
+
   /**
    * Source of the "Shadow" shader feature for the ray caster. `direct`: the technique's own
    * lookup even when cached, for receivers outside the volume's box (meshes), which the
@@ -173,21 +165,9 @@ public:
   std::vector<std::string> GetLookupFeatures(bool direct = false) const;
   /** Shader features its build passes need besides VolumeSampling, Feeler, EmptySpace. */
   virtual std::vector<std::string> GetBuildFeatures() const;
-  /** Sets the lookup's uniforms and binds its textures on the ray caster's program. */
-  void Bind(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context, bool direct = false);
+  /** Undoes Internals::Bind. */
   void Unbind(bool direct = false);
   virtual void ReleaseGraphicsResources(vtkWindow* window);
-
-  /**
-   * Used by deepshadow::OtherVolumeShadows: evaluates this technique's own lookup (never its
-   * cache, which covers its volume's box only) at every node of `frame`, for each light it
-   * has a structure for, and multiplies the answer into slab l of `grid` (RGBA16F) for the
-   * context's light l; slabs not in the bit mask `writtenSlabs` are stored instead. Returns
-   * the mask with its slabs added, or -1 (and GetLastError()) if the pass failed. Prepare()
-   * must have run this frame.
-   */
-  int EvaluateOnGrid(const deepshadow::ShadowContext& context, vtkTextureObject* grid,
-    const deepshadow::GridFrame& frame, int writtenSlabs);
 
 protected:
   vtkDeepShadowTechnique();
@@ -201,17 +181,6 @@ protected:
   virtual std::vector<double> GetStructureKey() const = 0;
   /** The parameters only its lookup depends on (a cache depends on them too). */
   virtual std::vector<double> GetLookupKey() const { return {}; }
-  /** (Re)allocates its storage for `slots`; calls slots.Invalidate() when it did. */
-  virtual bool AllocateStructures(deepshadow::ShadowContext&, deepshadow::ShadowSlots&)
-  {
-    return true;
-  }
-  /** Builds the structures of the given slots. */
-  virtual bool BuildStructures(deepshadow::ShadowContext&, const deepshadow::ShadowSlots&,
-    const std::vector<int>&)
-  {
-    return true;
-  }
   virtual long long GetStructureBytes() const { return 0; }
   /**
    * GLSL defining vec3 lightVisibility(int slot, vec3 position, vec3 toLight,
@@ -222,9 +191,13 @@ protected:
   virtual bool LookupNeedsFeeler() const { return false; }
   /** See GetLookupLoopIterations(). */
   virtual int LookupLoopIterations() const { return 0; }
-  /** Binds what the lookup reads and sets its uniforms (ray caster or cache pass). */
-  virtual void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) = 0;
   virtual void UnbindLookup() {}
+  /**
+   * The hooks that take the module's internal types (structures' allocation and build, the
+   * lookup's binding) are a Hooks object (vtkDeepShadowTechniqueInternals.h) that each
+   * concrete technique installs in its constructor with Internals::SetHooks.
+   */
+  class Hooks;
 
   // ---- Helpers for techniques ----
 
@@ -260,23 +233,8 @@ protected:
 
   /** The common part of GetParameters(). */
   void FillParameters(deepshadow::ShadowParameters& parameters) const;
-  /** World step of feelers and light rays for the current context. */
-  double FeelerStep(const deepshadow::ShadowContext& context) const;
-  /** The Feeler feature's uniforms (its table must be active). */
-  void SetFeelerUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) const;
   void ActivateFeelerTable();
   void DeactivateFeelerTable();
-  /**
-   * Starts a build pass: composes `shaderTemplate` with the volume-sampling, empty-space and
-   * feeler features (and `runtime` ones), compiles it into `program` if needed, binds the
-   * volume, block map and feeler table and sets their uniforms. False (and LastError) if it
-   * does not compile.
-   */
-  bool BeginBuildPass(deepshadow::ComputeProgram& program, const std::string& shaderTemplate,
-    const deepshadow::ShadowContext& context, const std::string& runtimeName = std::string(),
-    const std::string& runtimeSource = std::string());
-  /** Ends it: waits for the GL, unbinds, and adds the pass to the build time. */
-  void EndBuildPass(const deepshadow::ShadowContext& context);
 
   double StepFactor = 1.0;
   double Threshold = 0.5;
@@ -293,23 +251,6 @@ private:
   vtkDeepShadowTechnique(const vtkDeepShadowTechnique&) = delete;
   void operator=(const vtkDeepShadowTechnique&) = delete;
 
-  /** The feeler's table (the casting transfer function for the feeler step), if stale. */
-  void UpdateFeelerTable(const deepshadow::ShadowContext& context, bool colored);
-  /**
-   * The grid pass (vtkDeepShadowCachedShadowCS): the lookup at every node of `frame` into
-   * `grid` (RGBA16F if `colored`, else R16F), per (slot, slab). `storeMask` < 0: store (a
-   * cache, which may skip empty nodes); else multiply into what is stored, except in the
-   * slabs whose bit is set, which are stored.
-   */
-  bool RunGridPass(deepshadow::ComputeProgram& program, const std::string& defines,
-    const deepshadow::ShadowContext& context, vtkTextureObject* grid, bool colored,
-    const deepshadow::GridFrame& frame, const std::vector<std::pair<int, int>>& slotsAndSlabs,
-    const deepshadow::ShadowSlots& slots, bool skipEmpty, const glm::vec3& reach, int storeMask);
-  /** Brings the cache of every slot whose `key` (structure, lookup, cache) changed up to date. */
-  bool PrepareCache(deepshadow::ShadowContext& context, std::vector<double> key,
-    const std::vector<double>& drawnOpacityKey, std::set<int>& rebuilt);
-
-  class Internals;
   std::unique_ptr<Internals> Impl;
 };
 

@@ -6,7 +6,7 @@
 #include "Shadows/OtherVolumeShadows.h"
 #include "Translucency/TranslucentLayers.h"
 #include "Volume/RayCastFrame.h"
-#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkTextureObject.h"
 
@@ -128,7 +128,8 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "Jitter", [](const Frame& f) { return f.Jitter; }, nullptr,
       [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },
     { "Shadow", [](const Frame& f) { return f.Technique != nullptr; }, ComposeShadow,
-      [](const Frame& f, UniformSink& sink) { f.Technique->Bind(sink, f.Context); },
+      [](const Frame& f, UniformSink& sink)
+      { vtkDeepShadowTechnique::Internals::Bind(f.Technique, sink, f.Context); },
       [](const Frame& f) { f.Technique->Unbind(); } },
     { "ShadowGrid", [](const Frame& f) { return f.Others != nullptr; }, nullptr, nullptr, nullptr },
     { "OtherVolumeShadows", [](const Frame& f) { return f.Others != nullptr; }, nullptr,
