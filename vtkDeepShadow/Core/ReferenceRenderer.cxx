@@ -331,12 +331,16 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
   return glm::clamp(lit, 0.0, 1.0);
 }
 
-Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
-  Image* shadowTerm)
+namespace
+{
+using PreparedVolume = ReferenceRenderer::PreparedVolume;
+
+// Refuses the scene before any work, as the GPU mapper does: nothing that would take hours
+// (the GPU's bound on samples a ray, MaxRayIterations).
+void CheckVolumeSamples(const Scene& scene, const MarchSettings& settings)
 {
   for (const VolumeInstance& volume : scene.Volumes)
   {
-    // Nothing that would take hours: the GPU's bound on samples a ray (MaxRayIterations).
     const double longest = LongestPath(volume.Grid->GetIndexToWorld(), volume.Grid->GetDims());
     std::string problem = CheckRaySamples(longest, settings.SampleDistance, "the sample distance");
     if (problem.empty() && volume.Shadows.Kind != ShadowKind::None)
@@ -348,15 +352,12 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
       throw std::invalid_argument(problem);
     }
   }
-  const int width = scene.View.GetWidth();
-  const int height = scene.View.GetHeight();
-  Image image(width, height);
-  if (shadowTerm)
-  {
-    *shadowTerm = Image(width, height);
-  }
+}
 
-  // The first shadowing volume is the meshes' shadow source and holds the casting meshes.
+// The first shadowing volume is the meshes' shadow source and holds the casting meshes;
+// scene.Volumes.size() when no volume shadows.
+size_t ShadowSource(const Scene& scene)
+{
   size_t source = scene.Volumes.size();
   for (size_t v = 0; v < scene.Volumes.size() && source == scene.Volumes.size(); ++v)
   {
@@ -365,46 +366,43 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
       source = v;
     }
   }
-  std::vector<PreparedVolume> prepared;
-  for (size_t v = 0; v < scene.Volumes.size(); ++v)
-  {
-    prepared.push_back(Prepare(scene, scene.Volumes[v], settings, threads, v == source));
-  }
-  double receiverBias = scene.ReceiverBias;
-  if (source < scene.Volumes.size() && !(receiverBias > 0.0))
-  {
-    receiverBias = DefaultReceiverBias(scene.Volumes[source].Shadows.StepFactor * settings.SampleDistance);
-  }
+  return source;
+}
 
-  // What the shadowing volumes other than `skip` cast for light l: their product, exact or
-  // on the pass's grid over `frame`.
-  const auto othersCast = [&](size_t skip, size_t l, const GridFrame* frame) -> std::unique_ptr<LightShadow> {
-    std::vector<const LightShadow*> factors;
-    for (size_t u = 0; u < prepared.size(); ++u)
+// What the shadowing volumes other than `skip` cast for light l: their product, exact or
+// on the pass's grid over `frame`.
+std::unique_ptr<LightShadow> OthersCast(const Scene& scene, const std::vector<PreparedVolume>& prepared,
+  int threads, size_t skip, size_t l, const GridFrame* frame)
+{
+  std::vector<const LightShadow*> factors;
+  for (size_t u = 0; u < prepared.size(); ++u)
+  {
+    const LightShadow* lookup = u == skip ? nullptr : prepared[u].ReceiverLookup(l);
+    if (lookup)
     {
-      const LightShadow* lookup = u == skip ? nullptr : prepared[u].ReceiverLookup(l);
-      if (lookup)
-      {
-        factors.push_back(lookup);
-      }
+      factors.push_back(lookup);
     }
-    if (factors.empty())
-    {
-      return nullptr;
-    }
-    auto product = std::make_unique<ProductShadow>(std::move(factors));
-    if (!frame)
-    {
-      return product;
-    }
-    const bool colored = std::any_of(scene.Volumes.begin(), scene.Volumes.end(),
-      [](const VolumeInstance& v) { return v.Shadows.IsColored(); });
-    const ProductShadow& evaluate = *product;
-    return std::make_unique<ShadowGrid>(
-      [&evaluate](const glm::dvec3& p) { return evaluate.Visibility(p); }, *frame, colored, threads);
-  };
+  }
+  if (factors.empty())
+  {
+    return nullptr;
+  }
+  auto product = std::make_unique<ProductShadow>(std::move(factors));
+  if (!frame)
+  {
+    return product;
+  }
+  const bool colored = std::any_of(scene.Volumes.begin(), scene.Volumes.end(),
+    [](const VolumeInstance& v) { return v.Shadows.IsColored(); });
+  const ProductShadow& evaluate = *product;
+  return std::make_unique<ShadowGrid>(
+    [&evaluate](const glm::dvec3& p) { return evaluate.Visibility(p); }, *frame, colored, threads);
+}
+
+// Fills each shadow-receiving volume's OtherShadows: what the other volumes cast onto it.
+void CastOtherVolumeShadows(const Scene& scene, std::vector<PreparedVolume>& prepared, int threads)
+{
   const bool onGrids = scene.OtherVolumeShadowSize > 0;
-  std::vector<std::unique_ptr<LightShadow>> exactOthers; // kept alive for the meshes
   for (size_t v = 0; v < prepared.size(); ++v)
   {
     if (scene.Volumes[v].Shadows.Kind == ShadowKind::None)
@@ -417,45 +415,168 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
     prepared[v].OtherShadows.resize(scene.Lights.size());
     for (size_t l = 0; l < scene.Lights.size(); ++l)
     {
-      prepared[v].OtherShadows[l] = othersCast(v, l, onGrids ? &frame : nullptr);
+      prepared[v].OtherShadows[l] = OthersCast(scene, prepared, threads, v, l, onGrids ? &frame : nullptr);
     }
   }
-  // Per drawn mesh and light: the source's lookups, and what the other volumes cast onto it.
+}
+
+// Per drawn mesh and light: the source's lookups, and what the other volumes cast onto it.
+// Owns the shadows it points to, so it must outlive the image's shading.
+struct MeshShadows
+{
+  std::vector<const LightShadow*> SourceLookups;
+  std::vector<std::vector<const LightShadow*>> Others; // per mesh; empty if it receives none
+  std::vector<std::unique_ptr<LightShadow>> ExactOthers; // per light, exact casts
+  std::vector<std::unique_ptr<LightShadow>> OthersStore; // per mesh and light, on grids
+  const std::vector<const LightShadow*> None;
+};
+
+void GatherMeshShadows(const Scene& scene, const std::vector<PreparedVolume>& prepared, int threads,
+  size_t source, MeshShadows& meshes)
+{
+  const bool onGrids = scene.OtherVolumeShadowSize > 0;
   const size_t meshCount = scene.Surfaces ? static_cast<size_t>(scene.Surfaces->GetSurfaceCount()) : 0;
-  std::vector<const LightShadow*> sourceLookups(scene.Lights.size(), nullptr);
-  std::vector<std::vector<const LightShadow*>> meshOthers(meshCount);
-  std::vector<std::unique_ptr<LightShadow>> meshOthersStore;
-  if (source < prepared.size())
+  meshes.SourceLookups.assign(scene.Lights.size(), nullptr);
+  meshes.Others.resize(meshCount);
+  if (source >= prepared.size())
   {
+    return;
+  }
+  for (size_t l = 0; l < scene.Lights.size(); ++l)
+  {
+    meshes.SourceLookups[l] = prepared[source].ReceiverLookup(l);
+    if (!onGrids)
+    {
+      meshes.ExactOthers.push_back(OthersCast(scene, prepared, threads, source, l, nullptr));
+    }
+  }
+  for (size_t s = 0; s < meshCount; ++s)
+  {
+    const SurfaceMesh& mesh = scene.Surfaces->GetSurface(static_cast<int>(s));
+    if (!mesh.ReceivesShadows)
+    {
+      continue;
+    }
+    glm::dvec3 lo, hi;
+    MeshBounds(mesh, lo, hi);
+    const GridFrame frame = onGrids ? GridFrame::OverBox(lo, hi, scene.OtherVolumeShadowSize) : GridFrame();
     for (size_t l = 0; l < scene.Lights.size(); ++l)
     {
-      sourceLookups[l] = prepared[source].ReceiverLookup(l);
-      if (!onGrids)
+      if (onGrids)
       {
-        exactOthers.push_back(othersCast(source, l, nullptr));
+        meshes.OthersStore.push_back(OthersCast(scene, prepared, threads, source, l, &frame));
       }
-    }
-    for (size_t s = 0; s < meshCount; ++s)
-    {
-      const SurfaceMesh& mesh = scene.Surfaces->GetSurface(static_cast<int>(s));
-      if (!mesh.ReceivesShadows)
-      {
-        continue;
-      }
-      glm::dvec3 lo, hi;
-      MeshBounds(mesh, lo, hi);
-      const GridFrame frame = onGrids ? GridFrame::OverBox(lo, hi, scene.OtherVolumeShadowSize) : GridFrame();
-      for (size_t l = 0; l < scene.Lights.size(); ++l)
-      {
-        if (onGrids)
-        {
-          meshOthersStore.push_back(othersCast(source, l, &frame));
-        }
-        meshOthers[s].push_back(onGrids ? meshOthersStore.back().get() : exactOthers[l].get());
-      }
+      meshes.Others[s].push_back(onGrids ? meshes.OthersStore.back().get() : meshes.ExactOthers[l].get());
     }
   }
-  const std::vector<const LightShadow*> none;
+}
+
+// Mesh crossings in depth order, up to the first opaque one (which ends the ray), shaded and
+// appended to `fragments`; returns where the ray ends (infinity if no opaque crossing).
+double CollectMeshFragments(const Scene& scene, const MarchSettings& settings, const MeshShadows& meshes,
+  double receiverBias, const Ray& ray, std::vector<Fragment>& fragments)
+{
+  double tEnd = std::numeric_limits<double>::infinity();
+  int translucent = 0;
+  for (SurfaceHit hit = scene.Surfaces ? scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0) : SurfaceHit();
+       hit.Found; hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
+  {
+    const SurfaceMesh& mesh = scene.Surfaces->GetSurface(hit.Surface);
+    const bool opaque = mesh.Material.Opacity >= 1.0;
+    // Behind the last peeled layer: left out, as on the GPU.
+    if (opaque || scene.TranslucentLayers == 0 || translucent < scene.TranslucentLayers)
+    {
+      glm::dvec3 term;
+      const glm::dvec3 color = ReferenceRenderer::ShadeSurface(scene, *scene.Surfaces, hit, ray,
+        mesh.ReceivesShadows ? meshes.SourceLookups : meshes.None,
+        mesh.ReceivesShadows ? meshes.Others[hit.Surface] : meshes.None, receiverBias, &term);
+      const double alpha = std::clamp(mesh.Material.Opacity, 0.0, 1.0);
+      const glm::dvec3 shown = settings.Output == RenderOutput::ShadowTerm ? term : color;
+      fragments.push_back({ { hit.T, glm::dvec4(alpha * shown, alpha), glm::dvec4(alpha * term, alpha) }, false });
+      translucent += opaque ? 0 : 1;
+    }
+    if (opaque)
+    {
+      tEnd = hit.T;
+      break;
+    }
+  }
+  return tEnd;
+}
+
+// Meshes and every volume along one view ray, composited in depth order over `pixel` and
+// `termPixel` (the GPU twin's merge of meshes, peeled layers and further volumes).
+void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings,
+  const std::vector<PreparedVolume>& prepared, const MeshShadows& meshes, double receiverBias,
+  const Ray& ray, double offset, glm::dvec3& pixel, glm::dvec3& termPixel)
+{
+  std::vector<Fragment> fragments;
+  const double tEnd = CollectMeshFragments(scene, settings, meshes, receiverBias, ray, fragments);
+  // Every volume's samples before it: the first's one by one, the others' one by one
+  // (exact) or in segments (the GPU twin).
+  std::vector<RaySample> samples;
+  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  {
+    samples.clear();
+    ReferenceRenderer::MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings, nullptr, &samples);
+    if (v > 0 && scene.VolumeSegments > 0)
+    {
+      samples = Segments(samples, ray, *scene.Volumes[v].Grid, tEnd, scene.VolumeSegments);
+    }
+    for (const RaySample& sample : samples)
+    {
+      fragments.push_back({ sample, v == 0 });
+    }
+  }
+  // Stable: a mesh crossing and a sample at the same depth keep the crossing first.
+  std::stable_sort(fragments.begin(), fragments.end(),
+    [](const Fragment& a, const Fragment& b) { return a.Sample.T < b.Sample.T; });
+  glm::dvec4 front(0.0);
+  glm::dvec4 termFront(0.0);
+  bool terminated = false;
+  for (const Fragment& fragment : fragments)
+  {
+    // The first volume's march stops once the ray, all it merged included, is nearly
+    // opaque (GPU twin); each volume's own march stopped in MarchRay already.
+    terminated = terminated || (fragment.FirstVolume && front.a > settings.TerminationOpacity);
+    if (fragment.FirstVolume && terminated)
+    {
+      continue;
+    }
+    CompositeFrontToBack(front, fragment.Sample.Color);
+    CompositeFrontToBack(termFront, fragment.Sample.Term);
+  }
+  pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
+  termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;
+}
+}
+
+Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
+  Image* shadowTerm)
+{
+  CheckVolumeSamples(scene, settings);
+  const int width = scene.View.GetWidth();
+  const int height = scene.View.GetHeight();
+  Image image(width, height);
+  if (shadowTerm)
+  {
+    *shadowTerm = Image(width, height);
+  }
+
+  const size_t source = ShadowSource(scene);
+  std::vector<PreparedVolume> prepared;
+  for (size_t v = 0; v < scene.Volumes.size(); ++v)
+  {
+    prepared.push_back(Prepare(scene, scene.Volumes[v], settings, threads, v == source));
+  }
+  double receiverBias = scene.ReceiverBias;
+  if (source < scene.Volumes.size() && !(receiverBias > 0.0))
+  {
+    receiverBias = DefaultReceiverBias(scene.Volumes[source].Shadows.StepFactor * settings.SampleDistance);
+  }
+  CastOtherVolumeShadows(scene, prepared, threads);
+  MeshShadows meshes;
+  GatherMeshShadows(scene, prepared, threads, source, meshes);
 
   ParallelFor(
     height,
@@ -470,69 +591,7 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
         glm::dvec3 termPixel = scene.Background;
         if ((scene.Surfaces && !scene.Surfaces->Empty()) || scene.Volumes.size() > 1)
         {
-          // Mesh crossings in depth order, up to the first opaque one (which ends the ray).
-          std::vector<Fragment> fragments;
-          double tEnd = std::numeric_limits<double>::infinity();
-          int translucent = 0;
-          for (SurfaceHit hit = scene.Surfaces ? scene.Surfaces->NextHit(ray.Origin, ray.Direction, 0.0) : SurfaceHit();
-               hit.Found; hit = scene.Surfaces->NextHit(ray.Origin, ray.Direction, hit.T))
-          {
-            const SurfaceMesh& mesh = scene.Surfaces->GetSurface(hit.Surface);
-            const bool opaque = mesh.Material.Opacity >= 1.0;
-            // Behind the last peeled layer: left out, as on the GPU.
-            if (opaque || scene.TranslucentLayers == 0 || translucent < scene.TranslucentLayers)
-            {
-              glm::dvec3 term;
-              const glm::dvec3 color = ShadeSurface(scene, *scene.Surfaces, hit, ray,
-                mesh.ReceivesShadows ? sourceLookups : none,
-                mesh.ReceivesShadows ? meshOthers[hit.Surface] : none, receiverBias, &term);
-              const double alpha = std::clamp(mesh.Material.Opacity, 0.0, 1.0);
-              const glm::dvec3 shown = settings.Output == RenderOutput::ShadowTerm ? term : color;
-              fragments.push_back({ { hit.T, glm::dvec4(alpha * shown, alpha), glm::dvec4(alpha * term, alpha) }, false });
-              translucent += opaque ? 0 : 1;
-            }
-            if (opaque)
-            {
-              tEnd = hit.T;
-              break;
-            }
-          }
-          // Every volume's samples before it: the first's one by one, the others' one by one
-          // (exact) or in segments (the GPU twin).
-          std::vector<RaySample> samples;
-          for (size_t v = 0; v < scene.Volumes.size(); ++v)
-          {
-            samples.clear();
-            MarchRay(scene, scene.Volumes[v], prepared[v], ray, tEnd, offset, settings, nullptr, &samples);
-            if (v > 0 && scene.VolumeSegments > 0)
-            {
-              samples = Segments(samples, ray, *scene.Volumes[v].Grid, tEnd, scene.VolumeSegments);
-            }
-            for (const RaySample& sample : samples)
-            {
-              fragments.push_back({ sample, v == 0 });
-            }
-          }
-          // Stable: a mesh crossing and a sample at the same depth keep the crossing first.
-          std::stable_sort(fragments.begin(), fragments.end(),
-            [](const Fragment& a, const Fragment& b) { return a.Sample.T < b.Sample.T; });
-          glm::dvec4 front(0.0);
-          glm::dvec4 termFront(0.0);
-          bool terminated = false;
-          for (const Fragment& fragment : fragments)
-          {
-            // The first volume's march stops once the ray, all it merged included, is nearly
-            // opaque (GPU twin); each volume's own march stopped in MarchRay already.
-            terminated = terminated || (fragment.FirstVolume && front.a > settings.TerminationOpacity);
-            if (fragment.FirstVolume && terminated)
-            {
-              continue;
-            }
-            CompositeFrontToBack(front, fragment.Sample.Color);
-            CompositeFrontToBack(termFront, fragment.Sample.Term);
-          }
-          pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
-          termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;
+          CompositeMeshesAndVolumes(scene, settings, prepared, meshes, receiverBias, ray, offset, pixel, termPixel);
         }
         else if (!scene.Volumes.empty())
         {

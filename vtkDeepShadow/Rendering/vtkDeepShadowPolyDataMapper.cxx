@@ -88,6 +88,12 @@ public:
    * changed. False (and PrepareError) when there is nothing to draw.
    */
   bool Prepare(vtkDeepShadowPolyDataMapper* self, vtkActor* actor);
+
+  /** Builds the buffers once, and again when the mesh changed; true when it uploaded. */
+  bool UploadGeometry();
+  /** Binds the buffers to `program` and draws, blended or peeled as `opacity` and Peel say. */
+  void DrawTriangles(vtkOpenGLRenderWindow* window, vtkShaderProgram* program,
+    deepshadow::UniformSink& sink, double opacity);
 };
 
 vtkDeepShadowPolyDataMapper::vtkDeepShadowPolyDataMapper()
@@ -295,6 +301,188 @@ void vtkDeepShadowPolyDataMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   this->RenderPiece(renderer, actor);
 }
 
+namespace
+{
+// The mesh shader's features: lit always; shadowed when the pass gave a source and the mesh
+// receives, with what the other volumes cast, a peeled layer, or the shadow term on request.
+void ChooseSurfaceFeatures(vtkDeepShadowTechnique* technique, const deepshadow::ShadowContext* context,
+  const deepshadow::OtherVolumeShadows* others, const deepshadow::PeelStep* peel, bool shadowTerm,
+  std::set<std::string>& features, std::map<std::string, deepshadow::ShaderFeature>& runtime)
+{
+  if (technique)
+  {
+    // The technique's own lookup: a cache's grid covers the volume's box only.
+    context->AddVolumeFeatures(features, runtime, technique->NeedsFeeler(true));
+    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource(true));
+    if (technique->NeedsFeeler(true))
+    {
+      features.insert("Feeler");
+    }
+    for (const std::string& feature : technique->GetLookupFeatures(true))
+    {
+      features.insert(feature);
+    }
+  }
+  if (others)
+  {
+    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
+  }
+  if (peel)
+  {
+    features.insert("Peel");
+  }
+  if (shadowTerm)
+  {
+    features.insert("ShadowTerm");
+  }
+}
+
+// Lights, the actor's placement and the camera: what every mesh shader reads.
+void SetViewUniforms(deepshadow::UniformSink& sink, vtkRenderer* renderer, vtkActor* actor,
+  const std::vector<deepshadow::Light>& lights, const deepshadow::SurfaceMaterial& material)
+{
+  deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading);
+  const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
+  sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
+  sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));
+  sink.Set("u_worldToClip", glm::mat4(adapter::MakeCamera(renderer).GetViewProjection()));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double position[3], direction[3];
+  camera->GetPosition(position);
+  camera->GetDirectionOfProjection(direction);
+  sink.Set("u_cameraPosition", glm::vec3(position[0], position[1], position[2]));
+  sink.Set("u_viewDirection", glm::vec3(direction[0], direction[1], direction[2]));
+  sink.Set("u_parallel", camera->GetParallelProjection() ? 1 : 0);
+}
+
+// The shadow source's textures and uniforms, the other volumes' grids and the previous
+// peeled layer, bound for the draw; UnbindShadowInputs undoes it.
+void BindShadowInputs(deepshadow::UniformSink& sink, vtkDeepShadowTechnique* technique,
+  const deepshadow::ShadowContext* context, const deepshadow::OtherVolumeShadows* others,
+  const deepshadow::PeelStep* peel, const std::vector<deepshadow::Light>& lights, double shadowBias)
+{
+  if (technique)
+  {
+    context->ActivateVolumeTextures();
+    context->SetVolumeUniforms(sink);
+    vtkDeepShadowTechnique::Internals::Bind(technique, sink, *context, true);
+    const double bias = shadowBias > 0.0
+      ? shadowBias
+      : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
+    sink.Set("u_receiverOffset", static_cast<float>(bias));
+  }
+  if (others)
+  {
+    others->Activate(sink, static_cast<int>(lights.size()));
+  }
+  if (peel)
+  {
+    peel->Previous->Activate();
+    sink.Set("u_peelPrevious", peel->Previous->GetTextureUnit());
+    sink.Set("u_peelHasPrevious", peel->First ? 0 : 1);
+  }
+}
+
+void UnbindShadowInputs(vtkDeepShadowTechnique* technique, const deepshadow::ShadowContext* context,
+  const deepshadow::OtherVolumeShadows* others, const deepshadow::PeelStep* peel)
+{
+  if (peel)
+  {
+    peel->Previous->Deactivate();
+  }
+  if (technique)
+  {
+    technique->Unbind(true);
+    context->DeactivateVolumeTextures();
+  }
+  if (others)
+  {
+    others->Deactivate();
+  }
+}
+}
+
+bool vtkDeepShadowPolyDataMapper::Internals::UploadGeometry()
+{
+  // Buffers: position, normal, colour per point; re-uploaded only when the mesh changed.
+  if (!this->VertexArray)
+  {
+    this->VertexArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    this->Vertices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  }
+  if (this->Uploaded)
+  {
+    return false;
+  }
+  std::vector<float> vertices;
+  vertices.reserve(this->Points.size() * 10);
+  for (size_t i = 0; i < this->Points.size(); ++i)
+  {
+    vertices.insert(vertices.end(), { this->Points[i].x, this->Points[i].y, this->Points[i].z,
+      this->Normals[i].x, this->Normals[i].y, this->Normals[i].z, this->Colors[i].r, this->Colors[i].g,
+      this->Colors[i].b, this->Colors[i].a });
+  }
+  this->Vertices->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
+  this->Triangles->Upload(this->Indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+  this->Uploaded = true;
+  this->VertexArrayProgram = nullptr;
+  return true;
+}
+
+void vtkDeepShadowPolyDataMapper::Internals::DrawTriangles(vtkOpenGLRenderWindow* window,
+  vtkShaderProgram* program, deepshadow::UniformSink& sink, double opacity)
+{
+  // The attributes are bound again only for a new program.
+  const bool programChanged = this->VertexArrayProgram != program;
+  if (programChanged)
+  {
+    this->VertexArray->ShaderProgramChanged();
+  }
+  this->VertexArray->Bind();
+  if (programChanged)
+  {
+    const int stride = 10 * sizeof(float);
+    this->VertexArray->AddAttributeArray(program, this->Vertices, "a_position", 0, stride, VTK_FLOAT, 3, false);
+    this->VertexArray->AddAttributeArray(
+      program, this->Vertices, "a_normal", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
+    this->VertexArray->AddAttributeArray(
+      program, this->Vertices, "a_color", 6 * sizeof(float), stride, VTK_FLOAT, 4, false);
+    this->VertexArrayProgram = program;
+  }
+  this->Triangles->Bind();
+  {
+    vtkOpenGLState* state = window->GetState();
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    sink.Set("u_opacity", static_cast<float>(opacity));
+    if (this->Peel)
+    {
+      // One layer: the nearest fragment behind the previous layer wins the depth test.
+      state->vtkglDisable(GL_BLEND);
+      state->vtkglDepthMask(GL_TRUE);
+    }
+    else if (opacity < 1.0)
+    {
+      // Premultiplied "over"; translucent meshes do not hide what is drawn after them.
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+      state->vtkglDepthMask(GL_FALSE);
+    }
+    else
+    {
+      state->vtkglDisable(GL_BLEND);
+      state->vtkglDepthMask(GL_TRUE);
+    }
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(this->Indices.size()), GL_UNSIGNED_INT, nullptr);
+  }
+  this->Triangles->Release();
+  this->VertexArray->Release();
+}
+
 void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
@@ -311,28 +499,8 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
     return;
   }
   this->LastError.clear();
-
-  // Buffers: position, normal, colour per point; re-uploaded only when the mesh changed.
-  if (!impl.VertexArray)
+  if (impl.UploadGeometry())
   {
-    impl.VertexArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    impl.Vertices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    impl.Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  }
-  if (!impl.Uploaded)
-  {
-    std::vector<float> vertices;
-    vertices.reserve(impl.Points.size() * 10);
-    for (size_t i = 0; i < impl.Points.size(); ++i)
-    {
-      vertices.insert(vertices.end(), { impl.Points[i].x, impl.Points[i].y, impl.Points[i].z,
-        impl.Normals[i].x, impl.Normals[i].y, impl.Normals[i].z, impl.Colors[i].r, impl.Colors[i].g,
-        impl.Colors[i].b, impl.Colors[i].a });
-    }
-    impl.Vertices->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Triangles->Upload(impl.Indices, vtkOpenGLBufferObject::ElementArrayBuffer);
-    impl.Uploaded = true;
-    impl.VertexArrayProgram = nullptr;
     ++this->GeometryUploads;
   }
 
@@ -341,39 +509,15 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   const deepshadow::ShadowContext* context =
     this->ReceiveShadows && frame ? frame->Source : nullptr;
   vtkDeepShadowTechnique* technique = context ? frame->SourceTechnique : nullptr;
-  std::set<std::string> features{ "Lighting", "Phong", "MeshNormal" };
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  if (technique)
-  {
-    // The technique's own lookup: a cache's grid covers the volume's box only.
-    context->AddVolumeFeatures(features, runtime, technique->NeedsFeeler(true));
-    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource(true));
-    if (technique->NeedsFeeler(true))
-    {
-      features.insert("Feeler");
-    }
-    for (const std::string& feature : technique->GetLookupFeatures(true))
-    {
-      features.insert(feature);
-    }
-  }
   // What the other shadowing volumes cast, on a grid over this mesh.
   const deepshadow::OtherVolumeShadows* passOthers = frame ? frame->OthersOnto(this) : nullptr;
   const deepshadow::OtherVolumeShadows* others =
     technique && passOthers && passOthers->Any() ? passOthers : nullptr;
-  if (others)
-  {
-    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
-  }
   const deepshadow::PeelStep* peel = impl.Peel;
-  if (peel)
-  {
-    features.insert("Peel");
-  }
-  if (this->OutputMode == OutputShadowTerm)
-  {
-    features.insert("ShadowTerm");
-  }
+  std::set<std::string> features{ "Lighting", "Phong", "MeshNormal" };
+  std::map<std::string, deepshadow::ShaderFeature> runtime;
+  ChooseSurfaceFeatures(
+    technique, context, others, peel, this->OutputMode == OutputShadowTerm, features, runtime);
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features, runtime);
   this->ShaderFeatures.assign(features.begin(), features.end());
   if (technique)
@@ -397,99 +541,10 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   deepshadow::UniformSink sink(program);
   const deepshadow::SurfaceMaterial material = adapter::MakeSurfaceMaterial(actor->GetProperty());
   const std::vector<deepshadow::Light> lights = context ? context->Lights : adapter::MakeLights(renderer);
-  deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading);
-  const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
-  sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
-  sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));
-  sink.Set("u_worldToClip", glm::mat4(adapter::MakeCamera(renderer).GetViewProjection()));
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double position[3], direction[3];
-  camera->GetPosition(position);
-  camera->GetDirectionOfProjection(direction);
-  sink.Set("u_cameraPosition", glm::vec3(position[0], position[1], position[2]));
-  sink.Set("u_viewDirection", glm::vec3(direction[0], direction[1], direction[2]));
-  sink.Set("u_parallel", camera->GetParallelProjection() ? 1 : 0);
-  if (technique)
-  {
-    context->ActivateVolumeTextures();
-    context->SetVolumeUniforms(sink);
-    vtkDeepShadowTechnique::Internals::Bind(technique, sink, *context, true);
-    const double bias = this->ShadowBias > 0.0
-      ? this->ShadowBias
-      : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
-    sink.Set("u_receiverOffset", static_cast<float>(bias));
-  }
-  if (others)
-  {
-    others->Activate(sink, static_cast<int>(lights.size()));
-  }
-  if (peel)
-  {
-    peel->Previous->Activate();
-    sink.Set("u_peelPrevious", peel->Previous->GetTextureUnit());
-    sink.Set("u_peelHasPrevious", peel->First ? 0 : 1);
-  }
-
-  const bool programChanged = impl.VertexArrayProgram != program;
-  if (programChanged)
-  {
-    impl.VertexArray->ShaderProgramChanged();
-  }
-  impl.VertexArray->Bind();
-  if (programChanged)
-  {
-    const int stride = 10 * sizeof(float);
-    impl.VertexArray->AddAttributeArray(program, impl.Vertices, "a_position", 0, stride, VTK_FLOAT, 3, false);
-    impl.VertexArray->AddAttributeArray(
-      program, impl.Vertices, "a_normal", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
-    impl.VertexArray->AddAttributeArray(
-      program, impl.Vertices, "a_color", 6 * sizeof(float), stride, VTK_FLOAT, 4, false);
-    impl.VertexArrayProgram = program;
-  }
-  impl.Triangles->Bind();
-  {
-    vtkOpenGLState* state = window->GetState();
-    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask depthMask(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    sink.Set("u_opacity", static_cast<float>(material.Opacity));
-    if (peel)
-    {
-      // One layer: the nearest fragment behind the previous layer wins the depth test.
-      state->vtkglDisable(GL_BLEND);
-      state->vtkglDepthMask(GL_TRUE);
-    }
-    else if (material.Opacity < 1.0)
-    {
-      // Premultiplied "over"; translucent meshes do not hide what is drawn after them.
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-      state->vtkglDepthMask(GL_FALSE);
-    }
-    else
-    {
-      state->vtkglDisable(GL_BLEND);
-      state->vtkglDepthMask(GL_TRUE);
-    }
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(impl.Indices.size()), GL_UNSIGNED_INT, nullptr);
-  }
-  impl.Triangles->Release();
-  impl.VertexArray->Release();
-  if (peel)
-  {
-    peel->Previous->Deactivate();
-  }
-  if (technique)
-  {
-    technique->Unbind(true);
-    context->DeactivateVolumeTextures();
-  }
-  if (others)
-  {
-    others->Deactivate();
-  }
+  SetViewUniforms(sink, renderer, actor, lights, material);
+  BindShadowInputs(sink, technique, context, others, peel, lights, this->ShadowBias);
+  impl.DrawTriangles(window, program, sink, material.Opacity);
+  UnbindShadowInputs(technique, context, others, peel);
 }
 
 void vtkDeepShadowPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)

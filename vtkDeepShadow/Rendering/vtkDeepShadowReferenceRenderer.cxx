@@ -41,10 +41,12 @@ void vtkDeepShadowReferenceRenderer::PrepareRenderer(vtkRenderer* renderer)
   renderer->UpdateLightsGeometryToFollowCamera();
 }
 
-bool vtkDeepShadowReferenceRenderer::Render(
-  vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm)
+namespace
 {
-  this->LastError.clear();
+// The renderer's camera, lights, background and lighting model: what the scene takes from
+// vtkRenderer itself.
+deepshadow::Scene MakeSceneFrame(vtkRenderer* renderer)
+{
   deepshadow::Scene scene;
   scene.View = adapter::MakeCamera(renderer);
   scene.Lights = adapter::MakeLights(renderer);
@@ -54,96 +56,89 @@ bool vtkDeepShadowReferenceRenderer::Render(
   scene.Background = { background[0], background[1], background[2] };
   scene.AmbientLight = { ambient[0], ambient[1], ambient[2] };
   scene.TwoSidedLighting = renderer->GetTwoSidedLighting() != 0;
+  return scene;
+}
 
-  double sampleDistance = this->SampleDistance;
-  deepshadow::MarchSettings settings;
-  vtkVolumeCollection* volumes = renderer->GetVolumes();
-  vtkCollectionSimpleIterator it;
-  volumes->InitTraversal(it);
-  while (vtkVolume* volume = volumes->GetNextVolume(it))
+// One visible volume as the reference renders it: its grid, transfer, material, technique
+// parameters and bound, as the GPU mapper builds them. False, with `error`, when the data or
+// the bound cannot be converted.
+bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replaceNonFinite,
+  bool groundTruth, deepshadow::VolumeInstance& instance, std::string& error)
+{
+  auto grid = adapter::MakeVolumeGrid(vtkImageData::SafeDownCast(mapper->GetDataSetInput()),
+    volume->GetMatrix(), replaceNonFinite, error);
+  if (!grid)
   {
-    auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
-    if (!volume->GetVisibility() || !mapper)
+    return false;
+  }
+  instance.Grid = grid;
+  vtkVolumeProperty* property = volume->GetProperty();
+  instance.Transfer = adapter::MakeTransferFunction(property);
+  instance.Surface = adapter::MakeMaterial(property);
+  instance.Shade = property->GetShade(0) != 0;
+  instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+    ? deepshadow::Interpolation::Nearest
+    : deepshadow::Interpolation::Linear;
+  auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
+  vtkDeepShadowTechnique* technique = ours ? ours->GetShadowTechnique() : nullptr;
+  if (technique)
+  {
+    instance.Shadows = technique->GetParameters();
+    if (technique->GetShadowProperty())
     {
-      continue;
-    }
-    if (mapper->GetNumberOfInputConnections(0) > 0)
-    {
-      mapper->Update();
-    }
-    std::string error;
-    auto grid = adapter::MakeVolumeGrid(vtkImageData::SafeDownCast(mapper->GetDataSetInput()),
-      volume->GetMatrix(), this->ReplaceNonFiniteScalars, error);
-    if (!grid)
-    {
-      this->LastError = error;
-      vtkErrorMacro(<< error);
-      return false;
-    }
-    deepshadow::VolumeInstance instance;
-    instance.Grid = grid;
-    vtkVolumeProperty* property = volume->GetProperty();
-    instance.Transfer = adapter::MakeTransferFunction(property);
-    instance.Surface = adapter::MakeMaterial(property);
-    instance.Shade = property->GetShade(0) != 0;
-    instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
-      ? deepshadow::Interpolation::Nearest
-      : deepshadow::Interpolation::Linear;
-    auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
-    vtkDeepShadowTechnique* technique = ours ? ours->GetShadowTechnique() : nullptr;
-    if (technique)
-    {
-      instance.Shadows = technique->GetParameters();
-      if (technique->GetShadowProperty())
-      {
-        instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
-      }
-    }
-    if (ours && ours->GetNumberOfBounds() > 0)
-    {
-      // The mapper's bound, built the same way (in the data's coordinates).
-      std::vector<vtkPolyData*> bounds;
-      for (int b = 0; b < ours->GetNumberOfBounds(); ++b)
-      {
-        bounds.push_back(ours->GetBound(b));
-      }
-      auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
-      instance.Bound = adapter::MakeBoundRegion(bounds, ours->GetBoundExpression(),
-        glm::inverse(adapter::IndexToWorld(image, nullptr)), error);
-      if (!instance.Bound)
-      {
-        this->LastError = error;
-        vtkErrorMacro(<< error);
-        return false;
-      }
-    }
-    if (this->Shadows == GroundTruthShadows)
-    {
-      // Coloured when the technique is: the truth of the model it approximates.
-      instance.Shadows = deepshadow::ShadowParameters::GroundTruth(instance.Shadows.IsColored());
-    }
-    scene.Volumes.push_back(instance);
-
-    // The GPU mapper's parameters, taken from the first volume that has one.
-    if (ours)
-    {
-      if (sampleDistance <= 0.0)
-      {
-        sampleDistance = ours->GetSampleDistance();
-      }
-      if (this->GpuTwin && scene.Volumes.size() == 1)
-      {
-        settings = deepshadow::MarchSettings::GpuTwin(0.0, ours->GetTransferTableSize(),
-          ours->GetJitter(), ours->GetJitterSeed(), ours->GetTerminationOpacity());
-      }
-      if (ours->GetOutputMode() == vtkDeepShadowVolumeMapper::OutputShadowTerm)
-      {
-        settings.Output = deepshadow::RenderOutput::ShadowTerm;
-      }
+      instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
     }
   }
-  // Meshes of vtkDeepShadowPolyDataMapper: drawn, and cast when they do (as vtkDeepShadowPass).
-  std::vector<deepshadow::SurfaceMesh> drawn, casting;
+  if (ours && ours->GetNumberOfBounds() > 0)
+  {
+    // The mapper's bound, built the same way (in the data's coordinates).
+    std::vector<vtkPolyData*> bounds;
+    for (int b = 0; b < ours->GetNumberOfBounds(); ++b)
+    {
+      bounds.push_back(ours->GetBound(b));
+    }
+    auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
+    instance.Bound = adapter::MakeBoundRegion(bounds, ours->GetBoundExpression(),
+      glm::inverse(adapter::IndexToWorld(image, nullptr)), error);
+    if (!instance.Bound)
+    {
+      return false;
+    }
+  }
+  if (groundTruth)
+  {
+    // Coloured when the technique is: the truth of the model it approximates.
+    instance.Shadows = deepshadow::ShadowParameters::GroundTruth(instance.Shadows.IsColored());
+  }
+  return true;
+}
+
+// The GPU mapper's parameters, taken from the first volume that has one (`volumeCount`: the
+// volumes in the scene so far, this one included).
+void TakeMapperSettings(vtkDeepShadowVolumeMapper* ours, bool gpuTwin, size_t volumeCount,
+  double& sampleDistance, deepshadow::MarchSettings& settings)
+{
+  if (sampleDistance <= 0.0)
+  {
+    sampleDistance = ours->GetSampleDistance();
+  }
+  if (gpuTwin && volumeCount == 1)
+  {
+    settings = deepshadow::MarchSettings::GpuTwin(0.0, ours->GetTransferTableSize(),
+      ours->GetJitter(), ours->GetJitterSeed(), ours->GetTerminationOpacity());
+  }
+  if (ours->GetOutputMode() == vtkDeepShadowVolumeMapper::OutputShadowTerm)
+  {
+    settings.Output = deepshadow::RenderOutput::ShadowTerm;
+  }
+}
+
+// Meshes of vtkDeepShadowPolyDataMapper: drawn, and cast when they do (as vtkDeepShadowPass).
+// Also takes the first mapper's shadow bias as the scene's receiver bias.
+void GatherMeshes(vtkRenderer* renderer, deepshadow::Scene& scene,
+  std::vector<deepshadow::SurfaceMesh>& drawn, std::vector<deepshadow::SurfaceMesh>& casting)
+{
+  vtkCollectionSimpleIterator it;
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal(it);
   while (vtkActor* actor = actors->GetNextActor(it))
@@ -165,6 +160,66 @@ bool vtkDeepShadowReferenceRenderer::Render(
     }
     drawn.push_back(std::move(mesh));
   }
+}
+
+// Without volumes there is nothing to march: the picture (and its shadow term) is the
+// background.
+void FillBackground(const deepshadow::Scene& scene, deepshadow::Image& image, deepshadow::Image* shadowTerm)
+{
+  image = deepshadow::Image(scene.View.GetWidth(), scene.View.GetHeight());
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      image.Set(x, y, scene.Background);
+    }
+  }
+  if (shadowTerm)
+  {
+    *shadowTerm = image;
+  }
+}
+}
+
+bool vtkDeepShadowReferenceRenderer::Render(
+  vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm)
+{
+  this->LastError.clear();
+  deepshadow::Scene scene = MakeSceneFrame(renderer);
+
+  double sampleDistance = this->SampleDistance;
+  deepshadow::MarchSettings settings;
+  vtkVolumeCollection* volumes = renderer->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
+    if (!volume->GetVisibility() || !mapper)
+    {
+      continue;
+    }
+    if (mapper->GetNumberOfInputConnections(0) > 0)
+    {
+      mapper->Update();
+    }
+    std::string error;
+    deepshadow::VolumeInstance instance;
+    if (!MakeVolumeInstance(volume, mapper, this->ReplaceNonFiniteScalars,
+          this->Shadows == GroundTruthShadows, instance, error))
+    {
+      this->LastError = error;
+      vtkErrorMacro(<< error);
+      return false;
+    }
+    scene.Volumes.push_back(instance);
+    if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
+    {
+      TakeMapperSettings(ours, this->GpuTwin, scene.Volumes.size(), sampleDistance, settings);
+    }
+  }
+  std::vector<deepshadow::SurfaceMesh> drawn, casting;
+  GatherMeshes(renderer, scene, drawn, casting);
   // The GPU twin peels translucent meshes into as many layers as the scene pass does...
   if (auto* pass = vtkDeepShadowPass::SafeDownCast(renderer->GetPass()))
   {
@@ -192,18 +247,7 @@ bool vtkDeepShadowReferenceRenderer::Render(
   }
   if (scene.Volumes.empty())
   {
-    image = deepshadow::Image(scene.View.GetWidth(), scene.View.GetHeight());
-    for (int y = 0; y < image.Height; ++y)
-    {
-      for (int x = 0; x < image.Width; ++x)
-      {
-        image.Set(x, y, scene.Background);
-      }
-    }
-    if (shadowTerm)
-    {
-      *shadowTerm = image;
-    }
+    FillBackground(scene, image, shadowTerm);
     return true;
   }
   if (sampleDistance <= 0.0)

@@ -17,6 +17,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <functional>
+#include <vector>
 
 namespace
 {
@@ -32,126 +33,155 @@ bool Contains(const std::string& source, const char* text)
 {
   return source.find(text) != std::string::npos;
 }
-}
 
-int TestShadowRebuilds(int, char*[])
+// The volume, its two lights and the window every case renders; the cases run in order on
+// the same objects (each expects the state the previous one left).
+struct Scene
 {
-  bool ok = true;
-  auto data = deepshadow::testing::MakeShadowVolume(32);
-  vtkNew<vtkDeepShadowRenderWindow> window;
-  window->SetSize(80, 80);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> mapper;
-  mapper->SetInputData(data);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0, 0.0);
-  opacity->AddPoint(40, 0.0);
-  opacity->AddPoint(200, 0.8);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0, 1, 1, 1);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetScalarOpacity(opacity);
-  property->SetColor(color);
-  property->ShadeOn();
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  vtkNew<vtkLight> key, fill;
-  for (vtkLight* light : { key.Get(), fill.Get() })
+  vtkSmartPointer<vtkImageData> Data;
+  vtkNew<vtkDeepShadowRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkDeepShadowVolumeMapper> Mapper;
+  vtkNew<vtkPiecewiseFunction> Opacity;
+  vtkNew<vtkColorTransferFunction> Color;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkLight> Key, Fill;
+  // The techniques the cases made, kept to the end as when one function held them all.
+  std::vector<vtkSmartPointer<vtkObject>> Techniques;
+};
+
+void SetUp(Scene& s)
+{
+  s.Data = deepshadow::testing::MakeShadowVolume(32);
+  s.Window->SetSize(80, 80);
+  s.Window->AddRenderer(s.Renderer);
+  s.Mapper->SetInputData(s.Data);
+  s.Opacity->AddPoint(0, 0.0);
+  s.Opacity->AddPoint(40, 0.0);
+  s.Opacity->AddPoint(200, 0.8);
+  s.Color->AddRGBPoint(0, 1, 1, 1);
+  s.Property->SetScalarOpacity(s.Opacity);
+  s.Property->SetColor(s.Color);
+  s.Property->ShadeOn();
+  s.Volume->SetMapper(s.Mapper);
+  s.Volume->SetProperty(s.Property);
+  s.Renderer->AddVolume(s.Volume);
+  for (vtkLight* light : { s.Key.Get(), s.Fill.Get() })
   {
     light->SetLightTypeToSceneLight();
     light->SetFocalPoint(0.0, 0.0, 0.0);
-    renderer->AddLight(light);
+    s.Renderer->AddLight(light);
   }
-  key->SetPosition(0.3, 0.2, 1.0);
-  fill->SetPosition(-1.0, 0.5, 0.5);
-  fill->SetIntensity(0.4);
-  renderer->ResetCamera();
+  s.Key->SetPosition(0.3, 0.2, 1.0);
+  s.Fill->SetPosition(-1.0, 0.5, 0.5);
+  s.Fill->SetIntensity(0.4);
+  s.Renderer->ResetCamera();
+}
 
+bool NoTechnique(Scene& s)
+{
+  bool ok = true;
   // No technique: no shadow code at all.
-  window->Render();
-  ok = !Contains(mapper->GetFragmentShaderSource(), "u_shadow") &&
-    !Contains(mapper->GetFragmentShaderSource(), "feeler") && ok;
-  ok = Expect("no technique", mapper, 0) && ok;
+  s.Window->Render();
+  ok = !Contains(s.Mapper->GetFragmentShaderSource(), "u_shadow") &&
+    !Contains(s.Mapper->GetFragmentShaderSource(), "feeler") && ok;
+  ok = Expect("no technique", s.Mapper, 0) && ok;
+  return ok;
+}
 
+// The shadow map: rebuilt per light for what its maps depend on, never for the camera.
+bool ShadowMap(Scene& s)
+{
+  bool ok = true;
   vtkNew<vtkDeepShadowShadowMapTechnique> map;
   map->SetMapSize(64);
-  mapper->SetShadowTechnique(map);
-  window->Render();
-  const std::string& source = mapper->GetFragmentShaderSource();
+  s.Mapper->SetShadowTechnique(map);
+  s.Window->Render();
+  const std::string& source = s.Mapper->GetFragmentShaderSource();
   const bool mapOnly = Contains(source, "filteredShadow") && !Contains(source, "u_shadowVolume") &&
     !Contains(source, "feelerTowardsLight");
   std::printf("shadow-map shader holds only the map lookup: %s\n", mapOnly ? "ok" : "FAILED");
   ok = mapOnly && ok;
-  ok = Expect("shadow map, two lights", mapper, 2) && ok;
+  ok = Expect("shadow map, two lights", s.Mapper, 2) && ok;
 
   for (int i = 0; i < 4; ++i)
   {
-    renderer->GetActiveCamera()->Azimuth(20.0);
-    renderer->GetActiveCamera()->Elevation(5.0);
-    window->Render();
+    s.Renderer->GetActiveCamera()->Azimuth(20.0);
+    s.Renderer->GetActiveCamera()->Elevation(5.0);
+    s.Window->Render();
   }
-  ok = Expect("camera moved 4 times", mapper, 2) && ok;
+  ok = Expect("camera moved 4 times", s.Mapper, 2) && ok;
 
-  key->SetPosition(0.5, 0.2, 1.0);
-  window->Render();
-  ok = Expect("key light moved: only its map", mapper, 3) && ok;
+  s.Key->SetPosition(0.5, 0.2, 1.0);
+  s.Window->Render();
+  ok = Expect("key light moved: only its map", s.Mapper, 3) && ok;
 
-  color->AddRGBPoint(200, 1, 0, 0);
-  window->Render();
-  ok = Expect("colour changed: nothing", mapper, 3) && ok;
+  s.Color->AddRGBPoint(200, 1, 0, 0);
+  s.Window->Render();
+  ok = Expect("colour changed: nothing", s.Mapper, 3) && ok;
 
   map->SetFilter(vtkDeepShadowShadowMapTechnique::PoissonDisc);
   map->SetBias(3.0);
-  window->Render();
-  ok = Expect("filter and bias changed: lookup only", mapper, 3) && ok;
+  s.Window->Render();
+  ok = Expect("filter and bias changed: lookup only", s.Mapper, 3) && ok;
 
-  opacity->AddPoint(120, 0.5);
-  window->Render();
-  ok = Expect("opacity changed: both maps", mapper, 5) && ok;
+  s.Opacity->AddPoint(120, 0.5);
+  s.Window->Render();
+  ok = Expect("opacity changed: both maps", s.Mapper, 5) && ok;
 
   map->SetThreshold(0.4);
-  window->Render();
-  ok = Expect("threshold changed: both maps", mapper, 7) && ok;
+  s.Window->Render();
+  ok = Expect("threshold changed: both maps", s.Mapper, 7) && ok;
 
-  volume->SetPosition(3.0, 0.0, 0.0);
-  window->Render();
-  ok = Expect("volume moved: both maps", mapper, 9) && ok;
+  s.Volume->SetPosition(3.0, 0.0, 0.0);
+  s.Window->Render();
+  ok = Expect("volume moved: both maps", s.Mapper, 9) && ok;
 
-  data->Modified();
-  window->Render();
-  ok = Expect("data modified: both maps", mapper, 11) && ok;
+  s.Data->Modified();
+  s.Window->Render();
+  ok = Expect("data modified: both maps", s.Mapper, 11) && ok;
 
-  fill->SetShadowAttenuation(0.0);
-  window->Render();
-  ok = Expect("fill light casts no shadow: nothing built", mapper, 11) && ok;
+  s.Fill->SetShadowAttenuation(0.0);
+  s.Window->Render();
+  ok = Expect("fill light casts no shadow: nothing built", s.Mapper, 11) && ok;
+  s.Techniques.push_back(map.Get());
+  return ok;
+}
 
+bool Rays(Scene& s)
+{
+  bool ok = true;
   // Cached rays: same rules; uncached rays build nothing and carry the feeler instead.
   vtkNew<vtkDeepShadowRayTechnique> rays;
   rays->CachedOn();
   rays->SetShadowVolumeSize(24);
-  mapper->SetShadowTechnique(rays);
-  window->Render();
-  ok = Expect("cached rays, one shadow-casting light", mapper, 1) && ok;
-  renderer->GetActiveCamera()->Azimuth(30.0);
-  window->Render();
-  ok = Expect("camera moved", mapper, 1) && ok;
-  key->SetPosition(0.5, 0.4, 1.0);
-  window->Render();
-  ok = Expect("light moved", mapper, 2) && ok;
-  ok = Contains(mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
-    !Contains(mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
+  s.Mapper->SetShadowTechnique(rays);
+  s.Window->Render();
+  ok = Expect("cached rays, one shadow-casting light", s.Mapper, 1) && ok;
+  s.Renderer->GetActiveCamera()->Azimuth(30.0);
+  s.Window->Render();
+  ok = Expect("camera moved", s.Mapper, 1) && ok;
+  s.Key->SetPosition(0.5, 0.4, 1.0);
+  s.Window->Render();
+  ok = Expect("light moved", s.Mapper, 2) && ok;
+  ok = Contains(s.Mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
+    !Contains(s.Mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
 
   rays->CachedOff();
-  window->Render();
-  ok = Expect("uncached rays build nothing", mapper, 2) && ok;
-  ok = Contains(mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
+  s.Window->Render();
+  ok = Expect("uncached rays build nothing", s.Mapper, 2) && ok;
+  ok = Contains(s.Mapper->GetFragmentShaderSource(), "feelerTowardsLight") && ok;
+  s.Techniques.push_back(rays.Get());
+  return ok;
+}
 
+bool LightSpaceTechniques(Scene& s)
+{
+  bool ok = true;
   // The other light-space techniques, uncached and cached, with both lights casting: the
   // same rules, their own parameters, and only their own lookup in the shader.
-  fill->SetShadowAttenuation(1.0);
+  s.Fill->SetShadowAttenuation(1.0);
   vtkNew<vtkDeepShadowDeepShadowMapTechnique> dsm, dsmColor;
   vtkNew<vtkDeepShadowOpacityLevelsTechnique> levels;
   vtkNew<vtkDeepShadowStochasticShadowMapTechnique> cssm;
@@ -178,11 +208,11 @@ int TestShadowRebuilds(int, char*[])
     move += 0.05;
     technique->SetMapSize(32);
     technique->SetShadowVolumeSize(16);
-    mapper->SetShadowTechnique(technique);
+    s.Mapper->SetShadowTechnique(technique);
     const std::string name = technique->GetName();
     auto step = [&](const std::string& what, int expected) {
       const int before = technique->GetBuildCount();
-      window->Render();
+      s.Window->Render();
       const int built = technique->GetBuildCount() - before;
       const bool good = built == expected;
       std::printf("%-10s %-42s built %d (expected %d) %s\n", name.c_str(), what.c_str(), built,
@@ -190,7 +220,7 @@ int TestShadowRebuilds(int, char*[])
       ok = good && ok;
     };
     step("first render: both lights", 2);
-    const std::string& source = mapper->GetFragmentShaderSource();
+    const std::string& source = s.Mapper->GetFragmentShaderSource();
     for (const char* lookup : lookups)
     {
       if (Contains(source, lookup) != (std::string(lookup) == t.Lookup))
@@ -200,17 +230,17 @@ int TestShadowRebuilds(int, char*[])
         ok = false;
       }
     }
-    renderer->GetActiveCamera()->Azimuth(25.0);
+    s.Renderer->GetActiveCamera()->Azimuth(25.0);
     step("camera moved", 0);
-    fill->SetShadowAttenuation(0.5);
+    s.Fill->SetShadowAttenuation(0.5);
     step("a light's shadow attenuation changed", 0);
-    color->AddRGBPoint(200, 1.0, 0.2, 0.2);
+    s.Color->AddRGBPoint(200, 1.0, 0.2, 0.2);
     step(t.Colored ? "colour changed: both (coloured)" : "colour changed: nothing (grey)", t.Colored ? 2 : 0);
-    color->RemovePoint(200);
+    s.Color->RemovePoint(200);
     step("colour restored", t.Colored ? 2 : 0);
     t.ChangeStructure();
     step("own parameter changed: both", 2);
-    key->SetPosition(0.2, 0.3 + move, 1.0);
+    s.Key->SetPosition(0.2, 0.3 + move, 1.0);
     step("key light moved: its own", 1);
     if (t.ChangeLookup)
     {
@@ -219,9 +249,9 @@ int TestShadowRebuilds(int, char*[])
     }
     technique->CachedOn();
     step("cached: both caches", 2);
-    ok = Contains(mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
-      !Contains(mapper->GetFragmentShaderSource(), t.Lookup) && ok;
-    renderer->GetActiveCamera()->Azimuth(25.0);
+    ok = Contains(s.Mapper->GetFragmentShaderSource(), "u_shadowVolume") &&
+      !Contains(s.Mapper->GetFragmentShaderSource(), t.Lookup) && ok;
+    s.Renderer->GetActiveCamera()->Azimuth(25.0);
     step("cached, camera moved", 0);
     technique->SetShadowVolumeSize(20);
     step("cached, shadow volume size changed: both", 2);
@@ -230,9 +260,23 @@ int TestShadowRebuilds(int, char*[])
       cssm->SetOffsets(7);
       step("cached, lookup-only parameter changed: caches", 2);
     }
-    fill->SetPosition(-1.0, 0.4 + move, 0.5);
+    s.Fill->SetPosition(-1.0, 0.4 + move, 0.5);
     step("cached, fill light moved: its own", 1);
     technique->CachedOff();
   }
+  s.Techniques.insert(s.Techniques.end(), { dsm.Get(), dsmColor.Get(), levels.Get(), cssm.Get() });
+  return ok;
+}
+}
+
+int TestShadowRebuilds(int, char*[])
+{
+  bool ok = true;
+  Scene s;
+  SetUp(s);
+  ok = NoTechnique(s) && ok;
+  ok = ShadowMap(s) && ok;
+  ok = Rays(s) && ok;
+  ok = LightSpaceTechniques(s) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
