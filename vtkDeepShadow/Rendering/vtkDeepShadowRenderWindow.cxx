@@ -70,6 +70,11 @@ const char* vtkDeepShadowRenderWindow::GetBackendAsString() const
   return this->Backend == EGL ? "egl" : "osmesa";
 }
 
+int vtkDeepShadowRenderWindow::GetRewrittenGLImports()
+{
+  return headless::RewrittenImportCount();
+}
+
 bool vtkDeepShadowRenderWindow::HasContext() const
 {
   return this->Context != nullptr;

@@ -66,6 +66,13 @@ public:
   bool HasContext() const;
   /** Where the context came from ("OSMesa ...", "EGL surfaceless platform", ...). */
   std::string GetContextDescription() const;
+  /**
+   * How many GL imports of other libraries this process had to point at the headless
+   * window's entry points (0 when the program links this module before VTK's OpenGL
+   * libraries; more when VTK's were bound first, as after `import vtk` in Python).
+   */
+  static int GetRewrittenGLImports();
+
   /** Why the last context creation failed; empty when it did not. */
   const std::string& GetLastError() const { return this->LastError; }
 

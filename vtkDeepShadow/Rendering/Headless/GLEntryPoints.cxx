@@ -1,13 +1,16 @@
 // Definitions of the GL/GLX/GLEW symbols that let Debian's GLX-only VTK render into a
 // headless context. See GLEntryPoints.h for why each exists.
 #include "GLEntryPoints.h"
+#include "ImportRebinding.h"
 
 #include <GL/glew.h> // GL types, glewInit's declaration and error codes
 
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <dlfcn.h>
 #include <mutex>
+#include <vector>
 
 #define DEEPSHADOW_INTERPOSE extern "C" __attribute__((visibility("default")))
 
@@ -56,6 +59,15 @@ GLProc CachedLookup(const char* name)
   return proc;
 }
 
+// Every name defined below, for RebindImports.
+const char* const InterposedNames[] = {
+#define ENTRY(ret, name, params, args) #name,
+#include "GLCoreEntryPoints.def"
+#undef ENTRY
+  "glXGetCurrentDisplay", "glXGetProcAddressARB", "glewInit"
+};
+std::atomic<int> RewrittenImports{ 0 };
+
 enum EntryIndex
 {
 #define ENTRY(ret, name, params, args) Index_##name,
@@ -97,29 +109,60 @@ Backend ActiveBackend()
 
 bool InterpositionIsEffective(std::string& error)
 {
-  // The file this function lives in: every forwarder must come from it too.
+  // Rebind once per set of loaded objects: a library loaded since (a later Python import)
+  // may bring GL imports bound to libOpenGL/libGLEW/libGLX.
+  static std::mutex mutex;
+  static unsigned long long checkedGeneration = 0;
+  std::lock_guard<std::mutex> lock(mutex);
+  const unsigned long long generation = LoadedObjectGeneration();
+  if (generation == checkedGeneration)
+  {
+    return true;
+  }
+
+  // Our own definitions, looked up in this library (not through the process's symbol order).
   Dl_info self{};
-  if (!dladdr(reinterpret_cast<void*>(&InterpositionIsEffective), &self) || !self.dli_fname)
+  void* handle = nullptr;
+  if (dladdr(reinterpret_cast<void*>(&InterpositionIsEffective), &self) && self.dli_fname)
+  {
+    handle = dlopen(self.dli_fname, RTLD_LAZY | RTLD_NOLOAD);
+  }
+  if (!handle)
   {
     error = "cannot locate the vtkDeepShadowRendering library in memory";
     return false;
   }
-  static const char* const names[] = { "glewInit", "glXGetProcAddressARB", "glClear" };
-  for (const char* name : names)
+  std::vector<ImportDefinition> definitions;
+  for (const char* name : InterposedNames)
   {
-    Dl_info used{};
-    void* symbol = dlsym(RTLD_DEFAULT, name);
-    if (!symbol || !dladdr(symbol, &used) || !used.dli_fname ||
-      std::strcmp(used.dli_fname, self.dli_fname) != 0)
+    if (void* address = dlsym(handle, name))
     {
-      error = std::string("the process uses ") + name + " from " +
-        (used.dli_fname ? used.dli_fname : "nowhere") + " instead of " + self.dli_fname +
-        ": link vtkDeepShadowRendering before VTK's OpenGL libraries (or LD_PRELOAD it) so "
-        "that headless rendering reaches its context";
-      return false;
+      definitions.push_back({ name, address });
     }
   }
+  dlclose(handle);
+
+  // VTK_DEEPSHADOW_NO_REBIND=1 (diagnostics, tests): leave the imports as the linker bound
+  // them, to see what an import order does without the rewrite.
+  const char* noRebind = std::getenv("VTK_DEEPSHADOW_NO_REBIND");
+  if (noRebind && std::strcmp(noRebind, "1") == 0)
+  {
+    checkedGeneration = generation;
+    return true;
+  }
+  RebindReport report;
+  if (!RebindImports(definitions, self.dli_fbase, report, error))
+  {
+    return false;
+  }
+  RewrittenImports += report.Rewritten;
+  checkedGeneration = generation;
   return true;
+}
+
+int RewrittenImportCount()
+{
+  return RewrittenImports.load();
 }
 
 }

@@ -6,8 +6,9 @@
 //  2. GL 1.0/1.1 functions (glClear, glViewport, ...) are called directly, bound to libglvnd,
 //     which knows nothing of an OSMesa context;
 //  3. glXGetCurrentDisplay() tells GLEW whether GLX is there.
-// GLEntryPoints.cxx defines those symbols in our library, which the dynamic linker finds
-// before libGLEW/libGLX/libOpenGL, and forwards each to the active backend.
+// GLEntryPoints.cxx defines those symbols in our library and forwards each to the active
+// backend. In a program linked with our library first the dynamic linker binds VTK's calls
+// to them; otherwise (Python's RTLD_LOCAL imports) ImportRebinding.h points them here.
 #ifndef vtkDeepShadowGLEntryPoints_h
 #define vtkDeepShadowGLEntryPoints_h
 
@@ -30,10 +31,14 @@ void ReleaseBackend(Backend backend);
 Backend ActiveBackend();
 
 /**
- * True when our forwarders are the definitions the process actually uses. They are not if
- * libGLEW or libOpenGL was loaded ahead of vtkDeepShadowRendering; `error` then says so.
+ * Makes our forwarders the definitions the process uses: when VTK's OpenGL libraries were
+ * bound before this library was loaded (Python, `import vtk` first), their GL imports are
+ * rewritten to point here (ImportRebinding.h). Cheap when no library was loaded since the
+ * last call. False, with `error`, when an import cannot be rewritten.
  */
 bool InterpositionIsEffective(std::string& error);
+/** Import slots rewritten so far in this process (0 in a program linked in our order). */
+int RewrittenImportCount();
 
 }
 }

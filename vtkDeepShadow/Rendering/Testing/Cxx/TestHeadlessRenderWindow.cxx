@@ -120,6 +120,11 @@ int TestHeadlessRenderWindow(int argc, char* argv[])
     const double covered = deepshadow::testing::CoveredFraction(osmesa, { 0.1, 0.2, 0.4 });
     std::printf("OSMesa: %.1f%% of pixels show geometry\n", 100.0 * covered);
     ok = ok && covered > 0.05 && covered < 0.9;
+    // Linked with DeepShadow::Rendering first, the linker already bound VTK's GL calls to
+    // the window's entry points: nothing had to be rewritten (Python's imports do need it).
+    const int rewritten = vtkDeepShadowRenderWindow::GetRewrittenGLImports();
+    std::printf("GL imports rewritten in this linked program: %d\n", rewritten);
+    ok = ok && rewritten == 0;
   }
 
   // 2. EGL (surfaceless) renders the same pixels once the OSMesa context is gone.
