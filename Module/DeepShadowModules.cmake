@@ -15,7 +15,7 @@ vtk_module_scan(
 vtk_module_build(
   MODULES ${deepshadow_modules}
   PACKAGE vtkDeepShadow
-  ENABLE_WRAPPING OFF
+  ENABLE_WRAPPING "${DEEPSHADOW_WRAP_PYTHON}"
   INSTALL_EXPORT vtkDeepShadow
   CMAKE_DESTINATION "${CMAKE_INSTALL_LIBDIR}/cmake/vtkDeepShadow"
   HEADERS_DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/vtkDeepShadow"

@@ -23,7 +23,7 @@ cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInf
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DDEEPSHADOW_FUZZ_COUNT=150 -DDEEPSHADOW_FUZZ_MEMORY_LIMIT=0
+  -DDEEPSHADOW_FUZZ_COUNT=150 -DDEEPSHADOW_FUZZ_MEMORY_LIMIT=0 -DDEEPSHADOW_WRAP_PYTHON=OFF
 cmake --build "$root/build-asan" -j "$(nproc)" --target \
   DeepShadowCoreTests DeepShadowScenesTests DeepShadowCSGTests vtkDeepShadowCxxTests \
   deepshadow deepshadow-testkit DeepShadowFuzz

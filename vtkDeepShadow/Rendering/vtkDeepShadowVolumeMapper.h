@@ -40,7 +40,9 @@
 #include "vtkNew.h"                       // For vtkNew
 #include "vtkVolumeMapper.h"
 
+#ifndef __VTK_WRAP__ // VTK's wrapper parser does not get through glm's templates
 #include <glm/mat4x4.hpp> // For glm::dmat4
+#endif
 #include <memory> // For std::unique_ptr, std::shared_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -308,8 +310,10 @@ private:
   void UpdateTables(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
+#ifndef __VTK_WRAP__
   /** Uploads the casting surfaces in index space if they or the placement changed. */
   bool UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex);
+#endif
   /** GPU memory: the sum of what the holders in use report. */
   long long GetHolderBytes() const;
 

@@ -393,6 +393,12 @@ void vtkDeepShadowStandardScene::GetLightDirection(double dir[3])
   Direction(spec.LightAzimuth, spec.LightElevation, dir);
 }
 
+double* vtkDeepShadowStandardScene::GetLightDirection()
+{
+  this->GetLightDirection(this->LightDirection);
+  return this->LightDirection;
+}
+
 double vtkDeepShadowStandardScene::GetSuggestedSampleDistance()
 {
   double spacing[3];

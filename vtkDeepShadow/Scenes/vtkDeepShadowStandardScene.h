@@ -111,6 +111,8 @@ public:
    * far enough from the view direction of ApplyCamera that shadows are visible.
    */
   void GetLightDirection(double dir[3]);
+  /** The same, returned (for Python: `scene.GetLightDirection()`). */
+  double* GetLightDirection() VTK_SIZEHINT(3);
 
   /** About half the smallest spacing, in world units. */
   double GetSuggestedSampleDistance();
@@ -124,6 +126,7 @@ protected:
   std::string Scene;
   double ResolutionScale = 1.0;
   double LastGenerationTime = 0.0;
+  double LightDirection[3] = { 0.0, 0.0, 1.0 };
   vtkSmartPointer<vtkImageData> Volume;
   vtkSmartPointer<vtkVolumeProperty> Property;
 

@@ -10,6 +10,7 @@
 #include "vtkDeepShadowCachedShadow.h"
 #include "vtkDeepShadowCachedShadowCS.h"
 #include "vtkDeepShadowShadow.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 
 #include "CoreAdapter.h"
 #include "GL/ComputeProgram.h"
@@ -71,6 +72,20 @@ void vtkDeepShadowTechnique::SetThreshold(double threshold)
 void vtkDeepShadowTechnique::SetShadowVolumeSize(int size)
 {
   this->SetClamped("ShadowVolumeSize", "shadow-volume-size", this->ShadowVolumeSize, size);
+}
+
+vtkDeepShadowTechnique* vtkDeepShadowTechnique::NewFromName(const char* name)
+{
+  vtkSmartPointer<vtkDeepShadowTechnique> technique =
+    vtkDeepShadowTechniqueFactory::New(std::string(name ? name : ""));
+  if (!technique)
+  {
+    vtkGenericWarningMacro("vtkDeepShadowTechnique::NewFromName: no technique is called \""
+      << (name ? name : "(null)") << "\"");
+    return nullptr;
+  }
+  technique->Register(nullptr);
+  return technique;
 }
 
 void vtkDeepShadowTechnique::RegistryRange(const char* key, double& low, double& high)

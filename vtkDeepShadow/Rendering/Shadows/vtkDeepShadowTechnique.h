@@ -122,6 +122,11 @@ public:
   virtual void SetParameters(const deepshadow::ShadowParameters& parameters);
   /** rays, rays-opaque, rays-color, shadowmap, dsm, dsm-color, dsm3, cssm; "-cached" if so. */
   std::string GetName() const;
+  /**
+   * A new technique from its registry name (one GetName() returns) at its defaults, for
+   * Python and configuration files; null, with an error, for a name no class implements.
+   */
+  VTK_NEWINSTANCE static vtkDeepShadowTechnique* NewFromName(const char* name);
 
   ///@{
   /** Observability: structures built, time of the last build (GL finished), memory. */

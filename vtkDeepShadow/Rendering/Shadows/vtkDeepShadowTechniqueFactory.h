@@ -10,11 +10,16 @@
 #ifndef vtkDeepShadowTechniqueFactory_h
 #define vtkDeepShadowTechniqueFactory_h
 
-#include "Core/Shadows.h"                       // For deepshadow::ShadowKind, ShadowParameters
 #include "vtkDeepShadowRenderingModule.h"  // For export macro
 #include "vtkSmartPointer.h"               // For vtkSmartPointer
 
 #include <string> // For std::string
+
+// C++ only: VTK's wrapper parser does not get through glm's templates, and Python builds a
+// technique by class (vtkDeepShadowDeepShadowMapTechnique()) or by name
+// (vtkDeepShadowTechnique.NewFromName("dsm")).
+#ifndef __VTK_WRAP__
+#include "Core/Shadows.h" // For deepshadow::ShadowKind, ShadowParameters
 
 class vtkDeepShadowTechnique;
 
@@ -40,4 +45,5 @@ public:
   static vtkSmartPointer<vtkDeepShadowTechnique> New(const std::string& name);
 };
 
+#endif // __VTK_WRAP__
 #endif
