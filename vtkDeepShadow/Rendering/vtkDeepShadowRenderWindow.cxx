@@ -151,6 +151,14 @@ void vtkDeepShadowRenderWindow::Start()
   {
     return;
   }
+  // A library loaded since the context was made (a later Python import, e.g. VTK's GPU volume
+  // mapper) may call GL through libOpenGL: point it here too. Cheap when nothing was loaded.
+  std::string error;
+  if (!headless::InterpositionIsEffective(error))
+  {
+    vtkErrorMacro("Cannot render headless: " << error);
+    return;
+  }
   this->Superclass::Start();
 }
 

@@ -41,10 +41,26 @@ print(json.dumps({
 """
 
 
+LATE_IMPORT = """
+import json
+import vtkdeepshadow
+from DeepShadowPythonTesting import RodsScene, foreground
+scene = RodsScene(size=96)
+first = foreground(scene.render()).mean()
+# Imported after the window has its context: VTK's own GPU volume mapper in the same window.
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
+mapper = vtkOpenGLGPUVolumeRayCastMapper()
+mapper.SetInputData(scene.scene.GetVolume())
+scene.volume.SetMapper(mapper)
+print(json.dumps({"first": float(first), "late": float(foreground(scene.render()).mean())}))
+"""
+
+
 def run(order, backend, rebind=True, check=True):
     environment = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="", VTK_DEEPSHADOW_BACKEND=backend,
                        VTK_DEEPSHADOW_NO_REBIND="0" if rebind else "1")
-    result = subprocess.run([sys.executable, "-c", IMPORTS[order] + RENDER], env=environment,
+    code = LATE_IMPORT if order == "late-import" else IMPORTS[order] + RENDER
+    result = subprocess.run([sys.executable, "-c", code], env=environment,
                             capture_output=True, text=True, timeout=300)
     if not check:
         return result
@@ -71,6 +87,15 @@ class TestPythonImportOrder(Testing.vtkTest):
                     self.assertGreater(outcome["rewritten"], 0)
             self.assertEqual(len(set(pictures.values())), 1,
                              "%s: the import order changed the picture: %s" % (backend, pictures))
+
+    def testLibrariesImportedAfterTheFirstFrame(self):
+        # Each frame rewrites the GL imports of libraries loaded since the last (without it,
+        # VTK's mapper imported after the first frame drew nothing with OSMesa).
+        for backend in ("osmesa", "egl"):
+            outcome = run("late-import", backend)
+            print(backend, "late import", outcome)
+            self.assertGreater(outcome["first"], 0.05)
+            self.assertGreater(outcome["late"], 0.05, backend + ": VTK's mapper drew nothing")
 
     def testWithoutTheRewriteVtkFirstFails(self):
         # What this test guards against, seen once here so that it can fail: without the
