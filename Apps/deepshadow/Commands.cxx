@@ -12,6 +12,7 @@
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowVolumePresets.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -246,6 +247,17 @@ int RunAll(const Options& options)
   outputs.Commit();
   std::printf("images, references, differences (x10) and statistics in %s\n",
     options.OutDir.c_str());
+  return 0;
+}
+
+int RunPresets(const Options&)
+{
+  for (const std::string& name : vtkDeepShadowVolumePresets::GetPresetNames())
+  {
+    std::printf("%-15s %s\n", name.c_str(),
+      vtkDeepShadowVolumePresets::GetPresetDescription(name).c_str());
+  }
+  std::printf("\n--tf also takes a ParaView JSON preset file (RGBPoints, Points).\n");
   return 0;
 }
 

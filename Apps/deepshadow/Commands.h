@@ -14,6 +14,7 @@ int RunRender(const Options& options);
 int RunReference(const Options& options);
 int RunAll(const Options& options);
 int RunScenes(const Options& options);
+int RunPresets(const Options& options);
 int RunBench(const Options& options);
 int RunShadowBench(const Options& options);
 int RunReport(const Options& options);

@@ -49,7 +49,7 @@ struct MeshSpec
 
 struct Options
 {
-  std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | help
+  std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | presets | help
   std::vector<std::string> Arguments; // as given, after the command
 
   // What to render.
@@ -68,6 +68,12 @@ struct Options
   double SampleDistance = 0.0; // 0: the mapper's default
   std::vector<LightSpec> Lights; // empty: the scene's key light, or the headlight for files
   bool Shade = true;
+  bool ShadeGiven = false;       // --shade/--no-shading given: overrides a preset's
+  std::string TransferFunction;  // --tf: a preset name or a ParaView JSON preset file
+  double Window = 0.0;           // --window/--level: the preset's interval mapped onto
+  double Level = 0.0;            //   [L - W/2, L + W/2]; Window 0: the preset's own
+  double OpacityUnitDistance = 0.0; // 0: the preset's or scene's
+  double Ambient = -1.0, Diffuse = -1.0, Specular = -1.0; // negative: the preset's or scene's
   bool Jitter = false;
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;

@@ -16,6 +16,7 @@
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
+#include "vtkDeepShadowVolumePresets.h"
 #include "vtkDeepShadowVolumeReader.h"
 
 #include "vtkActor.h"
@@ -101,6 +102,47 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
   property->SetScalarOpacityUnitDistance(
     std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
   return property;
+}
+
+// --tf (a preset or a ParaView file), --window/--level and the lighting options, over the
+// scene's or the file's default property. Bad presets and files are usage errors.
+void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProperty* property)
+{
+  if (!options.TransferFunction.empty())
+  {
+    vtkNew<vtkDeepShadowVolumePresets> presets;
+    if (options.Window > 0.0)
+    {
+      presets->SetWindowLevel(options.Window, options.Level);
+    }
+    if (!presets->Apply(options.TransferFunction, property))
+    {
+      throw UsageError(presets->GetLastError());
+    }
+    const double* spacing = data->GetSpacing();
+    property->SetScalarOpacityUnitDistance(
+      std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
+  }
+  if (options.ShadeGiven || options.TransferFunction.empty())
+  {
+    property->SetShade(options.Shade ? 1 : 0);
+  }
+  if (options.OpacityUnitDistance > 0.0)
+  {
+    property->SetScalarOpacityUnitDistance(options.OpacityUnitDistance);
+  }
+  if (options.Ambient >= 0.0)
+  {
+    property->SetAmbient(options.Ambient);
+  }
+  if (options.Diffuse >= 0.0)
+  {
+    property->SetDiffuse(options.Diffuse);
+  }
+  if (options.Specular >= 0.0)
+  {
+    property->SetSpecular(options.Specular);
+  }
 }
 }
 
@@ -318,7 +360,7 @@ SceneSetup SceneSetup::Build(const Options& options)
       lights.push_back(key);
     }
   }
-  property->SetShade(options.Shade ? 1 : 0);
+  ApplyAppearance(options, setup.Data, property);
 
   // The bound: files given replace a bounded scene's meshes; --csg replaces its expression.
   if (vtkDeepShadowBoundedScene::IsSceneName(options.Scene) && options.VolumeFile.empty())

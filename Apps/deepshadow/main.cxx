@@ -67,6 +67,10 @@ int Run(const deepshadow::tool::Options& options)
   {
     return RunReport(options);
   }
+  if (options.Command == "presets")
+  {
+    return RunPresets(options);
+  }
   return RunScenes(options);
 }
 }

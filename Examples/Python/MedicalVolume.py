@@ -46,6 +46,8 @@ if reader.GetLastError():
     sys.exit("cannot read the volume: " + reader.GetLastError())
 
 # CT transfer function: air and fat transparent, soft tissue faint, bone opaque and white.
+# (Or in one call, a preset ParaView and 3D Slicer users know, or a ParaView preset file:
+#  vtkDeepShadowVolumePresets().Apply("CT-Bone", volume_property).)
 opacity = vtkPiecewiseFunction()
 for hu, alpha in ((-1000, 0.0), (-100, 0.0), (20, 0.015), (150, 0.04), (500, 0.4), (1500, 0.85)):
     opacity.AddPoint(hu, alpha)

@@ -59,6 +59,36 @@ expect 2 "NaN samples" -- "$tool" render --volume nan.mhd --out x.png
 expect 0 "NaN samples, replaced" -- "$tool" render --volume nan.mhd --replace-nonfinite --size 64x64 --frames 1 --out nan.png
 not_flat nan.png "NaN samples, replaced"
 
+# Transfer functions: the presets, a ParaView preset file, window/level, and bad ones.
+expect 0 "presets" -- "$tool" presets
+for name in CT-Bone CT-Skin CT-Muscle CT-Soft-Tissue CT-Lung MR-Default MR-Angio; do
+  grep -q "^$name " out.txt || fail "presets lacks $name"
+done
+expect 0 "head with CT-Bone" -- "$tool" render --scene head --scale 0.25 --tf ct-bone --size 64x64 \
+  --frames 1 --out tf-bone.png
+not_flat tf-bone.png "head with CT-Bone"
+expect 0 "head with CT-Skin" -- "$tool" render --scene head --scale 0.25 --tf CT-Skin --size 64x64 \
+  --frames 1 --out tf-skin.png
+rmse_at_least tf-bone.png tf-skin.png 0.01 "CT-Bone and CT-Skin"
+expect 0 "CT-Bone, window/level" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone \
+  --window 300 --level 100 --size 64x64 --frames 1 --out tf-window.png
+rmse_at_least tf-bone.png tf-window.png 0.01 "CT-Bone with and without window/level"
+cat > paraview-preset.json <<'JSON'
+[ { "Name": "Bone", "ColorSpace": "RGB",
+    "RGBPoints": [ -1000, 0, 0, 0, 300, 0.9, 0.8, 0.7, 2000, 1, 1, 1 ],
+    "Points": [ -1000, 0, 0.5, 0, 200, 0, 0.5, 0, 600, 0.8, 0.5, 0, 2000, 0.9, 0.5, 0 ] } ]
+JSON
+expect 0 "head with a ParaView preset file" -- "$tool" render --scene head --scale 0.25 \
+  --tf paraview-preset.json --shade off --ambient 0.3 --size 64x64 --frames 1 --out tf-file.png
+not_flat tf-file.png "head with a ParaView preset file"
+expect 2 "unknown preset" "neither a transfer-function preset" -- "$tool" render --tf CT-Teapot --out x.png
+echo '[{"RGBPoints": [0, 0, 0]}]' > bad-preset.json
+expect 2 "bad preset file" "whole nodes of 4" -- "$tool" render --tf bad-preset.json --out x.png
+expect 2 "window without level" -- "$tool" render --tf CT-Bone --window 100 --out x.png
+expect 2 "window without a preset" -- "$tool" render --window 100 --level 0 --out x.png
+expect 2 "bad shade" -- "$tool" render --shade maybe --out x.png
+expect 2 "ambient out of range" -- "$tool" render --ambient 2 --out x.png
+
 # The defaults: a standard scene, a PNG and the JSON statistics.
 expect 0 "render with defaults" -- "$tool" render --size 96x96 --frames 2 --out default.png --json default.json
 not_flat default.png "render with defaults"

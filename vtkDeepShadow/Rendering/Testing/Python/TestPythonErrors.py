@@ -1,6 +1,6 @@
 """Errors reach Python as VTK errors (ErrorEvent observers, GetLastError()) and a failed
 render, never a crash of the interpreter: no input, an empty volume, a bad CSG expression,
-a missing volume file, an unknown technique name."""
+a missing volume file, an unknown transfer-function preset or technique name."""
 from vtkmodules.test import Testing
 from vtkmodules.test.ErrorObserver import vtkErrorObserver
 from vtkmodules.vtkCommonDataModel import vtkImageData
@@ -66,6 +66,21 @@ class TestPythonErrors(Testing.vtkTest):
         reader.Update()
         self.assertIsNotNone(observer.error_message)
         self.assertIn("volume.vti", reader.GetLastError())
+
+    def testTransferFunctionPresets(self):
+        from vtkmodules.vtkRenderingCore import vtkVolumeProperty
+        from vtkdeepshadow import vtkDeepShadowVolumePresets
+        property_ = vtkVolumeProperty()
+        presets = vtkDeepShadowVolumePresets()
+        self.assertIn("CT-Bone", vtkDeepShadowVolumePresets.GetPresetNames())
+        self.assertTrue(presets.ApplyPreset("CT-Bone", property_))
+        self.assertEqual(property_.GetScalarOpacity().GetSize(), 4)
+        observer = vtkErrorObserver()
+        presets.AddObserver("ErrorEvent", observer)
+        self.assertFalse(presets.Apply("CT-Teapot", property_))
+        self.assertIsNotNone(observer.error_message)
+        self.assertIn("neither a transfer-function preset", presets.GetLastError())
+        self.assertEqual(property_.GetScalarOpacity().GetSize(), 4, "a failure changed it")
 
     def testUnknownTechniqueName(self):
         from vtkdeepshadow import vtkDeepShadowTechnique
