@@ -1,5 +1,7 @@
 #include "Commands.h"
 
+#include "Look.h"
+
 #include "Json.h"
 #include "Outputs.h"
 #include "SceneSetup.h"
@@ -98,6 +100,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("shadow_builds", shadowBuilds)
     .Set("first_frame_passes", firstPasses)
     .Set("passes", passes) // of the last timed frame
+    .Set("camera", CameraJson(setup.Renderer->GetActiveCamera()))
     .Set("shader_features", features)
     .Set("sample_distance", mapper->GetEffectiveSampleDistance())
     .Set("empty_block_fraction", mapper->GetEmptyBlockFraction())

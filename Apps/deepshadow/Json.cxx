@@ -14,14 +14,15 @@ namespace tool
 {
 namespace
 {
-std::string Number(double value)
+// Six significant digits for statistics; 17 (a double exactly) where values are read back.
+std::string Number(double value, int digits = 6)
 {
   if (!std::isfinite(value))
   {
     return "null";
   }
   char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
   return buffer;
 }
 }
@@ -101,6 +102,21 @@ Json& Json::Set(const std::string& key, const std::vector<double>& values)
   for (size_t i = 0; i < values.size(); ++i)
   {
     raw += (i ? ", " : "") + Number(values[i]);
+  }
+  return this->SetRaw(key, raw + "]");
+}
+
+Json& Json::SetExact(const std::string& key, double value)
+{
+  return this->SetRaw(key, Number(value, 17));
+}
+
+Json& Json::SetExact(const std::string& key, const std::vector<double>& values)
+{
+  std::string raw = "[";
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    raw += (i ? ", " : "") + Number(values[i], 17);
   }
   return this->SetRaw(key, raw + "]");
 }

@@ -21,6 +21,9 @@ public:
   Json& Set(const std::string& key, const std::string& value);
   Json& Set(const std::string& key, const char* value) { return this->Set(key, std::string(value)); }
   Json& Set(const std::string& key, const std::vector<double>& values);
+  /** Every digit of a double (17 significant): for values a later run reads back. */
+  Json& SetExact(const std::string& key, const std::vector<double>& values);
+  Json& SetExact(const std::string& key, double value);
   Json& Set(const std::string& key, const std::vector<std::string>& values);
   Json& Set(const std::string& key, const Json& object);
   Json& Set(const std::string& key, const std::vector<Json>& objects);

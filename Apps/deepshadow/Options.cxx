@@ -1,5 +1,7 @@
 #include "Options.h"
 
+#include "Look.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -12,8 +14,6 @@ namespace deepshadow
 {
 namespace tool
 {
-namespace
-{
 double ParseNumber(const std::string& option, const std::string& text)
 {
   char* end = nullptr;
@@ -24,6 +24,9 @@ double ParseNumber(const std::string& option, const std::string& text)
   }
   return value;
 }
+
+namespace
+{
 
 int ParseInteger(const std::string& option, const std::string& text, int lo, int hi)
 {
@@ -259,62 +262,6 @@ Options WithTechniqueSpec(const Options& base, const std::string& spec)
 
 namespace
 {
-// The options that set the volume's look: transfer function, window/level, lighting.
-bool ParseAppearanceOption(Options& o, const std::string& key, const std::function<std::string()>& next)
-{
-  if (key == "--tf")
-  {
-    o.TransferFunction = next();
-  }
-  else if (key == "--window")
-  {
-    o.Window = ParseNumber(key, next());
-    if (!(o.Window > 0.0))
-    {
-      throw UsageError("--window must be positive");
-    }
-  }
-  else if (key == "--level")
-  {
-    o.Level = ParseNumber(key, next());
-  }
-  else if (key == "--opacity-unit-distance")
-  {
-    o.OpacityUnitDistance = ParseNumber(key, next());
-    if (!(o.OpacityUnitDistance > 0.0))
-    {
-      throw UsageError("--opacity-unit-distance must be positive");
-    }
-  }
-  else if (key == "--shade")
-  {
-    const std::string value = next();
-    if (value != "on" && value != "off")
-    {
-      throw UsageError("--shade takes on or off, not '" + value + "'");
-    }
-    o.Shade = value == "on";
-    o.ShadeGiven = true;
-  }
-  else if (key == "--ambient" || key == "--diffuse" || key == "--specular")
-  {
-    const double value = ParseNumber(key, next());
-    if (value < 0.0 || value > 1.0)
-    {
-      throw UsageError(key + " must be in [0, 1]");
-    }
-    (key == "--ambient" ? o.Ambient : key == "--diffuse" ? o.Diffuse : o.Specular) = value;
-  }
-  else
-  {
-    return false;
-  }
-  return true;
-}
-}
-
-namespace
-{
 // --help's lines for one option: "  --KEY METAVAR", then `text` wrapped from column 26.
 std::string OptionHelp(const std::string& option, const std::string& text)
 {
@@ -492,16 +439,7 @@ RENDERING:
   --sample-distance D     world distance between samples (default: half the smallest voxel edge)
 )" + TechniqueUsage() + R"(  --no-shading            no gradient shading (emission and absorption only); the same
                           as --shade off
-  --tf NAME|FILE          the transfer function: a preset (see `deepshadow presets`: CT-Bone,
-                          CT-Skin, CT-Muscle, CT-Soft-Tissue, CT-Lung, MR-Default, MR-Angio)
-                          or a ParaView JSON preset file (RGBPoints, Points). Default: the
-                          scene's, or a grey ramp over a file's range
-  --window W --level L    map the preset's range onto [L - W/2, L + W/2] (data units)
-  --opacity-unit-distance D  world distance the opacities are for (default: the preset's,
-                          or the smallest voxel edge)
-  --shade on|off          gradient shading (default on; a preset may turn it off)
-  --ambient A, --diffuse D, --specular S   lighting coefficients in [0, 1]
-  --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
+)" + LookUsage() + R"(  --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
   --no-empty-space-skipping
   --backend osmesa|egl    headless OpenGL backend (default: VTK_DEEPSHADOW_BACKEND or osmesa)
 
@@ -737,7 +675,7 @@ Options Options::Parse(int argc, char* argv[])
       o.Shade = false;
       o.ShadeGiven = true;
     }
-    else if (ParseAppearanceOption(o, key, next))
+    else if (ParseLookOption(o, key, next))
     {
     }
     else if (key == "--jitter")
@@ -847,14 +785,7 @@ Options Options::Parse(int argc, char* argv[])
   {
     o.OutDir = o.Out;
   }
-  if ((o.Window > 0.0) != (std::find(args.begin(), args.end(), "--level") != args.end()))
-  {
-    throw UsageError("--window and --level go together");
-  }
-  if (o.Window > 0.0 && o.TransferFunction.empty())
-  {
-    throw UsageError("--window/--level set the range of a --tf preset; give --tf too");
-  }
+  ValidateLook(o, args);
   if (o.Frames == 0 && o.Command != "report")
   {
     throw UsageError("--frames 0 (errors only, no timing) is for report");

@@ -74,6 +74,10 @@ struct Options
   double Level = 0.0;            //   [L - W/2, L + W/2]; Window 0: the preset's own
   double OpacityUnitDistance = 0.0; // 0: the preset's or scene's
   double Ambient = -1.0, Diffuse = -1.0, Specular = -1.0; // negative: the preset's or scene's
+  // The camera (Look.h): a patient view, then turns and zoom, or a camera file for all of it.
+  std::string View;       // --view anterior|posterior|left|right|superior|inferior
+  double Azimuth = 0.0, Elevation = 0.0, Roll = 0.0, Zoom = 1.0;
+  std::string CameraFile; // --camera: JSON as render --json writes under "camera"
   bool Jitter = false;
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;
@@ -119,6 +123,9 @@ struct Options
   static Options Parse(int argc, char* argv[]);
   static std::string Usage();
 };
+
+/** A finite number, or UsageError naming the option. */
+double ParseNumber(const std::string& option, const std::string& text);
 
 /**
  * A technique spec, NAME[:OPTION=VALUE...] with OPTION a technique option without its dashes

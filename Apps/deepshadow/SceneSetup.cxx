@@ -1,6 +1,7 @@
 #include "SceneSetup.h"
 
 #include "Budget.h"
+#include "Look.h"
 
 #include "Core/VolumeGrid.h"
 
@@ -16,7 +17,6 @@
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
-#include "vtkDeepShadowVolumePresets.h"
 #include "vtkDeepShadowVolumeReader.h"
 
 #include "vtkActor.h"
@@ -102,47 +102,6 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
   property->SetScalarOpacityUnitDistance(
     std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
   return property;
-}
-
-// --tf (a preset or a ParaView file), --window/--level and the lighting options, over the
-// scene's or the file's default property. Bad presets and files are usage errors.
-void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProperty* property)
-{
-  if (!options.TransferFunction.empty())
-  {
-    vtkNew<vtkDeepShadowVolumePresets> presets;
-    if (options.Window > 0.0)
-    {
-      presets->SetWindowLevel(options.Window, options.Level);
-    }
-    if (!presets->Apply(options.TransferFunction, property))
-    {
-      throw UsageError(presets->GetLastError());
-    }
-    const double* spacing = data->GetSpacing();
-    property->SetScalarOpacityUnitDistance(
-      std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
-  }
-  if (options.ShadeGiven || options.TransferFunction.empty())
-  {
-    property->SetShade(options.Shade ? 1 : 0);
-  }
-  if (options.OpacityUnitDistance > 0.0)
-  {
-    property->SetScalarOpacityUnitDistance(options.OpacityUnitDistance);
-  }
-  if (options.Ambient >= 0.0)
-  {
-    property->SetAmbient(options.Ambient);
-  }
-  if (options.Diffuse >= 0.0)
-  {
-    property->SetDiffuse(options.Diffuse);
-  }
-  if (options.Specular >= 0.0)
-  {
-    property->SetSpecular(options.Specular);
-  }
 }
 }
 
@@ -462,6 +421,7 @@ SceneSetup SceneSetup::Build(const Options& options)
     camera->OrthogonalizeViewUp();
     setup.Renderer->ResetCamera();
   }
+  ApplyView(options, setup.Renderer, setup.Volume);
   setup.Renderer->ResetCameraClippingRange();
 
   // The lights asked for (the renderer's ambient keeps unlit parts readable); none: VTK's

@@ -89,6 +89,24 @@ expect 2 "window without a preset" -- "$tool" render --window 100 --level 0 --ou
 expect 2 "bad shade" -- "$tool" render --shade maybe --out x.png
 expect 2 "ambient out of range" -- "$tool" render --ambient 2 --out x.png
 
+# The camera: patient views, turns, and a camera file that reproduces a view exactly.
+expect 0 "anterior view" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone --view anterior \
+  --size 64x64 --frames 1 --out anterior.png
+expect 0 "left view, turned" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone --view left \
+  --azimuth 20 --elevation 10 --roll 5 --zoom 1.2 --size 64x64 --frames 1 --out left.png --json left.json
+rmse_at_least anterior.png left.png 0.01 "anterior and left views"
+grep -q '"camera": {' left.json || fail "render --json lacks the camera"
+expect 0 "the camera file render --json wrote" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone \
+  --camera left.json --size 64x64 --frames 1 --out left-again.png
+rmse_at_most left.png left-again.png 0 "a camera file reproduces the view"
+expect 2 "unknown view" "--view takes anterior|" -- "$tool" render --view sideways --out x.png
+expect 2 "camera with a view" "--camera sets the whole camera" -- "$tool" render --camera left.json \
+  --view left --out x.png
+echo '{"position": [0, 0, 1], "focal_point": [0, 0, 1], "view_up": [0, 1, 0]}' > degenerate-camera.json
+expect 2 "degenerate camera" "the position is the focal point" -- "$tool" render \
+  --camera degenerate-camera.json --out x.png
+expect 2 "missing camera file" "no such file" -- "$tool" render --camera nowhere.json --out x.png
+
 # The defaults: a standard scene, a PNG and the JSON statistics.
 expect 0 "render with defaults" -- "$tool" render --size 96x96 --frames 2 --out default.png --json default.json
 not_flat default.png "render with defaults"

@@ -1,0 +1,329 @@
+#include "Look.h"
+
+#include "vtkDeepShadowVolumePresets.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_jsoncpp.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+
+namespace deepshadow
+{
+namespace tool
+{
+namespace
+{
+// Patient directions in world coordinates, DICOM's (LPS: +x the patient's left, +y
+// posterior, +z superior), where a reader that honours the direction matrix puts the data:
+// the direction from the centre towards the camera, and the view-up.
+struct PatientView
+{
+  const char* Name;
+  std::array<double, 3> ToCamera;
+  std::array<double, 3> Up;
+};
+const PatientView PatientViews[] = {
+  { "anterior", { 0, -1, 0 }, { 0, 0, 1 } },
+  { "posterior", { 0, 1, 0 }, { 0, 0, 1 } },
+  { "left", { 1, 0, 0 }, { 0, 0, 1 } },
+  { "right", { -1, 0, 0 }, { 0, 0, 1 } },
+  { "superior", { 0, 0, 1 }, { 0, -1, 0 } },
+  { "inferior", { 0, 0, -1 }, { 0, -1, 0 } },
+};
+
+std::string ViewNames()
+{
+  std::string names;
+  for (const PatientView& view : PatientViews)
+  {
+    names += (names.empty() ? "" : "|") + std::string(view.Name);
+  }
+  return names;
+}
+
+double ParseAngle(const std::string& key, const std::string& text)
+{
+  const double value = ParseNumber(key, text);
+  if (std::abs(value) > 360.0)
+  {
+    throw UsageError(key + " is in degrees, within [-360, 360]");
+  }
+  return value;
+}
+
+// A JSON array of three finite numbers, or UsageError.
+std::array<double, 3> Vector3(const ::Json::Value& value, const std::string& what)
+{
+  std::array<double, 3> v{};
+  if (!value.isArray() || value.size() != 3)
+  {
+    throw UsageError(what + " must be an array of three numbers");
+  }
+  for (::Json::ArrayIndex c = 0; c < 3; ++c)
+  {
+    if (!value[c].isNumeric() || !std::isfinite(value[c].asDouble()))
+    {
+      throw UsageError(what + " must be an array of three finite numbers");
+    }
+    v[c] = value[c].asDouble();
+  }
+  return v;
+}
+
+void ReadCamera(const std::string& path, vtkCamera* camera)
+{
+  const std::string where = "camera file '" + path + "'";
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    throw UsageError("cannot read " + where + ": no such file");
+  }
+  if (vtksys::SystemTools::FileLength(path) > 1024 * 1024)
+  {
+    throw UsageError("cannot read " + where + ": larger than a camera needs (1 MiB)");
+  }
+  std::ifstream file(path, std::ios::binary);
+  ::Json::CharReaderBuilder builder;
+  builder["stackLimit"] = 16;
+  ::Json::Value root;
+  std::string errors;
+  bool parsed = false;
+  try
+  {
+    parsed = file && ::Json::parseFromStream(builder, file, &root, &errors);
+  }
+  catch (const std::exception& e)
+  {
+    errors = e.what();
+  }
+  if (!parsed || !root.isObject())
+  {
+    throw UsageError("cannot read " + where + ": not a JSON object (" +
+      errors.substr(0, errors.find('\n')) + ")");
+  }
+  // render --json writes the camera under "camera"; a file of only the camera works too.
+  const ::Json::Value& c = root.isMember("camera") ? root["camera"] : root;
+  const auto position = Vector3(c["position"], where + ": \"position\"");
+  const auto focal = Vector3(c["focal_point"], where + ": \"focal_point\"");
+  const auto up = Vector3(c["view_up"], where + ": \"view_up\"");
+  double toFocal[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
+  double cross[3];
+  vtkMath::Cross(toFocal, up.data(), cross);
+  if (vtkMath::Norm(toFocal) == 0.0 || vtkMath::Norm(cross) <= 1e-9 * vtkMath::Norm(toFocal) * vtkMath::Norm(up.data()))
+  {
+    throw UsageError(where + ": the position is the focal point, or the view-up is along the "
+      "view direction");
+  }
+  const double angle = c["view_angle"].isNumeric() ? c["view_angle"].asDouble() : 30.0;
+  if (!(angle > 0.0 && angle < 180.0))
+  {
+    throw UsageError(where + ": \"view_angle\" must be in (0, 180) degrees");
+  }
+  camera->SetPosition(position.data());
+  camera->SetFocalPoint(focal.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(angle);
+  camera->OrthogonalizeViewUp();
+}
+}
+
+bool ParseLookOption(Options& o, const std::string& key, const std::function<std::string()>& next)
+{
+  if (key == "--tf")
+  {
+    o.TransferFunction = next();
+  }
+  else if (key == "--window" || key == "--opacity-unit-distance")
+  {
+    const double value = ParseNumber(key, next());
+    if (!(value > 0.0))
+    {
+      throw UsageError(key + " must be positive");
+    }
+    (key == "--window" ? o.Window : o.OpacityUnitDistance) = value;
+  }
+  else if (key == "--level")
+  {
+    o.Level = ParseNumber(key, next());
+  }
+  else if (key == "--shade")
+  {
+    const std::string value = next();
+    if (value != "on" && value != "off")
+    {
+      throw UsageError("--shade takes on or off, not '" + value + "'");
+    }
+    o.Shade = value == "on";
+    o.ShadeGiven = true;
+  }
+  else if (key == "--ambient" || key == "--diffuse" || key == "--specular")
+  {
+    const double value = ParseNumber(key, next());
+    if (value < 0.0 || value > 1.0)
+    {
+      throw UsageError(key + " must be in [0, 1]");
+    }
+    (key == "--ambient" ? o.Ambient : key == "--diffuse" ? o.Diffuse : o.Specular) = value;
+  }
+  else if (key == "--view")
+  {
+    o.View = vtksys::SystemTools::LowerCase(next());
+    if (std::none_of(std::begin(PatientViews), std::end(PatientViews),
+          [&](const PatientView& view) { return o.View == view.Name; }))
+    {
+      throw UsageError("--view takes " + ViewNames() + ", not '" + o.View + "'");
+    }
+  }
+  else if (key == "--azimuth" || key == "--elevation" || key == "--roll")
+  {
+    const double value = ParseAngle(key, next());
+    (key == "--azimuth" ? o.Azimuth : key == "--elevation" ? o.Elevation : o.Roll) = value;
+  }
+  else if (key == "--zoom")
+  {
+    o.Zoom = ParseNumber(key, next());
+    if (!(o.Zoom >= 0.01 && o.Zoom <= 100.0))
+    {
+      throw UsageError("--zoom must be in [0.01, 100]");
+    }
+  }
+  else if (key == "--camera")
+  {
+    o.CameraFile = next();
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+void ValidateLook(const Options& o, const std::vector<std::string>& args)
+{
+  const bool level = std::find(args.begin(), args.end(), "--level") != args.end();
+  if ((o.Window > 0.0) != level)
+  {
+    throw UsageError("--window and --level go together");
+  }
+  if (o.Window > 0.0 && o.TransferFunction.empty())
+  {
+    throw UsageError("--window/--level set the range of a --tf preset; give --tf too");
+  }
+  if (!o.CameraFile.empty() &&
+    (!o.View.empty() || o.Azimuth != 0.0 || o.Elevation != 0.0 || o.Roll != 0.0 || o.Zoom != 1.0))
+  {
+    throw UsageError("--camera sets the whole camera; leave out --view, --azimuth, "
+                     "--elevation, --roll and --zoom");
+  }
+}
+
+std::string LookUsage()
+{
+  return R"(  --tf NAME|FILE          the transfer function: a preset (see `deepshadow presets`: CT-Bone,
+                          CT-Skin, CT-Muscle, CT-Soft-Tissue, CT-Lung, MR-Default, MR-Angio)
+                          or a ParaView JSON preset file (RGBPoints, Points). Default: the
+                          scene's, or a grey ramp over a file's range
+  --window W --level L    map the preset's range onto [L - W/2, L + W/2] (data units)
+  --opacity-unit-distance D  world distance the opacities are for (default: the preset's,
+                          or the smallest voxel edge)
+  --shade on|off          gradient shading (default on; a preset may turn it off)
+  --ambient A, --diffuse D, --specular S   lighting coefficients in [0, 1]
+  --view )" + ViewNames() + R"(
+                          look at the volume from that patient side (world axes as DICOM's:
+                          x to the patient's left, y posterior, z superior), the whole
+                          volume in view
+  --azimuth A, --elevation E, --roll R   then turn the camera (degrees, VTK's vtkCamera)
+  --zoom Z                then zoom (above 1 closer; 0.01 to 100)
+  --camera FILE           the whole camera from JSON (position, focal_point, view_up,
+                          view_angle), e.g. the "camera" render --json wrote
+)";
+}
+
+void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProperty* property)
+{
+  if (!options.TransferFunction.empty())
+  {
+    vtkNew<vtkDeepShadowVolumePresets> presets;
+    if (options.Window > 0.0)
+    {
+      presets->SetWindowLevel(options.Window, options.Level);
+    }
+    if (!presets->Apply(options.TransferFunction, property))
+    {
+      throw UsageError(presets->GetLastError());
+    }
+    const double* spacing = data->GetSpacing();
+    property->SetScalarOpacityUnitDistance(
+      std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
+  }
+  if (options.ShadeGiven || options.TransferFunction.empty())
+  {
+    property->SetShade(options.Shade ? 1 : 0);
+  }
+  if (options.OpacityUnitDistance > 0.0)
+  {
+    property->SetScalarOpacityUnitDistance(options.OpacityUnitDistance);
+  }
+  if (options.Ambient >= 0.0)
+  {
+    property->SetAmbient(options.Ambient);
+  }
+  if (options.Diffuse >= 0.0)
+  {
+    property->SetDiffuse(options.Diffuse);
+  }
+  if (options.Specular >= 0.0)
+  {
+    property->SetSpecular(options.Specular);
+  }
+}
+
+void ApplyView(const Options& options, vtkRenderer* renderer, vtkVolume* volume)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (!options.CameraFile.empty())
+  {
+    ReadCamera(options.CameraFile, camera);
+    return;
+  }
+  if (!options.View.empty())
+  {
+    const auto view = std::find_if(std::begin(PatientViews), std::end(PatientViews),
+      [&](const PatientView& v) { return options.View == v.Name; });
+    const double* centre = volume->GetCenter();
+    camera->SetFocalPoint(centre);
+    camera->SetPosition(centre[0] + view->ToCamera[0], centre[1] + view->ToCamera[1],
+      centre[2] + view->ToCamera[2]);
+    camera->SetViewUp(view->Up.data());
+    renderer->ResetCamera(volume->GetBounds());
+  }
+  camera->Azimuth(options.Azimuth);
+  camera->Elevation(options.Elevation);
+  camera->Roll(options.Roll);
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(options.Zoom);
+}
+
+Json CameraJson(vtkCamera* camera)
+{
+  auto vector = [](const double* v) { return std::vector<double>(v, v + 3); };
+  Json json;
+  json.SetExact("position", vector(camera->GetPosition()))
+    .SetExact("focal_point", vector(camera->GetFocalPoint()))
+    .SetExact("view_up", vector(camera->GetViewUp()))
+    .SetExact("view_angle", camera->GetViewAngle());
+  return json;
+}
+
+}
+}
