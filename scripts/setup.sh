@@ -7,7 +7,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(cmake ninja-build g++ ccache pkg-config
   libvtk9-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
-  libglm-dev libcgal-dev libgtest-dev)
+  libglm-dev libcgal-dev libgtest-dev
+  python3-nibabel) # real MR scans (NIfTI) and DICOM slices for the reader tests
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

@@ -401,7 +401,8 @@ Commands:
 SCENE (default: --scene box):
   --scene NAME            a standard scene (see `deepshadow scenes`)
   --scale S               voxels per axis of the scene times S (0.01-2, default 1)
-  --volume FILE           a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr
+  --volume FILE|DIR       a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr, .nii/.nii.gz
+                          (placed by its s/q-form), or a directory of one DICOM series
   --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing
   --bound FILE            the volume exists only inside this closed mesh (.vtp, .vtk, .stl,
                           .ply, .obj; in the volume's data coordinates); repeatable: the

@@ -89,6 +89,23 @@ expect 2 "window without a preset" -- "$tool" render --window 100 --level 0 --ou
 expect 2 "bad shade" -- "$tool" render --shade maybe --out x.png
 expect 2 "ambient out of range" -- "$tool" render --ambient 2 --out x.png
 
+# Real medical files (python3-nibabel's test data): a NIfTI MR scan and a DICOM series
+# directory render with shadows from an anterior view.
+nibabel=/usr/lib/python3/dist-packages/nibabel/tests/data
+if [ -f "$nibabel/example4d.nii.gz" ]; then
+  expect 0 "a NIfTI MR scan, anterior, deep shadow maps" -- "$tool" render --volume "$nibabel/example4d.nii.gz" \
+    --tf MR-Default --technique dsm --view anterior --size 64x64 --frames 1 --out nifti.png
+  not_flat nifti.png "a NIfTI MR scan"
+  mkdir -p dicom && cp "$nibabel/0.dcm" "$nibabel/1.dcm" dicom/
+  expect 0 "a DICOM series, anterior, deep shadow maps" -- "$tool" render --volume dicom \
+    --technique dsm --view anterior --elevation 30 --size 64x64 --frames 1 --out dicom.png
+  not_flat dicom.png "a DICOM series"
+  mkdir -p no-dicom && echo "notes" > no-dicom/readme.txt
+  expect 2 "a directory with no DICOM" "no DICOM files" -- "$tool" render --volume no-dicom --out x.png
+else
+  echo "skipped: python3-nibabel's test data is not installed"
+fi
+
 # The camera: patient views, turns, and a camera file that reproduces a view exactly.
 expect 0 "anterior view" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone --view anterior \
   --size 64x64 --frames 1 --out anterior.png

@@ -1,4 +1,7 @@
 #include "VolumeFileChecks.h"
+#include "DicomSeriesChecks.h"
+
+#include "vtk_zlib.h"
 
 #include "HeaderText.h"
 #include "vtkDeepShadowMemoryBudget.h"
@@ -330,6 +333,10 @@ bool ReadWord(std::ifstream& in, int size, bool bigEndian, std::uint64_t& value)
 
 Format FormatOf(const std::string& fileName)
 {
+  if (SystemTools::FileIsDirectory(fileName))
+  {
+    return Format::Dicom;
+  }
   const std::string ext =
     SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(fileName));
   if (ext == ".vti")
@@ -344,6 +351,11 @@ Format FormatOf(const std::string& fileName)
   {
     return Format::Nrrd;
   }
+  const std::string lower = SystemTools::LowerCase(fileName);
+  if (ext == ".nii" || (ext == ".gz" && lower.size() > 7 && lower.rfind(".nii.gz") == lower.size() - 7))
+  {
+    return Format::Nifti;
+  }
   return Format::Unknown;
 }
 
@@ -351,6 +363,7 @@ std::string CheckHeader(Format format, const std::string& fileName)
 {
   return format == Format::Meta ? CheckMetaHeader(fileName)
     : format == Format::Nrrd    ? CheckNrrdHeader(fileName)
+    : format == Format::Dicom   ? CheckDicomDirectory(fileName)
                                 : std::string();
 }
 
@@ -438,8 +451,61 @@ std::string CheckInformation(vtkInformation* info, std::uint64_t budget)
 // garbage, so this is checked from the header before reading. Returns "" when the data look
 // complete or the layout is one this check does not cover (compressed or ASCII sizes, skips,
 // lists of files).
+namespace
+{
+// NIfTI: the data after a header of at least 348 bytes (352 with its extension flag) must be
+// in the file; gzip's trailer holds the uncompressed size modulo 2^32.
+std::string CheckNiftiSize(const std::string& fileName, std::uint64_t needed)
+{
+  const std::uint64_t header = 352;
+  const std::uint64_t bytes = SystemTools::FileLength(fileName);
+  const bool gzipped = SystemTools::LowerCase(fileName).rfind(".gz") == fileName.size() - 3;
+  std::uint64_t holds = bytes;
+  if (gzipped)
+  {
+    // Decompressed up to what is needed: gzip's trailer cannot be trusted in a cut file, and
+    // VTK's reader fills what a cut stream lacks with zeros without a word.
+    gzFile in = gzopen(fileName.c_str(), "rb");
+    if (!in)
+    {
+      return "the gzip stream cannot be opened";
+    }
+    std::vector<char> buffer(1 << 20);
+    holds = 0;
+    int got = 0;
+    while (holds < header + needed &&
+      (got = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()))) > 0)
+    {
+      holds += static_cast<std::uint64_t>(got);
+    }
+    int code = Z_OK;
+    const char* text = gzerror(in, &code);
+    const std::string message = text && *text ? text : "zlib error"; // gzclose frees it
+    gzclose(in);
+    if (holds < header + needed && code != Z_OK && code != Z_STREAM_END)
+    {
+      return "its gzip stream is broken (" + message + ") after " + std::to_string(holds) +
+        " bytes (truncated?)";
+    }
+  }
+  if (holds < header + needed)
+  {
+    std::ostringstream problem;
+    problem << "the file holds " << holds << (gzipped ? " uncompressed" : "")
+            << " bytes, its header and data need at least " << header + needed
+            << " (truncated?)";
+    return problem.str();
+  }
+  return "";
+}
+}
+
 std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed)
 {
+  if (format == Format::Nifti)
+  {
+    return CheckNiftiSize(fileName, needed);
+  }
   std::ifstream in(fileName, std::ios::binary);
   std::string line, dataFile;
   std::uint64_t headerEnd = 0;

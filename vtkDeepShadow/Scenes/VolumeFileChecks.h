@@ -24,10 +24,12 @@ enum class Format
   Unknown,
   XML,
   Meta,
-  Nrrd
+  Nrrd,
+  Nifti, // .nii, .nii.gz
+  Dicom  // a directory of one DICOM series
 };
 
-/** The format chosen by the file name's extension (case-insensitive). */
+/** The format chosen by the file name's extension (case-insensitive); a directory: DICOM. */
 Format FormatOf(const std::string& fileName);
 
 /**
@@ -48,6 +50,8 @@ std::uint64_t ScalarBytes(vtkInformation* info);
 
 /**
  * NRRD and MetaImage: a data file that is missing, or raw data shorter than `needed` bytes.
+ * NIfTI: a file shorter than its header and `needed` bytes (for .nii.gz, the uncompressed
+ * size gzip records).
  */
 std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed);
 

@@ -5,12 +5,16 @@
 #include "vtkDeepShadowMemoryBudget.h"
 
 #include "vtkCommand.h"
+#include "vtkDICOMImageReader.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
+#include "vtkNIFTIImageReader.h"
 #include "vtkNrrdReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -49,6 +53,10 @@ const char* FormatName(Format format)
       return "MetaImage (.mhd/.mha)";
     case Format::Nrrd:
       return "NRRD (.nrrd/.nhdr)";
+    case Format::Nifti:
+      return "NIfTI (.nii/.nii.gz)";
+    case Format::Dicom:
+      return "DICOM series directory";
     default:
       return "unknown";
   }
@@ -82,9 +90,95 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(Format format, const char* fileName, bo
       reader->SetFileName(fileName);
       return reader;
     }
+    case Format::Dicom:
+    {
+      // The series was checked file by file (DicomSeriesChecks.h) before this reads it.
+      auto reader = vtkSmartPointer<vtkDICOMImageReader>::New();
+      reader->SetDirectoryName(fileName);
+      accepted = true;
+      return reader;
+    }
+    case Format::Nifti:
+    {
+      auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
+      accepted = reader->CanReadFile(fileName) != 0;
+      reader->SetFileName(fileName);
+      return reader;
+    }
     default:
       return nullptr;
   }
+}
+
+// A NIfTI file's placement in DICOM's patient axes (LPS), as every other reader's data: its
+// sform (else qform) maps VTK's index * spacing to RAS (VTK has already reversed the slices
+// when qfac is -1); LPS negates x and y. False when the file has neither.
+bool NiftiPlacement(vtkNIFTIImageReader* reader, double origin[3], double direction[9])
+{
+  vtkMatrix4x4* form = reader->GetSFormMatrix() ? reader->GetSFormMatrix() : reader->GetQFormMatrix();
+  if (!form)
+  {
+    return false;
+  }
+  const double flip[3] = { -1.0, -1.0, 1.0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    origin[r] = flip[r] * form->GetElement(r, 3);
+    for (int c = 0; c < 3; ++c)
+    {
+      direction[3 * r + c] = flip[r] * form->GetElement(r, c);
+    }
+  }
+  return true;
+}
+
+// A DICOM series in patient coordinates (LPS, DICOM's own): VTK's reader stacks the slices
+// along the normal of the image plane in ascending position and turns each image upside
+// down (its first row is DICOM's last), and places nothing. World of (i, j, k) is then
+// IPP + i dx row + (rows - 1 - j) dy column + k dz normal.
+bool DicomPlacement(vtkDICOMImageReader* reader, int rows, double dy, double origin[3],
+  double direction[9])
+{
+  const float* iop = reader->GetImageOrientationPatient();
+  const float* ipp = reader->GetImagePositionPatient();
+  if (!iop || !ipp)
+  {
+    return false;
+  }
+  double row[3] = { iop[0], iop[1], iop[2] }, column[3] = { iop[3], iop[4], iop[5] }, normal[3];
+  vtkMath::Cross(row, column, normal);
+  if (vtkMath::Normalize(row) == 0.0 || vtkMath::Normalize(column) == 0.0 ||
+    vtkMath::Normalize(normal) == 0.0)
+  {
+    return false;
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    origin[r] = ipp[r] + (rows - 1) * dy * column[r];
+    direction[3 * r + 0] = row[r];
+    direction[3 * r + 1] = -column[r];
+    direction[3 * r + 2] = normal[r];
+  }
+  return true;
+}
+
+// Where the delegate's image lies in patient coordinates, for the formats whose readers
+// leave it at the origin unrotated (NIfTI, DICOM); false for the others.
+bool Placement(vtkAlgorithm* reader, vtkInformation* info, double origin[3], double direction[9])
+{
+  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
+  {
+    return NiftiPlacement(nifti, origin, direction);
+  }
+  auto* dicom = vtkDICOMImageReader::SafeDownCast(reader);
+  if (!dicom || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()) ||
+    !info->Has(vtkDataObject::SPACING()))
+  {
+    return false;
+  }
+  const int* extent = info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  return DicomPlacement(dicom, extent[3] - extent[2] + 1, info->Get(vtkDataObject::SPACING())[1],
+    origin, direction);
 }
 
 // Runs a request of the delegate with its messages collected and std::cerr captured;
@@ -155,7 +249,7 @@ vtkDeepShadowVolumeReader::~vtkDeepShadowVolumeReader()
 //------------------------------------------------------------------------------
 std::vector<std::string> vtkDeepShadowVolumeReader::GetSupportedExtensions()
 {
-  return { ".vti", ".mhd", ".mha", ".nrrd", ".nhdr" };
+  return { ".vti", ".mhd", ".mha", ".nrrd", ".nhdr", ".nii", ".nii.gz" };
 }
 
 bool vtkDeepShadowVolumeReader::CanReadFile(const char* fileName)
@@ -205,11 +299,6 @@ bool vtkDeepShadowVolumeReader::PrepareReader()
   if (!vtksys::SystemTools::FileExists(name))
   {
     this->Fail("no such file");
-    return false;
-  }
-  if (vtksys::SystemTools::FileIsDirectory(name))
-  {
-    this->Fail("it is a directory, not a file");
     return false;
   }
   if (!vtksys::SystemTools::TestFileAccess(name, vtksys::TEST_FILE_READ))
@@ -289,6 +378,12 @@ int vtkDeepShadowVolumeReader::RequestInformation(
   {
     out->CopyEntry(in, vtkDataObject::DIRECTION());
   }
+  double origin[3], direction[9];
+  if (Placement(this->Reader, in, origin, direction))
+  {
+    out->Set(vtkDataObject::ORIGIN(), origin, 3);
+    out->Set(vtkDataObject::DIRECTION(), direction, 9);
+  }
   if (vtkInformation* scalars = vtkDataObject::GetActiveFieldInformation(
         in, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS))
   {
@@ -322,7 +417,7 @@ int vtkDeepShadowVolumeReader::RequestData(
   // What the header declares against what the file holds, before VTK's reader reads it.
   const Format format = FormatOf(this->FileName);
   std::string problem;
-  if (format == Format::Nrrd || format == Format::Meta)
+  if (format == Format::Nrrd || format == Format::Meta || format == Format::Nifti)
   {
     problem = deepshadow::volumefile::CheckDataFile(format, this->FileName,
       deepshadow::volumefile::ScalarBytes(this->Reader->GetOutputInformation(0)));
@@ -369,6 +464,21 @@ int vtkDeepShadowVolumeReader::RequestData(
   }
   output->ShallowCopy(image);
   output->GetPointData()->SetScalars(scalars);
+  double origin[3], direction[9];
+  if (Placement(this->Reader, this->Reader->GetOutputInformation(0), origin, direction))
+  {
+    output->SetOrigin(origin);
+    output->SetDirectionMatrix(direction);
+  }
+  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(this->Reader))
+  {
+    if (nifti->GetTimeDimension() > 1)
+    {
+      vtkWarningMacro(<< "'" << this->FileName << "' holds " << nifti->GetTimeDimension()
+                      << " volumes (4D); the first is read");
+    }
+  }
+
   for (const std::string& warning : errors->Warnings)
   {
     vtkWarningMacro(<< "'" << this->FileName << "': " << warning);

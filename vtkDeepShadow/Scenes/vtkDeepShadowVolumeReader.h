@@ -3,7 +3,10 @@
  * @brief   Reads a volume from a file, choosing VTK's reader by the file's extension.
  *
  * Extensions (case-insensitive): .vti (vtkXMLImageDataReader), .mhd and .mha
- * (vtkMetaImageReader), .nrrd and .nhdr (vtkNrrdReader). The output is a vtkImageData whose
+ * (vtkMetaImageReader), .nrrd and .nhdr (vtkNrrdReader), .nii and .nii.gz
+ * (vtkNIFTIImageReader; placed by its sform, else qform, in DICOM's patient axes (LPS) through
+ * the output's origin and direction matrix; of a 4D file the first volume, with a warning).
+ * The output is a vtkImageData whose
  * active point scalars are the volume (the file's active scalars, else its first point array).
  *
  * Bad input (no file name, missing or unreadable file, unknown extension, a file the chosen

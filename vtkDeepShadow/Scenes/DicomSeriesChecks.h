@@ -1,0 +1,25 @@
+// Internal to DeepShadow::Scenes: a DICOM series directory checked before VTK's
+// vtkDICOMImageReader reads it. That reader takes every file of a directory as one series:
+// it stacks slices of different series or sizes, fills a cut file's missing pixels, and
+// cannot decode compressed transfer syntaxes. Each file's header is read here (the elements
+// the checks need, little endian, implicit or explicit VR) without VTK.
+#ifndef deepshadow_DicomSeriesChecks_h
+#define deepshadow_DicomSeriesChecks_h
+
+#include <string>
+
+namespace deepshadow
+{
+namespace volumefile
+{
+
+/**
+ * "" when `directory` holds one readable series: at least one DICOM file (the "DICM"
+ * preamble), all of one series and one size, uncompressed little endian, each with all its
+ * pixel data. Else the problem in words, naming the file.
+ */
+std::string CheckDicomDirectory(const std::string& directory);
+
+}
+}
+#endif
