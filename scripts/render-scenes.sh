@@ -1,26 +1,19 @@
 #!/usr/bin/env bash
-# The main job: renders every standard scene headless with vtkDeepShadowVolumeMapper, and the
-# CPU reference of each, into out/scenes (PNG images, differences, JSON statistics); then the
-# short error-against-run-time report of every shadow technique into out/report; and the
-# bounded scenes (volumes inside CSG bounds) with deep shadows into out/bounded; and the
-# hybrid scenes (meshes and volumes shadowing each other) with coloured deep shadows into
-# out/hybrid, and their short error-against-run-time report into out/report-hybrid.
-# Extra arguments go to `deepshadow all` (e.g. --size 256x256).
+# The main job: every standard, bounded and hybrid scene rendered headless without shadows,
+# with its default shadows (deep shadow maps; coloured ones for the hybrid scenes) and as the
+# CPU ground truth, side by side in out/index.html with frame times and errors (deepshadow
+# gallery: about two minutes on two cores after the build), and Chromium's screenshot of the
+# page in out/index.png. The reports of every technique and parameter: scripts/report.sh.
+# Extra arguments go to `deepshadow gallery` (e.g. --size 384x384, --scenes head,rods).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"
-mkdir -p "$root/out/scenes"
-"$root/build/bin/deepshadow" all --out "$root/out/scenes" "$@"
-"$root/build/bin/deepshadow" report --quick --out "$root/out/report"
-mkdir -p "$root/out/bounded"
-for scene in head-cut box-torus spheres-half; do
-  "$root/build/bin/deepshadow" render --scene "$scene" --technique dsm --frames 1 \
-    --out "$root/out/bounded/$scene.png" --json "$root/out/bounded/$scene.json"
-done
-mkdir -p "$root/out/hybrid"
-for scene in hybrid-ground hybrid-glass hybrid-rod hybrid-smoke; do
-  "$root/build/bin/deepshadow" render --scene "$scene" --technique dsm-color --frames 1 \
-    --out "$root/out/hybrid/$scene.png" --json "$root/out/hybrid/$scene.json"
-done
-"$root/build/bin/deepshadow" report --quick --scenes hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke \
-  --out "$root/out/report-hybrid"
+mkdir -p "$root/out"
+start=$(date +%s)
+"$root/build/bin/deepshadow" gallery --out "$root/out" "$@"
+if command -v chromium > /dev/null; then
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars \
+    --screenshot="$root/out/index.png" --window-size=1300,2400 "file://$root/out/index.html" \
+    > /dev/null 2>&1 || echo "render-scenes: Chromium could not screenshot the page"
+fi
+echo "render-scenes: out/index.html in $(( $(date +%s) - start )) s after the build"

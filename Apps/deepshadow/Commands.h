@@ -15,6 +15,7 @@ int RunReference(const Options& options);
 int RunAll(const Options& options);
 int RunScenes(const Options& options);
 int RunPresets(const Options& options);
+int RunGallery(const Options& options);
 int RunBench(const Options& options);
 int RunShadowBench(const Options& options);
 int RunReport(const Options& options);

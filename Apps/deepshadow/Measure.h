@@ -71,10 +71,11 @@ public:
    * Measures `technique` (null: unshadowed); `shadowTerm` also captures the shadow term. A
    * scene with a second volume (hybrid-smoke) gives it `second`, a technique of the same
    * kind: builds, times and memory are then both techniques' together (and the grids that
-   * carry each volume's shadows to the other).
+   * carry each volume's shadows to the other). Without `lightMoves` the light-moving frames
+   * are left out: LightMs stays unmeasured and BuildMs is the warm-up frame's build.
    */
   Measurement Measure(vtkDeepShadowTechnique* technique, bool shadowTerm,
-    vtkDeepShadowTechnique* second = nullptr);
+    vtkDeepShadowTechnique* second = nullptr, bool lightMoves = true);
 
   /** The ground truth, grey or coloured, computed once per kind. */
   const GroundTruth& Truth(bool colored);

@@ -359,6 +359,7 @@ Usage:
   deepshadow reference [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json]
                        [--gpu-twin | --ground-truth] [--threads N]
   deepshadow all       --out DIR [VIEW] [--frames N]
+  deepshadow gallery   --out DIR [--scenes a,b] [--size WxH] [--error-size WxH] [--frames N]
   deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
   deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
                        [--frames N] [--json shadows.json]
@@ -366,6 +367,7 @@ Usage:
                        [--error-size WxH] [--frames N]
   deepshadow scenes
   deepshadow presets
+  deepshadow --version
   deepshadow --help
 
 Commands:
@@ -376,6 +378,10 @@ Commands:
               --gpu-twin reproduces the GPU's approximations (transfer table, early
               termination) instead of the exact model; --ground-truth renders the exact
               shadows (translucent shadow rays at a quarter step) whatever the technique.
+  gallery     Every standard, bounded and hybrid scene unshadowed, with its default shadows
+              (dsm; dsm-color for hybrid scenes) and the ground truth, side by side in
+              DIR/index.html with frame times and errors (the main job; 256x256, errors at
+              96x96, 2 frames; --scenes a,b for some).
   all         Renders every standard scene into DIR (DIR/<scene>.png and .json), with the
               CPU reference and the error against it.
   bench       Our mapper against VTK's vtkGPUVolumeRayCastMapper in one run, same scenes,
@@ -476,6 +482,11 @@ Options Options::Parse(int argc, char* argv[])
     o.Command = "help";
     return o;
   }
+  if (args[0] == "--version")
+  {
+    o.Command = "version";
+    return o;
+  }
   if (args[0].rfind("--", 0) == 0)
   {
     // Only options: render is the default command.
@@ -487,7 +498,7 @@ Options Options::Parse(int argc, char* argv[])
     i = 1;
   }
   static const char* const commands[] = { "render", "reference", "all", "bench", "shadow-bench",
-    "report", "scenes", "presets" };
+    "report", "scenes", "presets", "gallery" };
   bool known = false;
   for (const char* c : commands)
   {
@@ -506,6 +517,13 @@ Options Options::Parse(int argc, char* argv[])
     o.Width = o.Height = o.Quick ? 256 : 512;
     o.ErrorWidth = o.ErrorHeight = o.Quick ? 128 : 256;
     o.Frames = o.Quick ? 3 : 5;
+  }
+  if (o.Command == "gallery")
+  {
+    // A page in a few minutes on two cores: small pictures, errors at a small size.
+    o.Width = o.Height = 256;
+    o.ErrorWidth = o.ErrorHeight = 96;
+    o.Frames = 2;
   }
 
   bool sawScene = false;
@@ -778,11 +796,11 @@ Options Options::Parse(int argc, char* argv[])
     o.Scene = "box";
   }
   if ((o.Command == "render" || o.Command == "reference" || o.Command == "all" ||
-        o.Command == "report") && o.Out.empty())
+        o.Command == "report" || o.Command == "gallery") && o.Out.empty())
   {
     throw UsageError(o.Command + " needs --out");
   }
-  if (o.Command == "all" || o.Command == "report")
+  if (o.Command == "all" || o.Command == "report" || o.Command == "gallery")
   {
     o.OutDir = o.Out;
   }

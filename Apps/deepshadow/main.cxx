@@ -5,6 +5,7 @@
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
+#include "vtkVersionMacros.h"
 
 #include <cstdio>
 #include <exception>
@@ -32,6 +33,12 @@ int Run(const deepshadow::tool::Options& options)
   if (options.Command == "help")
   {
     std::cout << Options::Usage();
+    return 0;
+  }
+  if (options.Command == "version")
+  {
+    std::cout << "deepshadow " << DEEPSHADOW_VERSION << " (vtkDeepShadow, built with VTK "
+              << VTK_VERSION << ")\n";
     return 0;
   }
   // Output files that cannot be written are said before any work.
@@ -66,6 +73,10 @@ int Run(const deepshadow::tool::Options& options)
   if (options.Command == "report")
   {
     return RunReport(options);
+  }
+  if (options.Command == "gallery")
+  {
+    return RunGallery(options);
   }
   if (options.Command == "presets")
   {

@@ -22,6 +22,8 @@ write_mhd() {
 
 expect 0 "--help" -- "$tool" --help
 grep -q "deepshadow render" out.txt || fail "--help lacks the render usage"
+expect 0 "--version" -- "$tool" --version
+grep -q "^deepshadow [0-9][0-9.]* (vtkDeepShadow, built with VTK 9" out.txt || fail "--version: $(cat out.txt)"
 expect 2 "no arguments" -- "$tool"
 expect 2 "unknown command" -- "$tool" paint --out x.png
 expect 2 "unknown option" -- "$tool" render --colour red --out x.png
