@@ -82,6 +82,17 @@ const std::vector<Preset>& Presets()
   return presets;
 }
 
+// "CT-Bone, CT-Skin, ...", for the messages.
+std::string PresetList()
+{
+  std::string names;
+  for (const Preset& preset : Presets())
+  {
+    names += (names.empty() ? "" : ", ") + std::string(preset.Name);
+  }
+  return names;
+}
+
 const Preset* FindPreset(const std::string& name)
 {
   const std::string lower = vtksys::SystemTools::LowerCase(name);
@@ -267,12 +278,8 @@ bool vtkDeepShadowVolumePresets::ApplyPreset(const std::string& name, vtkVolumeP
   const Preset* preset = FindPreset(name);
   if (!preset)
   {
-    std::string names;
-    for (const std::string& known : GetPresetNames())
-    {
-      names += (names.empty() ? "" : ", ") + known;
-    }
-    return this->Fail("unknown transfer-function preset '" + name + "' (presets: " + names + ")");
+    return this->Fail("unknown transfer-function preset '" + name + "' (presets: " +
+      PresetList() + ")");
   }
   if (!property)
   {
@@ -401,13 +408,8 @@ bool vtkDeepShadowVolumePresets::Apply(const std::string& nameOrPath, vtkVolumeP
   }
   if (!vtksys::SystemTools::FileExists(nameOrPath, true))
   {
-    std::string names;
-    for (const std::string& known : GetPresetNames())
-    {
-      names += (names.empty() ? "" : ", ") + known;
-    }
-    return this->Fail("'" + nameOrPath + "' is neither a transfer-function preset (" + names +
-      ") nor a file");
+    return this->Fail("'" + nameOrPath + "' is neither a transfer-function preset (" +
+      PresetList() + ") nor a file");
   }
   return this->ApplyFile(nameOrPath, property);
 }

@@ -95,8 +95,7 @@ int VisitObject(dl_phdr_info* info, size_t, void* data)
   auto& pass = *static_cast<Pass*>(data);
   const char* name = info->dlpi_name ? info->dlpi_name : "";
   const auto* dynamic = static_cast<const ElfW(Dyn)*>(nullptr);
-  bool holdsSelf = false;
-  // Whether an address lies in this object: a lazily bound slot still points at its own PLT.
+  // Whether an address lies in this object (a lazily bound slot still points at its own PLT).
   auto inside = [info](const void* address) {
     const auto value = reinterpret_cast<ElfW(Addr)>(address);
     for (int i = 0; i < info->dlpi_phnum; ++i)
@@ -112,19 +111,12 @@ int VisitObject(dl_phdr_info* info, size_t, void* data)
   };
   for (int i = 0; i < info->dlpi_phnum; ++i)
   {
-    const ElfW(Phdr)& header = info->dlpi_phdr[i];
-    const auto start = info->dlpi_addr + header.p_vaddr;
-    const auto self = reinterpret_cast<ElfW(Addr)>(pass.Self);
-    if (header.p_type == PT_LOAD && self >= start && self < start + header.p_memsz)
+    if (info->dlpi_phdr[i].p_type == PT_DYNAMIC)
     {
-      holdsSelf = true;
-    }
-    if (header.p_type == PT_DYNAMIC)
-    {
-      dynamic = reinterpret_cast<const ElfW(Dyn)*>(start);
+      dynamic = reinterpret_cast<const ElfW(Dyn)*>(info->dlpi_addr + info->dlpi_phdr[i].p_vaddr);
     }
   }
-  if (!dynamic || holdsSelf || IsGLImplementation(name) || std::strstr(name, "linux-vdso"))
+  if (!dynamic || inside(pass.Self) || IsGLImplementation(name) || std::strstr(name, "linux-vdso"))
   {
     return 0;
   }
