@@ -9,7 +9,8 @@ packages=(cmake ninja-build g++ ccache pkg-config
   libvtk9-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libcgal-dev libgtest-dev
   python3-nibabel # real MR scans (NIfTI) and DICOM slices for the reader tests
-  chromium)       # headless screenshots of the main job's page (out/index.html)
+  chromium        # headless screenshots of the main job's page (out/index.html)
+  xvfb)           # a virtual display for the interactive viewer's test
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

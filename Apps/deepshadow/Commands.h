@@ -5,6 +5,8 @@
 
 #include "Options.h"
 
+#include <functional>
+
 namespace deepshadow
 {
 namespace tool
@@ -16,6 +18,9 @@ int RunAll(const Options& options);
 int RunScenes(const Options& options);
 int RunPresets(const Options& options);
 int RunGallery(const Options& options);
+int RunView(const Options& options);
+/** view's own options (--keys, --screenshots); false if `key` is not one. */
+bool ParseViewerOption(Options& o, const std::string& key, const std::function<std::string()>& next);
 int RunBench(const Options& options);
 int RunShadowBench(const Options& options);
 int RunReport(const Options& options);

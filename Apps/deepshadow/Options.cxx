@@ -1,5 +1,6 @@
 #include "Options.h"
 
+#include "Commands.h"
 #include "Look.h"
 
 #include <algorithm>
@@ -359,6 +360,7 @@ Usage:
   deepshadow reference [SCENE] [VIEW] [RENDERING] --out image.png [--json stats.json]
                        [--gpu-twin | --ground-truth] [--threads N]
   deepshadow all       --out DIR [VIEW] [--frames N]
+  deepshadow view     [SCENE] [VIEW] [RENDERING] [--keys K,K,...] [--screenshots DIR]
   deepshadow gallery   --out DIR [--scenes a,b] [--size WxH] [--error-size WxH] [--frames N]
   deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
   deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
@@ -378,6 +380,11 @@ Commands:
               --gpu-twin reproduces the GPU's approximations (transfer table, early
               termination) instead of the exact model; --ground-truth renders the exact
               shadows (translucent shadow rays at a quarter step) whatever the technique.
+  view        The scene in a window (needs a display): the mouse orbits, Ctrl + left drag
+              or the arrow keys move the key light, t switches the technique, e/E halve or
+              double epsilon, m/M the map size, g toggles the meshes (--ground for a floor),
+              s saves a screenshot, q quits. --keys t,Left,s feeds keys without a person;
+              --screenshots DIR is where s writes view-N.png and view-N.json.
   gallery     Every standard, bounded and hybrid scene unshadowed, with its default shadows
               (dsm; dsm-color for hybrid scenes) and the ground truth, side by side in
               DIR/index.html with frame times and errors (the main job; 256x256, errors at
@@ -498,7 +505,7 @@ Options Options::Parse(int argc, char* argv[])
     i = 1;
   }
   static const char* const commands[] = { "render", "reference", "all", "bench", "shadow-bench",
-    "report", "scenes", "presets", "gallery" };
+    "report", "scenes", "presets", "gallery", "view" };
   bool known = false;
   for (const char* c : commands)
   {
@@ -693,6 +700,9 @@ Options Options::Parse(int argc, char* argv[])
     {
       o.Shade = false;
       o.ShadeGiven = true;
+    }
+    else if (o.Command == "view" && ParseViewerOption(o, key, next))
+    {
     }
     else if (ParseLookOption(o, key, next))
     {

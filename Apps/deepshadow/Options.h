@@ -49,7 +49,7 @@ struct MeshSpec
 
 struct Options
 {
-  std::string Command; // render | reference | all | bench | shadow-bench | report | scenes | presets | help
+  std::string Command; // render | view | reference | all | gallery | bench | shadow-bench | report | scenes | presets | help
   std::vector<std::string> Arguments; // as given, after the command
 
   // What to render.
@@ -78,6 +78,8 @@ struct Options
   std::string View;       // --view anterior|posterior|left|right|superior|inferior
   double Azimuth = 0.0, Elevation = 0.0, Roll = 0.0, Zoom = 1.0;
   std::string CameraFile; // --camera: JSON as render --json writes under "camera"
+  std::string ViewKeys;      // view --keys: keys fed without a person, comma-separated
+  std::string ScreenshotDir; // view --screenshots: where 's' writes view-N.png and .json
   bool Jitter = false;
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;

@@ -74,6 +74,10 @@ int Run(const deepshadow::tool::Options& options)
   {
     return RunReport(options);
   }
+  if (options.Command == "view")
+  {
+    return RunView(options);
+  }
   if (options.Command == "gallery")
   {
     return RunGallery(options);
