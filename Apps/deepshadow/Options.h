@@ -51,6 +51,7 @@ struct Options
 {
   std::string Command; // render | view | reference | all | gallery | bench | shadow-bench | report | scenes | presets | help
   std::vector<std::string> Arguments; // as given, after the command
+  std::string HelpCommand; // help: the command whose --help it is ("" for all)
 
   // What to render.
   std::string Scene;      // standard scene name
@@ -124,6 +125,8 @@ struct Options
   /** Parses argv; throws UsageError. `--help` sets Command to "help". */
   static Options Parse(int argc, char* argv[]);
   static std::string Usage();
+  /** One command's synopsis and description, and the options (`deepshadow CMD --help`). */
+  static std::string CommandUsage(const std::string& command);
 };
 
 /** A finite number, or UsageError naming the option. */

@@ -32,7 +32,8 @@ int Run(const deepshadow::tool::Options& options)
   using namespace deepshadow::tool;
   if (options.Command == "help")
   {
-    std::cout << Options::Usage();
+    std::cout << (options.HelpCommand.empty() ? Options::Usage()
+                                              : Options::CommandUsage(options.HelpCommand));
     return 0;
   }
   if (options.Command == "version")

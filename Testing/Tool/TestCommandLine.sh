@@ -22,6 +22,12 @@ write_mhd() {
 
 expect 0 "--help" -- "$tool" --help
 grep -q "deepshadow render" out.txt || fail "--help lacks the render usage"
+for command in render reference view all gallery bench shadow-bench report scenes presets; do
+  expect 0 "$command --help" -- "$tool" "$command" --help
+  grep -q "^  deepshadow $command" out.txt || fail "$command --help lacks its synopsis"
+  grep -q "^  $command " out.txt || fail "$command --help lacks its description"
+  [ "$(grep -c '^  deepshadow ' out.txt)" -eq 1 ] || fail "$command --help shows other commands' synopses"
+done
 expect 0 "--version" -- "$tool" --version
 grep -q "^deepshadow [0-9][0-9.]* (vtkDeepShadow, built with VTK 9" out.txt || fail "--version: $(cat out.txt)"
 expect 2 "no arguments" -- "$tool"
