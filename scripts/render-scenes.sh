@@ -13,7 +13,7 @@ start=$(date +%s)
 "$root/build/bin/deepshadow" gallery --out "$root/out" "$@"
 if command -v chromium > /dev/null; then
   timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars \
-    --screenshot="$root/out/index.png" --window-size=1300,2400 "file://$root/out/index.html" \
+    --screenshot="$root/out/index.png" --window-size=1300,3600 "file://$root/out/index.html" \
     > /dev/null 2>&1 || echo "render-scenes: Chromium could not screenshot the page"
 fi
 echo "render-scenes: out/index.html in $(( $(date +%s) - start )) s after the build"
