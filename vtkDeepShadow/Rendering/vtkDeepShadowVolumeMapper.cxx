@@ -13,6 +13,7 @@
 #include "Volume/ShadowContext.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
+#include "Volume/UnsupportedSettings.h"
 #include "Volume/VolumeFeatures.h"
 #include "Volume/VolumeTexture.h"
 #include "vtkDeepShadowTechniqueInternals.h"
@@ -503,6 +504,17 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   {
     this->ReportError(problem);
     return false;
+  }
+  // What VTK's mapper would draw and this one does not: said once each, never silent.
+  this->Unsupported = deepshadow::UnsupportedSettings(this, property);
+  for (const std::string& setting : this->Unsupported)
+  {
+    if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==
+      this->UnsupportedSaid.end())
+    {
+      this->UnsupportedSaid.push_back(setting);
+      vtkWarningMacro(<< setting);
+    }
   }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance

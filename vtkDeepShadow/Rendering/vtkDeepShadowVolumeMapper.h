@@ -256,6 +256,13 @@ public:
    */
   const std::string& GetLastError() const { return this->LastError; }
 
+  /**
+   * What the last frame was asked for and did not draw (blend modes other than composite,
+   * cropping, clipping planes, gradient opacity, 2D transfer functions), one line each naming
+   * what is drawn instead; each is also said once with vtkWarningMacro. Empty when none.
+   */
+  const std::vector<std::string>& GetUnsupportedSettings() const { return this->Unsupported; }
+
 protected:
   vtkDeepShadowVolumeMapper();
   ~vtkDeepShadowVolumeMapper() override;
@@ -286,6 +293,8 @@ protected:
   double EmptyBlockFraction = 0.0;
   long long GPUMemoryBytes = 0;
   std::string LastError;
+  std::vector<std::string> Unsupported; // the last frame's, see GetUnsupportedSettings()
+  std::vector<std::string> UnsupportedSaid; // each said once
   bool ErrorThisFrame = false;
 
 private:

@@ -1,0 +1,125 @@
+// What VTK's GPU mapper honours and ours does not draw yet is never silent: each setting is
+// one warning naming it and what is drawn instead, said once over several frames, listed in
+// GetUnsupportedSettings(); and a plain scene says nothing.
+#include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <functional>
+
+using deepshadow::testing::MessageCapture;
+
+namespace
+{
+// Renders the test volume three frames with `change` applied; returns the warnings heard and
+// what the mapper lists.
+std::pair<std::vector<std::string>, std::vector<std::string>> Render(
+  const std::function<void(vtkDeepShadowVolumeMapper*, vtkVolumeProperty*)>& change)
+{
+  vtkNew<vtkDeepShadowRenderWindow> window;
+  window->SetSize(48, 48);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkDeepShadowVolumeMapper> mapper;
+  mapper->SetInputData(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+  vtkNew<MessageCapture> capture;
+  capture->Watch(mapper);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(255.0, 0.5);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  change(mapper, property);
+  renderer->ResetCamera();
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  return { capture->Warnings, mapper->GetUnsupportedSettings() };
+}
+
+bool Says(const std::vector<std::string>& lines, const std::string& needle)
+{
+  for (const auto& line : lines)
+  {
+    if (line.find(needle) != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+int TestUnsupportedSettingsAreSaid(int, char*[])
+{
+  bool ok = true;
+  const auto plain = Render([](vtkDeepShadowVolumeMapper*, vtkVolumeProperty*) {});
+  if (!plain.first.empty() || !plain.second.empty())
+  {
+    std::printf("a plain scene said: %s\n", plain.first.empty() ? plain.second[0].c_str() : plain.first[0].c_str());
+    ok = false;
+  }
+
+  struct Case
+  {
+    const char* Name;
+    const char* Needle;
+    std::function<void(vtkDeepShadowVolumeMapper*, vtkVolumeProperty*)> Change;
+  };
+  const std::vector<Case> cases = {
+    { "MIP", "blend mode maximum intensity projection",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToMaximumIntensity(); } },
+    { "isosurface", "blend mode isosurface",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToIsoSurface(); } },
+    { "cropping", "cropping (SetCropping)",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        m->CroppingOn();
+        m->SetCroppingRegionPlanes(-5, 5, -5, 5, -5, 5);
+      } },
+    { "clipping plane", "clipping planes",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        vtkNew<vtkPlane> plane;
+        plane->SetNormal(1, 0, 0);
+        m->AddClippingPlane(plane);
+      } },
+    { "gradient opacity", "gradient opacity",
+      [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) {
+        vtkNew<vtkPiecewiseFunction> gradient;
+        gradient->AddPoint(0.0, 0.0);
+        gradient->AddPoint(50.0, 1.0);
+        p->SetGradientOpacity(gradient);
+      } },
+    { "2D transfer function", "2D transfer functions",
+      [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
+  };
+  for (const Case& c : cases)
+  {
+    const auto heard = Render(c.Change);
+    const bool once = heard.first.size() == 1 && Says(heard.first, c.Needle);
+    const bool listed = heard.second.size() == 1 && Says(heard.second, c.Needle);
+    std::printf("%-22s %s: %s\n", c.Name, once && listed ? "said once" : "NOT said as it should",
+      heard.first.empty() ? "(nothing)" : heard.first[0].c_str());
+    ok = ok && once && listed;
+  }
+  // A gradient opacity that changes nothing (all ones) is not a setting to warn about.
+  const auto ones = Render([](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) {
+    vtkNew<vtkPiecewiseFunction> gradient;
+    gradient->AddPoint(0.0, 1.0);
+    gradient->AddPoint(50.0, 1.0);
+    p->SetGradientOpacity(gradient);
+  });
+  ok = ok && ones.first.empty();
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
