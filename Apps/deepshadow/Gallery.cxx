@@ -71,26 +71,6 @@ std::string Fixed(double value, int digits)
   return buffer;
 }
 
-// The window's picture at --size with `technique` (null: none), from the start view.
-Image Show(SceneBench& bench, vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second)
-{
-  SceneSetup& setup = bench.Setup();
-  setup.Mapper->SetShadowTechnique(technique);
-  if (setup.SecondMapper)
-  {
-    setup.SecondMapper->SetShadowTechnique(second);
-  }
-  RenderFrame(setup.Window);
-  RequireDrawn(setup);
-  Image picture = CaptureWindow(setup.Window);
-  setup.Mapper->SetShadowTechnique(nullptr);
-  if (setup.SecondMapper)
-  {
-    setup.SecondMapper->SetShadowTechnique(nullptr);
-  }
-  return picture;
-}
-
 struct Row
 {
   GalleryScene Scene;
@@ -149,8 +129,8 @@ int RunGallery(const Options& options)
     row.ShadowedError = Compare(row.Shadowed.Picture, truth.Picture);
 
     const std::string stem = options.OutDir + "/" + scene.Name;
-    WritePNG(ToImageData(Show(bench, nullptr, nullptr)), outputs.Stage(stem + "-none.png"));
-    WritePNG(ToImageData(Show(bench, technique, second)), outputs.Stage(stem + "-shadows.png"));
+    WritePNG(ToImageData(bench.Picture(nullptr)), outputs.Stage(stem + "-none.png"));
+    WritePNG(ToImageData(bench.Picture(technique, second)), outputs.Stage(stem + "-shadows.png"));
     WritePNG(ToImageData(truth.Picture), outputs.Stage(stem + "-truth.png"));
 
     Json stats;

@@ -25,6 +25,16 @@ std::string Number(double value, int digits = 6)
   std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
   return buffer;
 }
+
+std::string NumberArray(const std::vector<double>& values, int digits)
+{
+  std::string raw = "[";
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    raw += (i ? ", " : "") + Number(values[i], digits);
+  }
+  return raw + "]";
+}
 }
 
 std::string Json::Quote(const std::string& text)
@@ -98,12 +108,7 @@ Json& Json::Set(const std::string& key, const std::string& value)
 
 Json& Json::Set(const std::string& key, const std::vector<double>& values)
 {
-  std::string raw = "[";
-  for (size_t i = 0; i < values.size(); ++i)
-  {
-    raw += (i ? ", " : "") + Number(values[i]);
-  }
-  return this->SetRaw(key, raw + "]");
+  return this->SetRaw(key, NumberArray(values, 6));
 }
 
 Json& Json::SetExact(const std::string& key, double value)
@@ -113,12 +118,7 @@ Json& Json::SetExact(const std::string& key, double value)
 
 Json& Json::SetExact(const std::string& key, const std::vector<double>& values)
 {
-  std::string raw = "[";
-  for (size_t i = 0; i < values.size(); ++i)
-  {
-    raw += (i ? ", " : "") + Number(values[i], 17);
-  }
-  return this->SetRaw(key, raw + "]");
+  return this->SetRaw(key, NumberArray(values, 17));
 }
 
 Json& Json::Set(const std::string& key, const std::vector<std::string>& values)

@@ -1,5 +1,7 @@
 #include "Look.h"
 
+#include "SceneSetup.h"
+
 #include "vtkDeepShadowVolumePresets.h"
 
 #include "vtkCamera.h"
@@ -262,9 +264,7 @@ void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProper
     {
       throw UsageError(presets->GetLastError());
     }
-    const double* spacing = data->GetSpacing();
-    property->SetScalarOpacityUnitDistance(
-      std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
+    property->SetScalarOpacityUnitDistance(SmallestSpacing(data));
   }
   if (options.ShadeGiven || options.TransferFunction.empty())
   {

@@ -100,11 +100,7 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
   vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
   vtkDeepShadowVolumeMapper* secondMapper = this->Scene.SecondMapper;
   second = secondMapper ? second : nullptr;
-  mapper->SetShadowTechnique(technique);
-  if (secondMapper)
-  {
-    secondMapper->SetShadowTechnique(second);
-  }
+  this->Use(technique, second);
   const auto builds = [&]() { return mapper->GetShadowBuilds() + (secondMapper ? secondMapper->GetShadowBuilds() : 0); };
   this->Restore();
   RenderFrame(this->Scene.Window); // warm-up: builds and compiles
@@ -158,12 +154,28 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     m.TexelsOverflowed = dsm->GetTexelsOverflowed();
     m.EpsilonMax = dsm->GetEpsilonMax();
   }
-  mapper->SetShadowTechnique(nullptr);
-  if (secondMapper)
-  {
-    secondMapper->SetShadowTechnique(nullptr);
-  }
+  this->Use(nullptr, nullptr);
   return m;
+}
+
+void SceneBench::Use(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second)
+{
+  this->Scene.Mapper->SetShadowTechnique(technique);
+  if (this->Scene.SecondMapper)
+  {
+    this->Scene.SecondMapper->SetShadowTechnique(second);
+  }
+}
+
+Image SceneBench::Picture(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second)
+{
+  this->Use(technique, second);
+  this->Restore();
+  RenderFrame(this->Scene.Window);
+  RequireDrawn(this->Scene);
+  Image picture = CaptureWindow(this->Scene.Window);
+  this->Use(nullptr, nullptr);
+  return picture;
 }
 
 const GroundTruth& SceneBench::Truth(bool colored)
@@ -173,16 +185,11 @@ const GroundTruth& SceneBench::Truth(bool colored)
   {
     return truth;
   }
-  vtkDeepShadowVolumeMapper* mapper = this->Scene.Mapper;
   vtkNew<vtkDeepShadowRayTechnique> model; // says only grey or coloured
   model->SetColored(colored);
-  mapper->SetShadowTechnique(model);
   vtkNew<vtkDeepShadowRayTechnique> secondModel; // a second volume casts and receives too
   secondModel->SetColored(colored);
-  if (this->Scene.SecondMapper)
-  {
-    this->Scene.SecondMapper->SetShadowTechnique(secondModel);
-  }
+  this->Use(model, secondModel);
   this->Restore();
   this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
   RenderFrame(this->Scene.Window); // lights and clipping as the GPU frames have them
@@ -196,11 +203,7 @@ const GroundTruth& SceneBench::Truth(bool colored)
   truth.Milliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
-  mapper->SetShadowTechnique(nullptr);
-  if (this->Scene.SecondMapper)
-  {
-    this->Scene.SecondMapper->SetShadowTechnique(nullptr);
-  }
+  this->Use(nullptr, nullptr);
   this->HaveTruth[colored ? 1 : 0] = true;
   return truth;
 }

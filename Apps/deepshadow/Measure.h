@@ -80,12 +80,18 @@ public:
   /** The ground truth, grey or coloured, computed once per kind. */
   const GroundTruth& Truth(bool colored);
 
+  /** The start view at --size with `technique` (null: none; `second` as in Measure). */
+  Image Picture(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second = nullptr);
+
   SceneSetup& Setup() { return this->Scene; }
   /** The options the scene was built with (its name in Scene). */
   const Options& GetOptions() const { return this->Settings; }
 
 private:
   void Restore();
+  /** Gives the scene's mappers their techniques (null: none; `second` only if there is a
+   * second volume). */
+  void Use(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second);
   void Orbit();
   void TurnLight();
   Image Capture(bool shadowTerm);

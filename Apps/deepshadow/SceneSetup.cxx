@@ -98,11 +98,15 @@ vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
   property->SetScalarOpacity(opacity);
   property->SetInterpolationTypeToLinear();
   property->ShadeOn();
-  const double* spacing = data->GetSpacing();
-  property->SetScalarOpacityUnitDistance(
-    std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
+  property->SetScalarOpacityUnitDistance(SmallestSpacing(data));
   return property;
 }
+}
+
+double SmallestSpacing(vtkImageData* data)
+{
+  const double* spacing = data->GetSpacing();
+  return std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
 }
 
 vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options)

@@ -52,6 +52,9 @@ struct SceneSetup
   static SceneSetup Build(const Options& options);
 };
 
+/** The shortest voxel edge: the opacity unit distance files and presets are given. */
+double SmallestSpacing(vtkImageData* data);
+
 /** Throws UsageError, listing the scenes, unless `name` is a standard, bounded or hybrid scene. */
 void RequireSceneName(const std::string& name);
 

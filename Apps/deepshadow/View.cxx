@@ -80,16 +80,15 @@ public:
   vtkRenderWindow* GetWindow() { return this->Window; }
   vtkLight* GetKeyLight() { return this->Key; }
 
-  /** Renders a frame and updates the status line from it (two renders: the line shows the
-   * frame it belongs to). */
+  /** Renders a frame; the status line shows the state and the previous frame's time (one
+   * render per frame: the line is drawn with the frame it describes the settings of). */
   void Render()
   {
+    this->Text->SetInput(this->Status().c_str());
     const auto start = std::chrono::steady_clock::now();
     this->Window->Render();
     this->FrameMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    this->Text->SetInput(this->Status().c_str());
-    this->Window->Render();
   }
 
   std::string Status() const

@@ -16,9 +16,13 @@ namespace
 {
 using vtksys::SystemTools;
 
+// Headers are read from the first bytes only: the pixel data, most of a file, is not read.
+constexpr std::uint64_t HeaderBytes = 4 << 20;
+
 struct DicomHeader
 {
   std::string Problem; // "" when the header was read
+  bool Unknown = false; // the header goes on past HeaderBytes: not checked
   std::string TransferSyntax;
   std::string SeriesUID;
   int Rows = 0, Columns = 0, BitsAllocated = 0, SamplesPerPixel = 1;
@@ -52,9 +56,13 @@ std::string Text(const std::vector<unsigned char>& b, std::uint64_t at, std::uin
 DicomHeader ReadHeader(const std::string& path)
 {
   DicomHeader h;
+  const std::uint64_t fileSize = SystemTools::FileLength(path);
+  std::vector<unsigned char> b(static_cast<size_t>(std::min(fileSize, HeaderBytes)));
   std::ifstream in(path, std::ios::binary);
-  std::vector<unsigned char> b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
+  b.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
   const std::uint64_t size = b.size();
+  const bool whole = size == fileSize;
   std::uint64_t at = 132;
   bool explicitVR = true;
   while (at + 8 <= size)
@@ -106,7 +114,11 @@ DicomHeader ReadHeader(const std::string& path)
     }
     if (value + length > size)
     {
-      h.Problem = "its header is cut short";
+      if (whole)
+      {
+        h.Problem = "its header is cut short";
+      }
+      h.Unknown = !whole;
       return h;
     }
     if (group == 0x0002 && element == 0x0010)
@@ -126,6 +138,7 @@ DicomHeader ReadHeader(const std::string& path)
     }
     at = value + length;
   }
+  h.Unknown = !whole; // the header runs past what was read
   return h;
 }
 
@@ -170,6 +183,7 @@ std::string CheckDicomDirectory(const std::string& directory)
   }
   std::sort(files.begin(), files.end());
   DicomHeader first;
+  std::string firstName; // of the first file whose header was read whole
   for (size_t f = 0; f < files.size(); ++f)
   {
     const std::string path = directory + "/" + files[f];
@@ -178,6 +192,10 @@ std::string CheckDicomDirectory(const std::string& directory)
     if (!h.Problem.empty())
     {
       return where + ": " + h.Problem;
+    }
+    if (h.Unknown)
+    {
+      continue; // a header over HeaderBytes: left to VTK's reader
     }
     const std::string& ts = h.TransferSyntax;
     if (ts != "1.2.840.10008.1.2" && ts != "1.2.840.10008.1.2.1")
@@ -201,19 +219,20 @@ std::string CheckDicomDirectory(const std::string& directory)
         " of the " + std::to_string(needed) + " bytes a " + std::to_string(h.Columns) + "x" +
         std::to_string(h.Rows) + " image needs)";
     }
-    if (f == 0)
+    if (firstName.empty())
     {
       first = h;
+      firstName = files[f];
       continue;
     }
     if (h.SeriesUID != first.SeriesUID)
     {
-      return "the directory mixes series: '" + files[0] + "' and " + where +
+      return "the directory mixes series: '" + firstName + "' and " + where +
         " have different series instance UIDs; give one series per directory";
     }
     if (h.Rows != first.Rows || h.Columns != first.Columns || h.BitsAllocated != first.BitsAllocated)
     {
-      return "the directory mixes image sizes: '" + files[0] + "' is " +
+      return "the directory mixes image sizes: '" + firstName + "' is " +
         std::to_string(first.Columns) + "x" + std::to_string(first.Rows) + ", " + where + " " +
         std::to_string(h.Columns) + "x" + std::to_string(h.Rows);
     }
