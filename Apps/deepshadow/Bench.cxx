@@ -120,6 +120,7 @@ int RunBench(const Options& options)
     theirs->SetUseJittering(0);
 
     const double oursMs = TimeMapper(window, renderer, volume, ours, scene, options.Frames);
+    RequireContext(window);
     if (!ours->GetLastError().empty())
     {
       throw UsageError("bench: " + ours->GetLastError());

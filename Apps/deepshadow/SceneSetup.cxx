@@ -43,7 +43,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <sstream>
 
 namespace deepshadow
 {
@@ -467,12 +466,19 @@ double RenderFrame(vtkDeepShadowRenderWindow* window)
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+void RequireContext(vtkDeepShadowRenderWindow* window)
+{
+  if (!window->HasContext())
+  {
+    // The machine lacks what the chosen backend needs (a driver, libOSMesa): the user's to mend.
+    throw UsageError(std::string("no headless ") + window->GetBackendAsString() +
+      " context: " + window->GetLastError() + " (--backend chooses another)");
+  }
+}
+
 void RequireDrawn(const SceneSetup& setup)
 {
-  if (!setup.Window->HasContext())
-  {
-    throw std::runtime_error("no headless OpenGL context: " + setup.Window->GetLastError());
-  }
+  RequireContext(setup.Window);
   if (!setup.Mapper->GetLastError().empty())
   {
     throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
@@ -501,17 +507,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 
 std::string RendererString(vtkDeepShadowRenderWindow* window)
 {
-  std::istringstream report(window->ReportCapabilities());
-  std::string line;
-  const std::string key = "OpenGL renderer string:";
-  while (std::getline(report, line))
-  {
-    if (line.rfind(key, 0) == 0)
-    {
-      return line.substr(line.find_first_not_of(' ', key.size()));
-    }
-  }
-  return "unknown";
+  const std::string renderer = window->GetOpenGLRenderer();
+  return renderer.empty() ? "unknown" : renderer;
 }
 
 void WritePNG(vtkImageData* image, const std::string& path)

@@ -64,7 +64,10 @@ vtkSmartPointer<vtkDeepShadowTechnique> MakeTechnique(const Options& options);
 /** Renders one frame and waits for the GPU; returns wall milliseconds. */
 double RenderFrame(vtkDeepShadowRenderWindow* window);
 
-/** Throws UsageError if the mapper could not draw (bad data, unsupported type, ...). */
+/** Throws UsageError if the window has no context (the backend's driver or library is missing). */
+void RequireContext(vtkDeepShadowRenderWindow* window);
+
+/** Throws UsageError if the mapper could not draw (no context, bad data, unsupported type, ...). */
 void RequireDrawn(const SceneSetup& setup);
 
 /**

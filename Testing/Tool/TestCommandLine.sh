@@ -132,6 +132,14 @@ expect 2 "degenerate camera" "the position is the focal point" -- "$tool" render
   --camera degenerate-camera.json --out x.png
 expect 2 "missing camera file" "no such file" -- "$tool" render --camera nowhere.json --out x.png
 
+# A machine without what the backend needs (EGL with no vendor library, as where no driver
+# is installed): one line and exit 2, no picture. VTK's End() aborted on the missing context.
+no_driver=(env __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "$tool")
+expect 2 "EGL without a driver: render" "no headless egl context" -- "${no_driver[@]}" render \
+  --backend egl --size 32x32 --frames 1 --out x.png
+expect 2 "EGL without a driver: bench" "EGL" -- "${no_driver[@]}" bench --backend egl \
+  --bench-sizes 32 --size 32x32 --frames 1
+
 # The defaults: a standard scene, a PNG and the JSON statistics.
 expect 0 "render with defaults" -- "$tool" render --size 96x96 --frames 2 --out default.png --json default.json
 not_flat default.png "render with defaults"

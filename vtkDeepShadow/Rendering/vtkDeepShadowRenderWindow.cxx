@@ -9,7 +9,9 @@
 #include "vtkRendererCollection.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <vtksys/SystemTools.hxx>
 
@@ -85,9 +87,20 @@ std::string vtkDeepShadowRenderWindow::GetContextDescription() const
   return this->Context ? this->Context->Describe() : std::string();
 }
 
+std::string vtkDeepShadowRenderWindow::GetOpenGLRenderer()
+{
+  if (!this->CanDraw())
+  {
+    return std::string();
+  }
+  this->MakeCurrent();
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  return renderer ? reinterpret_cast<const char*>(renderer) : std::string();
+}
+
 void vtkDeepShadowRenderWindow::Initialize()
 {
-  if (this->Context)
+  if (this->Context || this->FailedBackend == this->Backend)
   {
     return;
   }
@@ -98,6 +111,7 @@ void vtkDeepShadowRenderWindow::Initialize()
   if (!headless::InterpositionIsEffective(error) || !headless::AcquireBackend(backend, error))
   {
     this->LastError = error;
+    this->FailedBackend = this->Backend;
     vtkErrorMacro("Cannot render headless: " << error);
     return;
   }
@@ -106,12 +120,14 @@ void vtkDeepShadowRenderWindow::Initialize()
   {
     headless::ReleaseBackend(backend);
     this->Context.reset();
+    this->FailedBackend = this->Backend;
     this->LastError = error.empty() ? "the new context could not be made current" : error;
     vtkErrorMacro("Cannot create a headless " << this->GetBackendAsString()
                                               << " context: " << this->LastError);
     return;
   }
   this->ContextBackend = this->Backend;
+  this->FailedBackend = 0;
 
   // Renderers hold per-context resources: reattach them to the new context.
   vtkRenderer* renderer;
@@ -142,6 +158,78 @@ void vtkDeepShadowRenderWindow::Finalize()
   this->ContextBackend = 0;
   this->Initialized = false;
   this->Mapped = 0;
+}
+
+void vtkDeepShadowRenderWindow::Render()
+{
+  // Without a context VTK's End() calls GL through an empty dispatch table and aborts (EGL
+  // with no vendor library, a machine without libOSMesa): the error is the answer instead.
+  this->Initialize();
+  if (!this->CanDraw())
+  {
+    return;
+  }
+  this->Superclass::Render();
+}
+
+int vtkDeepShadowRenderWindow::ReadPixels(
+  const vtkRecti& rect, int front, int glFormat, int glType, void* data, int right)
+{
+  if (this->CanDraw())
+  {
+    return this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
+  }
+  // vtkWindowToImageFilter and the Get*PixelData methods read the picture of a window whose
+  // context could not be made (its error was said): black, and VTK_ERROR.
+  const size_t components = glFormat == GL_RGBA ? 4 : glFormat == GL_RGB ? 3 : 1;
+  const size_t bytes = glType == GL_FLOAT || glType == GL_UNSIGNED_INT ? 4 : 1;
+  if (data && rect.GetWidth() > 0 && rect.GetHeight() > 0)
+  {
+    std::memset(data, 0, components * bytes * static_cast<size_t>(rect.GetWidth()) * rect.GetHeight());
+  }
+  return VTK_ERROR;
+}
+
+int vtkDeepShadowRenderWindow::GetZbufferData(int x1, int y1, int x2, int y2, float* z)
+{
+  if (this->CanDraw())
+  {
+    return this->Superclass::GetZbufferData(x1, y1, x2, y2, z);
+  }
+  const size_t count = static_cast<size_t>(std::abs(x2 - x1) + 1) * (std::abs(y2 - y1) + 1);
+  std::fill(z, z + count, 1.0f);
+  return VTK_ERROR;
+}
+
+int vtkDeepShadowRenderWindow::SetZbufferData(int x1, int y1, int x2, int y2, float* buffer)
+{
+  return this->CanDraw()
+    ? this->Superclass::SetZbufferData(x1, y1, x2, y2, buffer)
+    : VTK_ERROR;
+}
+
+int vtkDeepShadowRenderWindow::SetPixelData(
+  int x, int y, int x2, int y2, unsigned char* data, int front, int right)
+{
+  return this->CanDraw()
+    ? this->Superclass::SetPixelData(x, y, x2, y2, data, front, right)
+    : VTK_ERROR;
+}
+
+int vtkDeepShadowRenderWindow::SetRGBAPixelData(
+  int x, int y, int x2, int y2, float* data, int front, int blend, int right)
+{
+  return this->CanDraw()
+    ? this->Superclass::SetRGBAPixelData(x, y, x2, y2, data, front, blend, right)
+    : VTK_ERROR;
+}
+
+int vtkDeepShadowRenderWindow::SetRGBACharPixelData(
+  int x, int y, int x2, int y2, unsigned char* data, int front, int blend, int right)
+{
+  return this->CanDraw()
+    ? this->Superclass::SetRGBACharPixelData(x, y, x2, y2, data, front, blend, right)
+    : VTK_ERROR;
 }
 
 void vtkDeepShadowRenderWindow::Start()
@@ -212,7 +300,7 @@ const char* vtkDeepShadowRenderWindow::ReportCapabilities()
   std::ostringstream report;
   report << "Headless context: " << this->GetContextDescription() << "\n"
          << "OpenGL vendor string:  " << text(GL_VENDOR) << "\n"
-         << "OpenGL renderer string:  " << text(GL_RENDERER) << "\n"
+         << "OpenGL renderer string:  " << this->GetOpenGLRenderer() << "\n"
          << "OpenGL version string:  " << text(GL_VERSION) << "\n";
   delete[] this->Capabilities;
   const std::string str = report.str();

@@ -66,6 +66,8 @@ public:
   bool HasContext() const;
   /** Where the context came from ("OSMesa ...", "EGL surfaceless platform", ...). */
   std::string GetContextDescription() const;
+  /** GL_RENDERER of the context ("llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H100 ..."); "" without one. */
+  std::string GetOpenGLRenderer();
   /**
    * How many GL imports of other libraries this process had to point at the headless
    * window's entry points (0 when the program links this module before VTK's OpenGL
@@ -79,6 +81,8 @@ public:
   // vtkRenderWindow / vtkOpenGLRenderWindow API.
   void Initialize() override;
   void Finalize() override;
+  /** Draws nothing (and says why once) when no context could be created. */
+  void Render() override;
   void Start() override;
   void Frame() override;
   void MakeCurrent() override;
@@ -87,6 +91,26 @@ public:
   int SupportsOpenGL() override;
   vtkTypeBool IsDirect() override { return 1; }
   const char* ReportCapabilities() override;
+
+  ///@{
+  /**
+   * Pixel and depth I/O. Without a context (its creation failed and said why) reads give
+   * black and the far plane, writes do nothing, all return VTK_ERROR: VTK's own would jump
+   * through GL pointers that were never loaded.
+   */
+  using vtkOpenGLRenderWindow::GetZbufferData;
+  using vtkOpenGLRenderWindow::SetPixelData;
+  using vtkOpenGLRenderWindow::SetRGBACharPixelData;
+  using vtkOpenGLRenderWindow::SetRGBAPixelData;
+  using vtkOpenGLRenderWindow::SetZbufferData;
+  int GetZbufferData(int x1, int y1, int x2, int y2, float* z) override;
+  int SetZbufferData(int x1, int y1, int x2, int y2, float* buffer) override;
+  int SetPixelData(int x, int y, int x2, int y2, unsigned char* data, int front, int right) override;
+  int SetRGBAPixelData(
+    int x, int y, int x2, int y2, float* data, int front, int blend = 0, int right = 0) override;
+  int SetRGBACharPixelData(int x, int y, int x2, int y2, unsigned char* data, int front,
+    int blend = 0, int right = 0) override;
+  ///@}
 
   void SetSize(int width, int height) override;
   void SetSize(int a[2]) override { this->SetSize(a[0], a[1]); }
@@ -116,6 +140,9 @@ protected:
   vtkDeepShadowRenderWindow();
   ~vtkDeepShadowRenderWindow() override;
 
+  /** Zeros, not a jump through a GL pointer never loaded, when there is no context. */
+  int ReadPixels(const vtkRecti& rect, int front, int glFormat, int glType, void* data,
+    int right = 0) override;
   void CreateAWindow() override { this->Initialize(); }
   void DestroyWindow() override { this->Finalize(); }
 
@@ -123,6 +150,10 @@ protected:
   std::string LastError;
   std::unique_ptr<deepshadow::headless::HeadlessContext> Context;
   int ContextBackend = 0; // backend of Context, fixed at its creation
+  int FailedBackend = 0;  // backend whose creation failed: not retried (nor said again) every frame
+
+  /** A context exists and VTK initialized OpenGL in it: GL may be called. */
+  bool CanDraw() const { return this->Context && this->Initialized; }
 
 private:
   vtkDeepShadowRenderWindow(const vtkDeepShadowRenderWindow&) = delete;
