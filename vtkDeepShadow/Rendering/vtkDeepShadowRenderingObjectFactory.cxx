@@ -1,6 +1,7 @@
 #include "vtkDeepShadowRenderingObjectFactory.h"
 
 #include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowVolumeMapperFactory.h"
 #include "vtkVersion.h"
 
 #include <cstdlib>
@@ -81,6 +82,7 @@ void vtkDeepShadowRenderingObjectFactory::PrintSelf(ostream& os, vtkIndent inden
 VTKDEEPSHADOWRENDERING_EXPORT void vtkDeepShadowRendering_AutoInit_Construct()
 {
   vtkDeepShadowRenderingObjectFactory::RegisterIfHeadless();
+  vtkDeepShadowVolumeMapperFactory::OverrideFromEnvironment();
 }
 
 VTKDEEPSHADOWRENDERING_EXPORT void vtkDeepShadowRendering_AutoInit_Destruct() {}

@@ -159,6 +159,10 @@ vtkDeepShadowVolumeMapper::vtkDeepShadowVolumeMapper()
   : TerminationOpacity(deepshadow::DefaultTerminationOpacity)
   , Impl(new Internals)
 {
+  // Ours where VTK's defaults differ: the sample distance follows the spacing (0), and it is
+  // not re-chosen from the frame-time budget unless asked for.
+  this->SampleDistance = 0.0f;
+  this->AutoAdjustSampleDistances = 0;
 }
 
 vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper()
@@ -166,9 +170,9 @@ vtkDeepShadowVolumeMapper::~vtkDeepShadowVolumeMapper()
   this->SetShadowTechnique(nullptr);
 }
 
-void vtkDeepShadowVolumeMapper::SetSampleDistance(double distance)
+void vtkDeepShadowVolumeMapper::SetSampleDistance(float distance)
 {
-  if (!(distance >= 0.0) || !std::isfinite(distance))
+  if (!(distance >= 0.0f) || !std::isfinite(distance))
   {
     vtkErrorMacro("SetSampleDistance(" << distance << "): the sample distance must be finite "
                   "and >= 0 (0: the default); it stays " << this->SampleDistance);
@@ -180,6 +184,40 @@ void vtkDeepShadowVolumeMapper::SetSampleDistance(double distance)
     this->Modified();
   }
 }
+
+double vtkDeepShadowVolumeMapper::SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld)
+{
+  if (this->LockSampleDistanceToInputSpacing)
+  {
+    double spacing[3];
+    int extent[6];
+    input->GetSpacing(spacing);
+    input->GetExtent(extent);
+    return this->SpacingAdjustedSampleDistance(spacing, extent);
+  }
+  return this->SampleDistance > 0.0f ? static_cast<double>(this->SampleDistance)
+                                     : deepshadow::DefaultSampleDistance(indexToWorld);
+}
+
+void vtkDeepShadowVolumeMapper::GetReductionRatio(double ratio[3])
+{
+  ratio[0] = ratio[1] = ratio[2] = 1.0;
+}
+
+int vtkDeepShadowVolumeMapper::IsRenderSupported(vtkRenderWindow* window, vtkVolumeProperty*)
+{
+  return vtkOpenGLRenderWindow::SafeDownCast(window) ? 1 : 0;
+}
+
+void vtkDeepShadowVolumeMapper::PreRender(
+  vtkRenderer*, vtkVolume*, double[6], double[2], int, unsigned int)
+{
+  this->ReportError("AMR volumes (vtkAMRVolumeMapper) are not supported: nothing is drawn");
+}
+
+void vtkDeepShadowVolumeMapper::RenderBlock(vtkRenderer*, vtkVolume*, unsigned int) {}
+
+void vtkDeepShadowVolumeMapper::PostRender(vtkRenderer*, int) {}
 
 void vtkDeepShadowVolumeMapper::SetTerminationOpacity(double opacity)
 {
@@ -280,9 +318,14 @@ int vtkDeepShadowVolumeMapper::GetShadowBuilds()
   return this->ShadowTechnique ? this->ShadowTechnique->GetBuildCount() : 0;
 }
 
-int vtkDeepShadowVolumeMapper::FillInputPortInformation(int, vtkInformation* info)
+int vtkDeepShadowVolumeMapper::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  if (port > 0)
+  {
+    // VTK's mapper takes more volumes on ports 1..9 (vtkMultiVolume); ours draws port 0.
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
@@ -517,8 +560,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     }
   }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
-  const double step = this->SampleDistance > 0.0 ? this->SampleDistance
-                                                 : deepshadow::DefaultSampleDistance(indexToWorld);
+  const double step = this->SampleStep(input, indexToWorld);
   impl.EffectiveStep = step;
   if (!this->UpdateSurfaces(window, worldToIndex))
   {
@@ -648,7 +690,7 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
 {
   Internals& impl = *this->Impl;
   vtkOpenGLRenderWindow* window = frame.Context.Window;
-  frame.Jitter = this->Jitter;
+  frame.Jitter = this->UseJittering != 0;
   frame.JitterSeed = static_cast<int>(this->JitterSeed);
   frame.TerminationOpacity = static_cast<float>(this->TerminationOpacity);
   frame.Opaque = HasOpaqueGeometry(frame.Renderer) ? &impl.Opaque : nullptr;
@@ -721,7 +763,7 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SampleDistance: " << this->SampleDistance << " (0 = half the smallest spacing)\n";
-  os << indent << "Jitter: " << this->Jitter << " (seed " << this->JitterSeed << ")\n";
+  os << indent << "Jitter: " << this->UseJittering << " (seed " << this->JitterSeed << ")\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";

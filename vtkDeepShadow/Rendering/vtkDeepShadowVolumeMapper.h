@@ -2,6 +2,12 @@
  * @class   vtkDeepShadowVolumeMapper
  * @brief   GPU ray-casting volume mapper of vtkDeepShadow (composite blending).
  *
+ * A vtkGPUVolumeRayCastMapper: code written for VTK's mapper compiles unchanged, and with
+ * vtkDeepShadowVolumeMapperFactory::Override() `vtkGPUVolumeRayCastMapper::New()` (and so
+ * vtkSmartVolumeMapper) returns this mapper. What it inherits and does not draw yet (masks,
+ * image sample distance, auto-adjusted sampling, final colour window/level, ...) is said
+ * once per setting (GetUnsupportedSettings()), never ignored in silence.
+ *
  * Renders a single-component vtkImageData (unsigned char, short, unsigned short or float
  * point scalars) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
  * scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
@@ -38,7 +44,7 @@
 
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkNew.h"                       // For vtkNew
-#include "vtkVolumeMapper.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 
 #ifndef __VTK_WRAP__ // VTK's wrapper parser does not get through glm's templates
 #include <glm/mat4x4.hpp> // For glm::dmat4
@@ -58,33 +64,43 @@ class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkVolumeProperty;
 
-class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkVolumeMapper
+class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowVolumeMapper : public vtkGPUVolumeRayCastMapper
 {
 public:
   static vtkDeepShadowVolumeMapper* New();
-  vtkTypeMacro(vtkDeepShadowVolumeMapper, vtkVolumeMapper);
+  vtkTypeMacro(vtkDeepShadowVolumeMapper, vtkGPUVolumeRayCastMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /**
-   * World distance between samples along a ray. 0 (the default) means
-   * deepshadow::DefaultSampleDistance: half the shortest world-space voxel edge. A negative,
-   * infinite or NaN distance is an error (vtkErrorMacro) and the old one is kept.
+   * World distance between samples along a ray (GetSampleDistance() is VTK's). 0 (our
+   * default; VTK's is 1) means deepshadow::DefaultSampleDistance: half the shortest
+   * world-space voxel edge. With LockSampleDistanceToInputSpacing on, the distance is VTK's
+   * spacing-adjusted one instead. A negative, infinite or NaN distance is an error
+   * (vtkErrorMacro) and the old one is kept.
    */
-  virtual void SetSampleDistance(double distance);
-  vtkGetMacro(SampleDistance, double);
+  void SetSampleDistance(float distance) override;
   ///@}
   /** The distance used in the last frame (0 before the first). */
   double GetEffectiveSampleDistance();
 
   ///@{
-  /** Jitter each ray's first sample by a hash of the pixel and JitterSeed (off by default). */
-  vtkSetMacro(Jitter, bool);
-  vtkGetMacro(Jitter, bool);
-  vtkBooleanMacro(Jitter, bool);
+  /**
+   * Jitter each ray's first sample by a hash of the pixel and JitterSeed (off by default).
+   * Jitter is VTK's UseJittering under a shorter name.
+   */
+  void SetJitter(bool jitter) { this->SetUseJittering(jitter ? 1 : 0); }
+  bool GetJitter() { return this->GetUseJittering() != 0; }
+  void JitterOn() { this->SetJitter(true); }
+  void JitterOff() { this->SetJitter(false); }
   vtkSetMacro(JitterSeed, unsigned int);
   vtkGetMacro(JitterSeed, unsigned int);
   ///@}
+
+  /** No reduction: the volume is uploaded whole (or refused when it does not fit). */
+  void GetReductionRatio(double ratio[3]) override;
+  /** 1 in any OpenGL render window (vtkSmartVolumeMapper asks before choosing us). */
+  int IsRenderSupported(vtkRenderWindow* window, vtkVolumeProperty* property) override;
 
   ///@{
   /**
@@ -268,9 +284,12 @@ protected:
   ~vtkDeepShadowVolumeMapper() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // vtkGPUVolumeRayCastMapper's AMR entry points (vtkAMRVolumeMapper): refused.
+  void PreRender(vtkRenderer* renderer, vtkVolume* volume, double bounds[6], double range[2],
+    int components, unsigned int levels) override;
+  void RenderBlock(vtkRenderer* renderer, vtkVolume* volume, unsigned int level) override;
+  void PostRender(vtkRenderer* renderer, int components) override;
 
-  double SampleDistance = 0.0;
-  bool Jitter = false;
   unsigned int JitterSeed = 0;
   double TerminationOpacity;
   bool EmptySpaceSkipping = true;
@@ -320,6 +339,8 @@ private:
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
 #ifndef __VTK_WRAP__
+  /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
+  double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);
   /** Uploads the casting surfaces in index space if they or the placement changed. */
   bool UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex);
 #endif

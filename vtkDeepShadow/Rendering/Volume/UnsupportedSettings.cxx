@@ -2,8 +2,10 @@
 
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneCollection.h"
-#include "vtkVolumeMapper.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkVolumeProperty.h"
+
+#include <sstream>
 
 namespace deepshadow
 {
@@ -46,7 +48,8 @@ bool ChangesOpacity(vtkPiecewiseFunction* function)
 }
 }
 
-std::vector<std::string> UnsupportedSettings(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
+std::vector<std::string> UnsupportedSettings(
+  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property)
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
@@ -72,6 +75,45 @@ std::vector<std::string> UnsupportedSettings(vtkVolumeMapper* mapper, vtkVolumeP
   if (property && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {
     said.push_back("2D transfer functions (TF_2D) are not supported: the 1D functions are used");
+  }
+  // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
+  if (mapper->GetMaskInput())
+  {
+    said.push_back("masks (SetMaskInput) are not supported: the whole volume is drawn");
+  }
+  if (mapper->GetImageSampleDistance() != 1.0f)
+  {
+    std::ostringstream text;
+    text << "image sample distance " << mapper->GetImageSampleDistance()
+         << " is not supported: one ray per pixel is cast";
+    said.push_back(text.str());
+  }
+  if (mapper->GetAutoAdjustSampleDistances())
+  {
+    said.push_back("AutoAdjustSampleDistances is not supported: the sample distance stays "
+                   "fixed (SampleDistance, or half the smallest spacing)");
+  }
+  if (mapper->GetFinalColorWindow() != 1.0f || mapper->GetFinalColorLevel() != 0.5f)
+  {
+    said.push_back("final colour window/level (SetFinalColorWindow/Level) is not supported: "
+                   "colours are drawn as composited");
+  }
+  if (mapper->GetRenderToImage())
+  {
+    said.push_back("RenderToImage is not supported: the volume is drawn into the window");
+  }
+  if (mapper->GetUseDepthPass())
+  {
+    said.push_back("UseDepthPass is not supported: the volume is drawn without it");
+  }
+  for (int port = 1; port < mapper->GetNumberOfInputPorts(); ++port)
+  {
+    if (mapper->GetNumberOfInputConnections(port) > 0)
+    {
+      said.push_back("volumes on input ports 1 and up (vtkMultiVolume) are not supported: "
+                     "the volume on port 0 is drawn");
+      break;
+    }
   }
   return said;
 }

@@ -408,6 +408,29 @@ struct StandardSceneView
 };
 
 /**
+ * The look TestVolumeMapperMatchesVTK compares with VTK's mapper (on MakeTestVolume): an
+ * orange-to-white colour ramp, opacity from 20 up to 0.3, linear interpolation; shaded when
+ * asked.
+ */
+inline vtkSmartPointer<vtkVolumeProperty> MakeComparisonProperty(bool shade)
+{
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 0.0, 0.0, 0.0);
+  color->AddRGBPoint(60, 1.0, 0.5, 0.2);
+  color->AddRGBPoint(255, 0.9, 0.9, 1.0);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(20, 0.0);
+  opacity->AddPoint(255, 0.3);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetInterpolationTypeToLinear();
+  property->SetShade(shade);
+  return property;
+}
+
+/**
  * The scene the shadow tests share: MakeShadowVolume() with a coloured transfer function,
  * shaded, lit from above and slightly off axis, seen from the side at 160x160.
  */

@@ -1,6 +1,8 @@
 // What VTK's GPU mapper honours and ours does not draw yet is never silent: each setting is
 // one warning naming it and what is drawn instead, said once over several frames, listed in
-// GetUnsupportedSettings(); and a plain scene says nothing.
+// GetUnsupportedSettings(); and a plain scene says nothing. The mapper is a
+// vtkGPUVolumeRayCastMapper: its settings (masks, sampling, window/level...) compile and are
+// said too.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -9,6 +11,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkTrivialProducer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -103,6 +106,26 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
       } },
     { "2D transfer function", "2D transfer functions",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
+    { "mask", "masks (SetMaskInput)",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+      } },
+    { "image sample distance", "image sample distance 2",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetImageSampleDistance(2.0f); } },
+    { "auto-adjusted sampling", "AutoAdjustSampleDistances",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->AutoAdjustSampleDistancesOn(); } },
+    { "final colour level", "final colour window/level",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetFinalColorLevel(0.7f); } },
+    { "render to image", "RenderToImage",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->RenderToImageOn(); } },
+    { "depth pass", "UseDepthPass",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->UseDepthPassOn(); } },
+    { "second input volume", "input ports 1 and up",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        vtkNew<vtkTrivialProducer> second;
+        second->SetOutput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetInputConnection(1, second->GetOutputPort());
+      } },
   };
   for (const Case& c : cases)
   {

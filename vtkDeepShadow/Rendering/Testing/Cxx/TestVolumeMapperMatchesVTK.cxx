@@ -40,27 +40,19 @@ struct Case
   double MaxRMSE;
   double Threshold;
   double MaxFraction;
+  bool LockToSpacing = false; // both: LockSampleDistanceToInputSpacing, SampleDistance ignored
 };
 }
 
 int TestVolumeMapperMatchesVTK(int argc, char* argv[])
 {
   auto volumeData = deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0, 0.0, 0.0, 0.0);
-  color->AddRGBPoint(60, 1.0, 0.5, 0.2);
-  color->AddRGBPoint(255, 0.9, 0.9, 1.0);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0, 0.0);
-  opacity->AddPoint(20, 0.0);
-  opacity->AddPoint(255, 0.3);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetInterpolationTypeToLinear();
+  vtkSmartPointer<vtkVolumeProperty> property = deepshadow::testing::MakeComparisonProperty(false);
 
   const Case cases[] = {
     { "emission-absorption", false, false, 0.005, 8.0 / 255.0, 0.01 },
+    { "emission-absorption, sample distance locked to the spacing", false, false, 0.005,
+      8.0 / 255.0, 0.01, true },
     { "shaded", true, false, 0.007, 16.0 / 255.0, 0.005 },
     { "shaded, opaque sphere inside", true, true, 0.007, 16.0 / 255.0, 0.005 },
   };
@@ -88,6 +80,11 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
       vtkNew<vtkGPUVolumeRayCastMapper> theirs;
       theirs->SetAutoAdjustSampleDistances(0);
       theirs->SetSampleDistance(sampleDistance);
+      for (vtkGPUVolumeRayCastMapper* m : { static_cast<vtkGPUVolumeRayCastMapper*>(ours), theirs.Get() })
+      {
+        m->SetLockSampleDistanceToInputSpacing(c.LockToSpacing);
+        m->SetSampleDistance(c.LockToSpacing ? 3.0f : m->GetSampleDistance());
+      }
       vtkVolumeMapper* mapper = which == 1 ? static_cast<vtkVolumeMapper*>(theirs)
                                            : static_cast<vtkVolumeMapper*>(ours);
       mapper->SetInputData(volumeData);
