@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The first thing to run on a machine with a GPU: the test suite and the benchmarks through
+# EGL on its driver instead of llvmpipe. Writes OUTDIR (default out/gpu): probe.json (which
+# driver drew), ctest.txt, bench.json (ours against VTK's mapper), shadows.json (every
+# technique: frame times, build times, errors), gallery/ and scenes/ (pictures to look at).
+# Needs a build (scripts/setup.sh). Where the driver's EGL vendor file is outside glvnd's
+# default folders (containers often mount it elsewhere), point __EGL_VENDOR_LIBRARY_FILENAMES
+# at it. Usage: scripts/gpu-check.sh [OUTDIR]
+set -uo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+out=${1:-$root/out/gpu}
+bin=$root/build/bin
+mkdir -p "$out"
+export VTK_DEEPSHADOW_BACKEND=egl DISPLAY= WAYLAND_DISPLAY=
+
+"$bin/deepshadow" render --scene box --size 64x64 --frames 1 --out "$out/probe.png" \
+  --json "$out/probe.json" || exit 1
+renderer=$(sed -n 's/.*"gl_renderer": "\(.*\)".*/\1/p' "$out/probe.json")
+echo "EGL draws with: $renderer"
+case $renderer in
+  *llvmpipe*) echo "note: that is Mesa's CPU rasterizer, not a GPU (is the driver's EGL vendor file found?)" ;;
+esac
+
+(cd "$root/build" && ctest -j"$(nproc)" --output-on-failure) > "$out/ctest.txt" 2>&1
+echo "ctest: $(grep -E 'tests passed|tests failed' "$out/ctest.txt" | tail -1) (details in $out/ctest.txt)"
+"$bin/deepshadow" bench --json "$out/bench.json"
+"$bin/deepshadow" shadow-bench --json "$out/shadows.json"
+"$bin/deepshadow" gallery --out "$out/gallery" | tail -1
+"$bin/deepshadow" all --out "$out/scenes" | tail -1
