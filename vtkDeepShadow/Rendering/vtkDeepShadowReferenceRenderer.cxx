@@ -89,16 +89,17 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
       instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
     }
   }
-  if (ours && ours->GetNumberOfBounds() > 0)
+  std::vector<vtkPolyData*> bounds;
+  std::string expression;
+  if (ours)
+  {
+    ours->GetDrawnRegion(volume, bounds, expression); // bounds, clipping planes, cropping
+  }
+  if (!bounds.empty())
   {
     // The mapper's bound, built the same way (in the data's coordinates).
-    std::vector<vtkPolyData*> bounds;
-    for (int b = 0; b < ours->GetNumberOfBounds(); ++b)
-    {
-      bounds.push_back(ours->GetBound(b));
-    }
     auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
-    instance.Bound = adapter::MakeBoundRegion(bounds, ours->GetBoundExpression(),
+    instance.Bound = adapter::MakeBoundRegion(bounds, expression,
       glm::inverse(adapter::IndexToWorld(image, nullptr)), error);
     if (!instance.Bound)
     {

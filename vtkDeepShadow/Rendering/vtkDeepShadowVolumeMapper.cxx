@@ -8,6 +8,7 @@
 #include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "Volume/BoxDrawer.h"
+#include "Volume/CutRegion.h"
 #include "Volume/OccupancyTexture.h"
 #include "Volume/RayCastFrame.h"
 #include "Volume/ShadowContext.h"
@@ -123,6 +124,8 @@ public:
   deepshadow::TransferTableTexture Transfer;
   deepshadow::OccupancyTexture Occupancy;
   deepshadow::BoundHierarchy Bound;
+  // What clipping planes and cropping keep, as bound leaves (in the data's coordinates).
+  deepshadow::CutRegion Cut;
   deepshadow::SurfaceHierarchy SurfacesGPU;
   // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
   deepshadow::FramebufferCopy Opaque;
@@ -431,10 +434,31 @@ void vtkDeepShadowVolumeMapper::UpdateTables(
   this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.Occupancy.GetEmptyFraction() : 0.0;
 }
 
-bool vtkDeepShadowVolumeMapper::UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input)
+void vtkDeepShadowVolumeMapper::GetDrawnRegion(
+  vtkVolume* volume, std::vector<vtkPolyData*>& meshes, std::string& expression)
 {
   Internals& impl = *this->Impl;
-  if (impl.Bounds.empty())
+  meshes.clear();
+  for (const auto& bound : impl.Bounds)
+  {
+    meshes.push_back(bound);
+  }
+  vtkImageData* input = this->GetImageInput();
+  const std::vector<vtkPolyData*>& cut =
+    input ? impl.Cut.Update(this, input, volume ? volume->GetMatrix() : nullptr) : std::vector<vtkPolyData*>();
+  meshes.insert(meshes.end(), cut.begin(), cut.end());
+  expression = deepshadow::CutRegion::Combine(
+    static_cast<int>(impl.Bounds.size()), this->BoundExpression, static_cast<int>(cut.size()));
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateBound(
+  vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  std::vector<vtkPolyData*> meshes;
+  std::string expression;
+  this->GetDrawnRegion(volume, meshes, expression);
+  if (meshes.empty())
   {
     impl.Bound.Clear();
     return true;
@@ -442,14 +466,12 @@ bool vtkDeepShadowVolumeMapper::UpdateBound(vtkOpenGLRenderWindow* window, vtkIm
   // The bound lives in the data's coordinates: it follows the image's placement, not the prop's.
   const glm::dmat4 dataToIndex = glm::inverse(adapter::IndexToWorld(input, nullptr));
   std::vector<vtkMTimeType> times;
-  std::vector<vtkPolyData*> meshes;
-  for (const auto& bound : impl.Bounds)
+  for (vtkPolyData* mesh : meshes)
   {
-    times.push_back(bound ? bound->GetMTime() : 0);
-    meshes.push_back(bound);
+    times.push_back(mesh ? mesh->GetMTime() : 0);
   }
-  if (impl.Bound.NeedsUpdate(times, this->BoundExpression, dataToIndex) &&
-    impl.Bound.Update(window, meshes, times, this->BoundExpression, dataToIndex))
+  if (impl.Bound.NeedsUpdate(times, expression, dataToIndex) &&
+    impl.Bound.Update(window, meshes, times, expression, dataToIndex))
   {
     if (impl.Bound.EnclosesNothing())
     {
@@ -573,7 +595,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   impl.Volume.GetTexture()->SetMagnificationFilter(filter);
   this->UpdateTables(window, property, step);
   // The polyhedral bound: rebuilt when a bound, the expression or the data's placement changed.
-  if (!this->UpdateBound(window, input))
+  if (!this->UpdateBound(window, input, volume))
   {
     return false;
   }

@@ -189,6 +189,15 @@ public:
   vtkPolyData* GetBound(int index) const;
   void SetBoundExpression(const std::string& expression);
   const std::string& GetBoundExpression() const { return this->BoundExpression; }
+#ifndef __VTK_WRAP__
+  /**
+   * The region drawn: the bounds above, then (as further leaves, intersected with them) the
+   * closed meshes of what the clipping planes and cropping keep, in the image's coordinates,
+   * for the prop `volume` (clipping planes are in world coordinates). The CPU reference
+   * bounds its volume with the same. Cut meshes are rebuilt only when the cut changed.
+   */
+  void GetDrawnRegion(vtkVolume* volume, std::vector<vtkPolyData*>& meshes, std::string& expression);
+#endif
   ///@}
 
   /**
@@ -337,7 +346,7 @@ private:
   /** The transfer table and the empty-space block map, if what they depend on changed. */
   void UpdateTables(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
-  bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input);
+  bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume);
 #ifndef __VTK_WRAP__
   /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
   double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);

@@ -1,7 +1,6 @@
 #include "UnsupportedSettings.h"
 
 #include "vtkPiecewiseFunction.h"
-#include "vtkPlaneCollection.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -57,15 +56,6 @@ std::vector<std::string> UnsupportedSettings(
   {
     said.push_back(std::string("blend mode ") + BlendModeName(blend) +
       " is not supported: the volume is drawn with composite blending");
-  }
-  if (mapper->GetCropping())
-  {
-    said.push_back("cropping (SetCropping) is not supported: the whole volume is drawn");
-  }
-  if (mapper->GetClippingPlanes() && mapper->GetClippingPlanes()->GetNumberOfItems() > 0)
-  {
-    said.push_back("clipping planes are not supported: the whole volume is drawn (a polyhedral "
-                   "bound, AddBound, cuts the volume and its shadows)");
   }
   if (property && !property->GetDisableGradientOpacity(0) &&
     ChangesOpacity(property->GetStoredGradientOpacity(0)))

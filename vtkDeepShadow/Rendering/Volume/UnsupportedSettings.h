@@ -13,7 +13,7 @@ class vtkVolumeProperty;
 namespace deepshadow
 {
 
-/** Blend modes other than composite, cropping, clipping planes, gradient opacity, 2D transfer
+/** Blend modes other than composite, gradient opacity, 2D transfer
  * functions, masks, image sample distance, auto-adjusted sampling, final colour window/level,
  * render to image, depth pass, more input volumes: what `mapper` and `property` ask for that
  * is not drawn. */

@@ -9,8 +9,6 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPlane.h"
-#include "vtkPlaneCollection.h"
 #include "vtkTrivialProducer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -86,17 +84,6 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToMaximumIntensity(); } },
     { "isosurface", "blend mode isosurface",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToIsoSurface(); } },
-    { "cropping", "cropping (SetCropping)",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
-        m->CroppingOn();
-        m->SetCroppingRegionPlanes(-5, 5, -5, 5, -5, 5);
-      } },
-    { "clipping plane", "clipping planes",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
-        vtkNew<vtkPlane> plane;
-        plane->SetNormal(1, 0, 0);
-        m->AddClippingPlane(plane);
-      } },
     { "gradient opacity", "gradient opacity",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) {
         vtkNew<vtkPiecewiseFunction> gradient;
