@@ -97,12 +97,17 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
 {
   PreparedVolume prepared;
   const glm::dvec2 range = volume.Grid->GetRange();
+  const bool projection = volume.Projection.Mode != BlendMode::Composite;
   if (settings.TransferTableSize > 0)
   {
+    // Projections but additive look opacity up uncorrected: a step of one unit distance
+    // corrects nothing.
+    const bool uncorrected = projection && !volume.Projection.CorrectsOpacity();
     prepared.Table = std::make_unique<TransferTable>(TransferTable::Sample(volume.Transfer,
-      range.x, range.y, settings.TransferTableSize, settings.SampleDistance));
+      range.x, range.y, settings.TransferTableSize,
+      uncorrected ? volume.Transfer.OpacityUnitDistance : settings.SampleDistance));
   }
-  if (settings.EmptySpaceSkipping)
+  if (settings.EmptySpaceSkipping && !projection) // a projection counts transparent samples too
   {
     prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
   }
@@ -153,6 +158,47 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   return prepared;
 }
 
+namespace
+{
+// A projection blend mode along the ray: every sample inside the bound counts, transparent
+// or not, and nothing ends the march early (Features/Projection.glsl).
+glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table,
+  const glm::dvec3& indexOrigin, const glm::dvec3& indexDirection, double t0, double t1,
+  double offset, double dt, std::optional<BoundRegion::Walker>& bound)
+{
+  auto colorOpacity = [&](double scalar) {
+    if (table)
+    {
+      return table->Lookup(scalar);
+    }
+    const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
+    return glm::dvec4(volume.Transfer.Color(scalar), volume.Projection.CorrectsOpacity()
+        ? CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance)
+        : opacity);
+  };
+  ProjectionAccumulator projection(volume.Projection);
+  for (long k = 0;; ++k)
+  {
+    const double t = t0 + (static_cast<double>(k) + offset) * dt;
+    if (!(t < t1))
+    {
+      break;
+    }
+    if (bound)
+    {
+      if (const long skip = bound->SkipSteps(t, dt))
+      {
+        k += skip - 1;
+        continue;
+      }
+    }
+    const double scalar = volume.Grid->Sample(indexOrigin + t * indexDirection, volume.Sampling);
+    projection.Add(scalar, colorOpacity(scalar).a);
+  }
+  return projection.Result(colorOpacity);
+}
+}
+
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
   const MarchSettings& settings, glm::dvec4* shadowTerm, std::vector<RaySample>* samples)
@@ -177,6 +223,10 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   if (volume.Bound)
   {
     bound.emplace(*volume.Bound, indexOrigin, indexDirection);
+  }
+  if (volume.Projection.Mode != BlendMode::Composite)
+  {
+    return ProjectRay(volume, table, indexOrigin, indexDirection, t0, t1, offset, dt, bound);
   }
 
   glm::dvec4 accumulated(0.0);

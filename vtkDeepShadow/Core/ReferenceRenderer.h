@@ -37,6 +37,7 @@
 #include "Core/Image.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
+#include "Core/Projection.h"
 #include "Core/Shadows.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/EmptySpace.h"
@@ -70,6 +71,8 @@ struct VolumeInstance
    * volume is empty: it neither shows nor casts shadows.
    */
   std::shared_ptr<const BoundRegion> Bound;
+  /** Projection blend modes (maximum, minimum, average, additive): drawn unlit, unshadowed. */
+  ProjectionSettings Projection;
 };
 
 struct Scene

@@ -17,6 +17,7 @@
 #include "vtkCellData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <glm/common.hpp>
@@ -414,6 +415,33 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
   image->GetDimensions(dims);
   return std::make_shared<VolumeGrid>(
     glm::ivec3(dims[0], dims[1], dims[2]), std::move(values), IndexToWorld(image, propMatrix));
+}
+
+ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dataRange)
+{
+  ProjectionSettings projection;
+  switch (mapper->GetBlendMode())
+  {
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      projection.Mode = BlendMode::Maximum;
+      break;
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      projection.Mode = BlendMode::Minimum;
+      break;
+    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
+      projection.Mode = BlendMode::Average;
+      break;
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      projection.Mode = BlendMode::Additive;
+      break;
+    default: // composite; isosurface and slice are said unsupported and drawn composite
+      break;
+  }
+  projection.RangeMin = dataRange.x;
+  projection.RangeMax = dataRange.y;
+  projection.AverageMin = mapper->GetAverageIPScalarRange()[0];
+  projection.AverageMax = mapper->GetAverageIPScalarRange()[1];
+  return projection;
 }
 
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,

@@ -7,6 +7,7 @@
 #include "Core/Camera.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
+#include "Core/Projection.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
@@ -23,6 +24,7 @@ class vtkMatrix4x4;
 class vtkPolyData;
 class vtkProperty;
 class vtkRenderer;
+class vtkVolumeMapper;
 class vtkVolumeProperty;
 
 namespace deepshadow
@@ -102,6 +104,13 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);
  * empty solid, not an error. Returns null with `error` naming the bound ("bound B ...") on
  * bad input.
  */
+/**
+ * The mapper's blend mode as a projection over `dataRange` (the data's scalar range): its
+ * mode (Composite for composite, and for isosurface and slice, which are drawn composite) and
+ * AverageIPScalarRange.
+ */
+ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dataRange);
+
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
   const std::string& expression, const glm::dmat4& dataToIndex, std::string& error);
 

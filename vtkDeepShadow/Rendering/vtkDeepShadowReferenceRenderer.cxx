@@ -80,7 +80,10 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
     ? deepshadow::Interpolation::Nearest
     : deepshadow::Interpolation::Linear;
   auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
-  vtkDeepShadowTechnique* technique = ours ? ours->GetShadowTechnique() : nullptr;
+  instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
+  const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
+  instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
+  vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {
     instance.Shadows = technique->GetParameters();

@@ -571,7 +571,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     return false;
   }
   // What VTK's mapper would draw and this one does not: said once each, never silent.
-  this->Unsupported = deepshadow::UnsupportedSettings(this, property);
+  this->Unsupported = deepshadow::UnsupportedSettings(this, property, this->ShadowTechnique != nullptr);
   for (const std::string& setting : this->Unsupported)
   {
     if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==
@@ -593,7 +593,12 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     : vtkTextureObject::Linear;
   impl.Volume.GetTexture()->SetMinificationFilter(filter);
   impl.Volume.GetTexture()->SetMagnificationFilter(filter);
-  this->UpdateTables(window, property, step);
+  frame.Projection = adapter::MakeProjection(this, impl.Volume.GetRange());
+  const bool projection = frame.Projection.Mode != deepshadow::BlendMode::Composite;
+  // Projections but additive look opacity up uncorrected (as VTK's mapper): a step of one
+  // unit distance corrects nothing.
+  const bool uncorrected = projection && !frame.Projection.CorrectsOpacity();
+  this->UpdateTables(window, property, uncorrected ? property->GetScalarOpacityUnitDistance(0) : step);
   // The polyhedral bound: rebuilt when a bound, the expression or the data's placement changed.
   if (!this->UpdateBound(window, input, volume))
   {
@@ -612,15 +617,17 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   frame.Property = property;
   renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X0, &frame.Y0);
   frame.View = adapter::MakeCamera(renderer);
-  frame.Shade = property->GetShade(0) != 0;
-  frame.ShadowTerm = this->OutputMode == OutputShadowTerm;
-  frame.Lit = frame.Shade || this->ShadowTechnique || frame.ShadowTerm;
+  frame.Shade = !projection && property->GetShade(0) != 0;
+  frame.ShadowTerm = !projection && this->OutputMode == OutputShadowTerm;
+  frame.Lit = frame.Shade || (!projection && this->ShadowTechnique) || frame.ShadowTerm;
   frame.Transfer = impl.Transfer.GetTexture();
   deepshadow::ShadowContext& context = frame.Context;
   context.Window = window;
   context.Volume = impl.Volume.GetTexture();
-  context.Occupancy =
-    this->EmptySpaceSkipping && impl.Occupancy.AnyEmptyBlock() ? impl.Occupancy.GetTexture() : nullptr;
+  // A projection counts clear samples too: nothing is skipped for being transparent.
+  context.Occupancy = !projection && this->EmptySpaceSkipping && impl.Occupancy.AnyEmptyBlock()
+    ? impl.Occupancy.GetTexture()
+    : nullptr;
   context.BlockSize = static_cast<float>(deepshadow::VolumeTexture::BlockSize);
   context.Dims = impl.Volume.GetDims();
   context.Range = impl.Volume.GetRange();
@@ -658,7 +665,9 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
     this->ReportError(problem);
     return false;
   }
-  vtkDeepShadowTechnique* technique = this->ShadowTechnique;
+  // Projections are drawn exactly, without shadows (said once by UnsupportedSettings).
+  vtkDeepShadowTechnique* technique =
+    frame.Projection.Mode == deepshadow::BlendMode::Composite ? this->ShadowTechnique : nullptr;
   // A ray of more samples than a ray may take would be cut short (llvmpipe) or take hours.
   problem = CheckRaySamples(context, technique, frame.View);
   if (!problem.empty())

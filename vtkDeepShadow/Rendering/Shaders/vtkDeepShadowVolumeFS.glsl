@@ -50,6 +50,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Lighting::Dec
 //DeepShadow::TranslucentLayers::Dec
 //DeepShadow::VolumeSegments::Dec
+//DeepShadow::Projection::Dec
 
 void main()
 {
@@ -81,6 +82,7 @@ void main()
   //DeepShadow::EmptySpace::Init
   //DeepShadow::Bound::Init
   //DeepShadow::VolumeSegments::Init
+  //DeepShadow::Projection::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -94,6 +96,7 @@ void main()
     //DeepShadow::EmptySpace::Impl
 
     float scalar = sampleScalar(index);
+    //DeepShadow::Projection::Impl
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
     if (transfer.a <= 0.0)
     {
@@ -106,6 +109,7 @@ void main()
   }
   //DeepShadow::TranslucentLayers::Exit
   //DeepShadow::VolumeSegments::Exit
+  //DeepShadow::Projection::Exit
   // Premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA), or replacing the pixel when the
   // translucent layers (and the opaque image behind them) are composited here.
   fragColor = accumulated;

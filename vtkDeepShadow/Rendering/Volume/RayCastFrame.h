@@ -4,6 +4,7 @@
 #define vtkDeepShadowRayCastFrame_h
 
 #include "Core/Camera.h"
+#include "Core/Projection.h"
 #include "Volume/ShadowContext.h"
 
 class vtkDeepShadowTechnique;
@@ -30,6 +31,7 @@ struct RayCastFrame
   bool Shade = false;      // the property's shading: gradient and Phong
   bool ShadowTerm = false; // vtkDeepShadowVolumeMapper::OutputShadowTerm
   bool Lit = false;        // lights are evaluated (shading, shadows or the shadow term)
+  ProjectionSettings Projection; // a projection blend mode (not Composite): unlit, unshadowed
   /** The technique whose structures are ready; null without one, or when it failed. */
   vtkDeepShadowTechnique* Technique = nullptr;
   vtkTextureObject* Transfer = nullptr; // the transfer table

@@ -48,14 +48,19 @@ bool ChangesOpacity(vtkPiecewiseFunction* function)
 }
 
 std::vector<std::string> UnsupportedSettings(
-  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property)
+  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, bool shadowed)
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
-  if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+  if (blend == vtkVolumeMapper::ISOSURFACE_BLEND || blend == vtkVolumeMapper::SLICE_BLEND)
   {
     said.push_back(std::string("blend mode ") + BlendModeName(blend) +
       " is not supported: the volume is drawn with composite blending");
+  }
+  else if (blend != vtkVolumeMapper::COMPOSITE_BLEND && shadowed)
+  {
+    said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
+      ": it is drawn exactly, without shadows");
   }
   if (property && !property->GetDisableGradientOpacity(0) &&
     ChangesOpacity(property->GetStoredGradientOpacity(0)))

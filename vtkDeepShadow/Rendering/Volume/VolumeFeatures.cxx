@@ -12,6 +12,8 @@
 
 #include <glm/matrix.hpp>
 
+#include <algorithm>
+
 namespace deepshadow
 {
 
@@ -42,6 +44,21 @@ void UnbindSampling(const Frame& f)
 {
   f.Context.Volume->Deactivate();
   f.Transfer->Deactivate();
+}
+
+// The projection's mode, the normalization of the shaders' scalar over the data's range, and
+// the average's scalar range in the shaders' scalar (clamped to what a float holds).
+void BindProjection(const Frame& f, UniformSink& sink)
+{
+  const ShadowContext& c = f.Context;
+  const glm::dvec2 range = c.ShaderRange();
+  const double span = range.y > range.x ? range.y - range.x : 1.0;
+  auto toShader = [&c](double scalar) {
+    return static_cast<float>(std::clamp(scalar * c.ShaderScalar.x + c.ShaderScalar.y, -3.0e38, 3.0e38));
+  };
+  sink.Set("u_blendMode", static_cast<int>(f.Projection.Mode));
+  sink.Set("u_normalizeMap", glm::vec2(1.0 / span, -range.x / span));
+  sink.Set("u_averageRange", glm::vec2(toShader(f.Projection.AverageMin), toShader(f.Projection.AverageMax)));
 }
 
 // Surfaces are met by the feelers of lookups only; light-space builds have their own.
@@ -127,6 +144,8 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "Hash", [](const Frame& f) { return f.Jitter; }, nullptr, nullptr, nullptr },
     { "Jitter", [](const Frame& f) { return f.Jitter; }, nullptr,
       [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },
+    { "Projection", [](const Frame& f) { return f.Projection.Mode != BlendMode::Composite; }, nullptr,
+      BindProjection, nullptr },
     { "Shadow", [](const Frame& f) { return f.Technique != nullptr; }, ComposeShadow,
       [](const Frame& f, UniformSink& sink)
       { vtkDeepShadowTechnique::Internals::Bind(f.Technique, sink, f.Context); },

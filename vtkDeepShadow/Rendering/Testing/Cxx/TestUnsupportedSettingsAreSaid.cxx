@@ -4,6 +4,7 @@
 // vtkGPUVolumeRayCastMapper: its settings (masks, sampling, window/level...) compile and are
 // said too.
 #include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
@@ -80,8 +81,12 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
     std::function<void(vtkDeepShadowVolumeMapper*, vtkVolumeProperty*)> Change;
   };
   const std::vector<Case> cases = {
-    { "MIP", "blend mode maximum intensity projection",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToMaximumIntensity(); } },
+    { "MIP with shadows", "shadows do not apply to maximum intensity projection",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        vtkNew<vtkDeepShadowDeepShadowMapTechnique> dsm;
+        m->SetShadowTechnique(dsm);
+        m->SetBlendModeToMaximumIntensity();
+      } },
     { "isosurface", "blend mode isosurface",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToIsoSurface(); } },
     { "gradient opacity", "gradient opacity",
