@@ -368,7 +368,7 @@ void BindShadowInputs(deepshadow::UniformSink& sink, vtkDeepShadowTechnique* tec
     vtkDeepShadowTechnique::Internals::Bind(technique, sink, *context, true);
     const double bias = shadowBias > 0.0
       ? shadowBias
-      : deepshadow::DefaultReceiverBias(context->ViewStep * technique->GetStepFactor());
+      : deepshadow::DefaultReceiverBias(context->ShadowStep * technique->GetStepFactor());
     sink.Set("u_receiverOffset", static_cast<float>(bias));
   }
   if (others)

@@ -64,7 +64,7 @@ std::string CheckRaySamples(
   if (problem.empty() && technique)
   {
     problem = deepshadow::CheckRaySamples(
-      diagonal, technique->GetStepFactor() * context.ViewStep, "the shadow step (sample distance x StepFactor)");
+      diagonal, technique->GetStepFactor() * context.ShadowStep, "the shadow step (sample distance x StepFactor)");
   }
   const char* gl = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (!problem.empty() || !gl || !std::strstr(gl, "llvmpipe"))
@@ -98,6 +98,12 @@ std::string CheckRaySamples(
   longest = seen ? longest : diagonal;
   return deepshadow::CheckRaySamples(longest, context.ViewStep, "on llvmpipe, the sample distance", perSample);
 }
+
+// AutoAdjustSampleDistances: a window that asks for this many frames a second or more is being
+// interacted with (vtkSmartVolumeMapper's InteractiveUpdateRate); its view rays step this much
+// coarser.
+constexpr double InteractiveUpdateRate = 1.0;
+constexpr double InteractiveStepFactor = 2.0;
 
 // Visible props other than volumes that draw opaque geometry into the depth buffer.
 bool HasOpaqueGeometry(vtkRenderer* renderer)
@@ -582,7 +588,13 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     }
   }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
-  const double step = this->SampleStep(input, indexToWorld);
+  // The still step; while the interactor moves (the window asks for 1 frame a second or more,
+  // as vtkSmartVolumeMapper decides) with AutoAdjustSampleDistances on, the view rays take
+  // samples InteractiveStepFactor times farther apart and the shadows stay as built.
+  const double stillStep = this->SampleStep(input, indexToWorld);
+  const bool interacting = this->AutoAdjustSampleDistances &&
+    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= InteractiveUpdateRate;
+  const double step = interacting ? InteractiveStepFactor * stillStep : stillStep;
   impl.EffectiveStep = step;
   if (!this->UpdateSurfaces(window, worldToIndex))
   {
@@ -640,6 +652,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.IndexToWorld = indexToWorld;
   context.WorldToIndex = worldToIndex;
   context.ViewStep = step;
+  context.ShadowStep = stillStep;
   context.DataVersion = this->VolumeUploads;
   context.Bound = impl.Bound.GetTextures();
   context.BoundVersion = this->BoundBuilds;

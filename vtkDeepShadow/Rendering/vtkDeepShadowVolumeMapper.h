@@ -81,6 +81,12 @@ public:
    */
   void SetSampleDistance(float distance) override;
   ///@}
+  /*
+   * AutoAdjustSampleDistances (VTK's; off by default here, on in VTK): while the window asks
+   * for 1 frame a second or more (an interactor moving the camera), the view rays take
+   * samples twice as far apart; the shadow structures are kept, not rebuilt for the coarser
+   * step, so shadows stay on while moving. Still frames step as set.
+   */
   /** The distance used in the last frame (0 before the first). */
   double GetEffectiveSampleDistance();
 

@@ -32,7 +32,7 @@ bool OtherVolumeShadows::Update(vtkOpenGLRenderWindow* window, const GridFrame& 
     key.insert(key.end(), { static_cast<double>(reinterpret_cast<uintptr_t>(caster.Technique)),
       static_cast<double>(caster.Technique->GetMTime()),
       static_cast<double>(context.DataVersion), static_cast<double>(context.BoundVersion),
-      static_cast<double>(context.SurfacesVersion), context.ViewStep });
+      static_cast<double>(context.SurfacesVersion), context.ShadowStep });
     key.insert(key.end(), glm::value_ptr(context.IndexToWorld), glm::value_ptr(context.IndexToWorld) + 16);
     for (const Light& light : context.Lights)
     {

@@ -43,7 +43,7 @@ bool ShadowSlots::Stale(
   const deepshadow::Light& light = context.Lights[static_cast<size_t>(this->LightOfSlot[slot])];
   std::vector<double> key = parameters;
   key.insert(key.end(), { static_cast<double>(context.DataVersion),
-    static_cast<double>(context.BoundVersion), static_cast<double>(context.SurfacesVersion), context.ViewStep,
+    static_cast<double>(context.BoundVersion), static_cast<double>(context.SurfacesVersion), context.ShadowStep,
     static_cast<double>(context.Sampling == Interpolation::Nearest), light.Positional ? 1.0 : 0.0 });
   for (int c = 0; c < 3; ++c)
   {

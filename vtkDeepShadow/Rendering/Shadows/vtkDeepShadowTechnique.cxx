@@ -141,7 +141,7 @@ void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parame
 double Internals::FeelerStep(
   const vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context)
 {
-  return self->StepFactor * context.ViewStep;
+  return self->StepFactor * context.ShadowStep;
 }
 
 bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext& context)

@@ -76,7 +76,13 @@ struct ShadowContext
   Interpolation Sampling = Interpolation::Linear;
   glm::dmat4 IndexToWorld{ 1.0 };
   glm::dmat4 WorldToIndex{ 1.0 };
-  double ViewStep = 1.0;
+  double ViewStep = 1.0;            // world step of the view rays this frame
+  /**
+   * World step the shadow structures are built for: ViewStep, except while the interactor
+   * moves with AutoAdjustSampleDistances on, when the view rays step coarser and the shadows
+   * stay as built (not rebuilt for the coarser step).
+   */
+  double ShadowStep = 1.0;
   const BoundTextures* Bound = nullptr; // null: the volume fills its box
   const SurfaceTextures* Surfaces = nullptr; // null: only the volume casts shadows
   const SurfaceSet* CastingSurfaces = nullptr; // the same surfaces in world space (CPU side)

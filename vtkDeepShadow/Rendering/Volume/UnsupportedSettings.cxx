@@ -83,11 +83,6 @@ std::vector<std::string> UnsupportedSettings(
          << " is not supported: one ray per pixel is cast";
     said.push_back(text.str());
   }
-  if (mapper->GetAutoAdjustSampleDistances())
-  {
-    said.push_back("AutoAdjustSampleDistances is not supported: the sample distance stays "
-                   "fixed (SampleDistance, or half the smallest spacing)");
-  }
   if (mapper->GetFinalColorWindow() != 1.0f || mapper->GetFinalColorLevel() != 0.5f)
   {
     said.push_back("final colour window/level (SetFinalColorWindow/Level) is not supported: "

@@ -14,7 +14,7 @@ namespace deepshadow
 {
 
 /** Isosurface and slice blending, gradient opacity, 2D transfer functions, masks, image
- * sample distance, auto-adjusted sampling, final colour window/level, render to image, depth
+ * sample distance, final colour window/level, render to image, depth
  * pass, more input volumes: what `mapper` and `property` ask for that is not drawn; and,
  * when a shadow technique is set (`shadowed`), that projection blend modes have no shadows. */
 std::vector<std::string> UnsupportedSettings(

@@ -104,8 +104,6 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
       } },
     { "image sample distance", "image sample distance 2",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetImageSampleDistance(2.0f); } },
-    { "auto-adjusted sampling", "AutoAdjustSampleDistances",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->AutoAdjustSampleDistancesOn(); } },
     { "final colour level", "final colour window/level",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetFinalColorLevel(0.7f); } },
     { "render to image", "RenderToImage",
