@@ -56,8 +56,13 @@ expect 2 "unreadable file" -- "$tool" render --volume garbage.vti --out x.png
 echo "1 2 3" > volume.xyz
 expect 2 "unsupported extension" -- "$tool" render --volume volume.xyz --out x.png
 
-write_mhd int32 MET_INT "4 4 4" "head -c 256 /dev/zero"
-expect 2 "unsupported scalar type" -- "$tool" render --volume int32.mhd --out x.png
+# 32-bit integers (kept in single precision): 32 samples 0, then 32 samples 1000000.
+write_mhd int32 MET_INT "4 4 4" "head -c 128 /dev/zero; for i in \$(seq 32); do printf '\x40\x42\x0f\x00'; done"
+expect 0 "int32 volume" -- "$tool" render --volume int32.mhd --size 64x64 --frames 1 --out int32.png
+not_flat int32.png "int32 volume"
+# Doubles beyond float's range: one 1e300 (0x7e37e43c8800759c, little endian) among zeros.
+write_mhd huge MET_DOUBLE "4 4 4" "printf '\x9c\x75\x00\x88\x3c\xe4\x37\x7e'; head -c 504 /dev/zero"
+expect 2 "doubles beyond float's range" "beyond single precision" -- "$tool" render --volume huge.mhd --out x.png
 write_mhd flat MET_UCHAR "4 4 1" "head -c 16 /dev/zero"
 expect 2 "zero extent" -- "$tool" render --volume flat.mhd --out x.png
 # A float volume whose first sample is NaN (0x7fc00000, little endian), then 31 samples 0.0

@@ -25,6 +25,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -36,10 +37,31 @@ namespace
 {
 constexpr int DenseSamples = 4097;
 
+// Every numeric type VTK's mapper accepts. Unsigned char and (unsigned) short are uploaded
+// exactly; every other type is kept in single precision (24-bit mantissa: integers beyond
+// +-2^24 and doubles round to the nearest float), as a float texture normalized over the range.
 bool IsSupportedType(int type)
 {
-  return type == VTK_UNSIGNED_CHAR || type == VTK_SHORT || type == VTK_UNSIGNED_SHORT ||
-    type == VTK_FLOAT;
+  switch (type)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      return true;
+    default:
+      return false;
+  }
 }
 
 PiecewiseLinear FromVTK(vtkPiecewiseFunction* function)
@@ -180,7 +202,22 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
   if (!IsSupportedType(array->GetDataType()))
   {
     return std::string("scalar type ") + array->GetDataTypeAsString() +
-      " is not supported (unsigned char, short, unsigned short or float)";
+      " is not supported (the integer types, float and double are)";
+  }
+  if (array->GetDataType() == VTK_DOUBLE)
+  {
+    // Kept in single precision: a finite double beyond float's range would become infinite.
+    const auto* values = static_cast<const double*>(array->GetVoidPointer(0));
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      if (std::isfinite(values[i]) && std::abs(values[i]) > static_cast<double>(FLT_MAX))
+      {
+        std::ostringstream why;
+        why << "the volume's double scalars reach " << values[i]
+            << ", beyond single precision's range (+-3.4e38) in which they are kept";
+        return why.str();
+      }
+    }
   }
   scalars = array;
   return std::string();

@@ -11,6 +11,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -50,12 +51,24 @@ bool VolumeTexture::Update(
     return false;
   }
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  if (replaceNonFinite && scalars->GetDataType() == VTK_FLOAT)
+  if (replaceNonFinite && (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE))
   {
-    const auto bad = CountNonFinite(static_cast<const float*>(scalars->GetVoidPointer(0)), scalars->GetNumberOfTuples());
-    if (bad.Total() > 0)
+    size_t bad = 0;
+    if (scalars->GetDataType() == VTK_FLOAT)
     {
-      warning = std::to_string(bad.Total()) +
+      bad = CountNonFinite(static_cast<const float*>(scalars->GetVoidPointer(0)), scalars->GetNumberOfTuples()).Total();
+    }
+    else
+    {
+      const auto* values = static_cast<const double*>(scalars->GetVoidPointer(0));
+      for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+      {
+        bad += std::isfinite(values[i]) ? 0 : 1;
+      }
+    }
+    if (bad > 0)
+    {
+      warning = std::to_string(bad) +
         " non-finite samples replaced (NaN by the smallest finite value, +-Inf by the largest/smallest)";
     }
   }
@@ -97,7 +110,8 @@ bool VolumeTexture::Update(
     }
     default:
     {
-      // Float: the checked (and, if asked, repaired) copy, normalized to [0, 1] in double,
+      // Float and the other types: the grid's checked (and, if asked, repaired) single
+      // precision copy, normalized to [0, 1] in double,
       // so that a denormal range or one spanning +-FLT_MAX is mapped without overflow or
       // flushing (the shaders' scalar is the normalized one: ShadowContext::ShaderScalar).
       const double low = this->Range.x;
@@ -109,6 +123,7 @@ bool VolumeTexture::Update(
         normalized[i] = static_cast<float>((static_cast<double>(values[i]) - low) / width);
       }
       texels = normalized.data();
+      vtkType = VTK_FLOAT; // every other type arrives here as the grid's floats
       this->Texture->SetInternalFormat(GL_R32F);
       this->ScalarMap = { 1.0, 0.0 };
       this->ShaderScalar = { 1.0 / width, -low / width };

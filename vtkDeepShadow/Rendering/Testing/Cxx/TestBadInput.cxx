@@ -237,9 +237,12 @@ int TestBadInput(int, char*[])
   }
   ok = Expect("three components", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR, 3)),
          "3 components", false) && ok;
-  ok = Expect("int scalars", RenderBad(Image(8, 8, 8, VTK_INT)), "scalar type int", false) && ok;
-  ok = Expect("double scalars", RenderBad(Image(8, 8, 8, VTK_DOUBLE)), "scalar type double",
-         false) && ok;
+  ok = Expect("bit scalars", RenderBad(Image(8, 8, 8, VTK_BIT)), "scalar type bit", false) && ok;
+  {
+    auto huge = Image(8, 8, 8, VTK_DOUBLE);
+    static_cast<double*>(huge->GetScalarPointer())[5] = 1.0e300;
+    ok = Expect("double beyond float's range", RenderBad(huge), "beyond single precision", false) && ok;
+  }
   ok = Expect("beyond 3D texture limit", RenderBad(Image(20000, 2, 2, VTK_UNSIGNED_CHAR)),
          "3D texture limit", false) && ok;
 

@@ -1,6 +1,7 @@
-// The four supported scalar types render the same volume alike when the transfer function is
-// scaled with the data: unsigned char, short (HU-like, negative values), unsigned short and
-// float. Each is also compared with its CPU twin.
+// The scalar types render the same volume alike when the transfer function is scaled with the
+// data: unsigned char, short (HU-like, negative values), unsigned short (exact 8/16-bit
+// textures); signed char, int, unsigned int, long long, double and float (kept in single
+// precision). Each is also compared with its CPU twin.
 //
 // Stated tolerances: type vs type RMSE <= 1/255 and <= 0.5% of pixels off by more than
 // 4/255 (16-bit unorm and float textures filter alike to about 1e-5 of the range); type vs
@@ -25,8 +26,11 @@ int TestScalarTypes(int argc, char* argv[])
     int VTKType;
     double Scale, Offset;
   };
+  // Float last: its picture is the baseline.
   const Type types[] = { { VTK_UNSIGNED_CHAR, 255.0, 0.0 }, { VTK_SHORT, 4000.0, -1000.0 },
-    { VTK_UNSIGNED_SHORT, 65535.0, 0.0 }, { VTK_FLOAT, 1.0e6, -5.0e5 } };
+    { VTK_UNSIGNED_SHORT, 65535.0, 0.0 }, { VTK_SIGNED_CHAR, 250.0, -125.0 },
+    { VTK_INT, 2.0e7, -1.0e7 }, { VTK_UNSIGNED_INT, 4.0e9, 0.0 }, { VTK_LONG_LONG, 1.0e15, -5.0e14 },
+    { VTK_DOUBLE, 1.0e30, -2.0e29 }, { VTK_FLOAT, 1.0e6, -5.0e5 } };
   vtkNew<vtkDeepShadowRenderWindow> window;
   window->SetSize(160, 160);
   bool ok = true;
