@@ -39,8 +39,8 @@ glm::dmat4 ToGlm(const vtkMatrix4x4* matrix);
 
 /**
  * Checks that `image` can be volume rendered: point scalars, one component, a supported type
- * (unsigned char, short, unsigned short, float), at least 2 points per axis, positive finite
- * spacing. Returns "" when it can, else one line saying why not. `scalars` is set on success.
+ * (any numeric type but bit; doubles within float's range), at least 2 points per axis,
+ * positive finite spacing. Returns "" when it can, else one line saying why not. `scalars` is set on success.
  */
 std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars);
 

@@ -1,16 +1,18 @@
 /**
  * @class   vtkDeepShadowVolumeMapper
- * @brief   GPU ray-casting volume mapper of vtkDeepShadow (composite blending).
+ * @brief   GPU ray-casting volume mapper of vtkDeepShadow, with shadows.
  *
  * A vtkGPUVolumeRayCastMapper: code written for VTK's mapper compiles unchanged, and with
  * vtkDeepShadowVolumeMapperFactory::Override() `vtkGPUVolumeRayCastMapper::New()` (and so
- * vtkSmartVolumeMapper) returns this mapper. What it inherits and does not draw yet (masks,
- * image sample distance, auto-adjusted sampling, final colour window/level, ...) is said
- * once per setting (GetUnsupportedSettings()), never ignored in silence.
+ * vtkSmartVolumeMapper) returns this mapper. Composite blending (with shadows), MIP, MinIP,
+ * average intensity and additive blending (without), clipping planes and cropping (which the
+ * shadows see), VTK's sampling settings. What it inherits and does not draw yet (isosurfaces,
+ * masks, image sample distance, final colour window/level, ...) is said once per setting
+ * (GetUnsupportedSettings()), never ignored in silence.
  *
- * Renders a single-component vtkImageData (unsigned char, short, unsigned short or float
- * point scalars) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
- * scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
+ * Renders a single-component vtkImageData (point scalars of any numeric type; those wider
+ * than 16-bit integers kept in single precision) with a vtkVolumeProperty: colour and
+ * scalar-opacity transfer functions, scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
  * gradient with the renderer's lights. Honours the image's spacing, origin and direction and
  * the vtkVolume's transform. Opaque geometry already drawn ends the rays (depth buffer).
  *

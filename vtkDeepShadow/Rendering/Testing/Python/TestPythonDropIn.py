@@ -1,10 +1,12 @@
 """A VTK script that never names vtkDeepShadow draws deep shadows once one line overrides
-vtkGPUVolumeRayCastMapper: vtkSmartVolumeMapper makes our mapper, the shadowed rods are
-darker than the unshadowed ones, and Restore() gives VTK's mapper back."""
+vtkGPUVolumeRayCastMapper: vtkSmartVolumeMapper and vtkMultiBlockVolumeMapper make our
+mapper, the shadowed rods are darker than the unshadowed ones, and Restore() gives VTK's
+mapper back."""
 import sys
 
 from vtkmodules.vtkRenderingVolume import vtkGPUVolumeRayCastMapper
-from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkSmartVolumeMapper
+from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkMultiBlockVolumeMapper, vtkSmartVolumeMapper
 from vtkdeepshadow import vtkDeepShadowVolumeMapperFactory
 from DeepShadowPythonTesting import RodsScene, foreground
 
@@ -20,6 +22,18 @@ def smart_rods():
     return float(picture[foreground(picture)].mean()), mode
 
 
+def multiblock_rods():
+    """The rods as the one block of a vtkMultiBlockVolumeMapper: the mean of its foreground."""
+    scene = RodsScene(size=128)
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, scene.scene.GetVolume())
+    mapper = vtkMultiBlockVolumeMapper()
+    mapper.SetInputDataObject(blocks)
+    scene.volume.SetMapper(mapper)
+    picture = scene.render()
+    return float(picture[foreground(picture)].mean())
+
+
 failures = []
 
 
@@ -33,6 +47,7 @@ check("before: VTK's mapper", vtkGPUVolumeRayCastMapper().GetClassName() != "vtk
 check("Override('none')", vtkDeepShadowVolumeMapperFactory.Override("none"))
 plain, mode = smart_rods()
 check("vtkSmartVolumeMapper drew with its GPU mapper", mode == vtkSmartVolumeMapper.GPURenderMode)
+plain_blocks = multiblock_rods()
 check("Override('dsm')", vtkDeepShadowVolumeMapperFactory.Override("dsm"))
 made = vtkGPUVolumeRayCastMapper()
 check("New() makes ours with a deep shadow map", made.GetClassName() == "vtkDeepShadowVolumeMapper"
@@ -40,6 +55,10 @@ check("New() makes ours with a deep shadow map", made.GetClassName() == "vtkDeep
 shadowed, mode = smart_rods()
 print(f"foreground mean: {shadowed:.1f} shadowed, {plain:.1f} unshadowed")
 check("the shadowed rods are darker", shadowed < 0.95 * plain)
+shadowed_blocks = multiblock_rods()
+print(f"vtkMultiBlockVolumeMapper: {shadowed_blocks:.1f} shadowed, {plain_blocks:.1f} unshadowed")
+check("vtkMultiBlockVolumeMapper draws ours too", abs(plain_blocks - plain) < 1.0
+      and abs(shadowed_blocks - shadowed) < 1.0)
 vtkDeepShadowVolumeMapperFactory.Restore()
 check("Restore(): VTK's mapper again", vtkGPUVolumeRayCastMapper().GetClassName() != "vtkDeepShadowVolumeMapper")
 sys.exit(1 if failures else 0)
