@@ -408,10 +408,19 @@ struct StandardSceneView
 };
 
 /**
- * The look TestVolumeMapperMatchesVTK compares with VTK's mapper (on MakeTestVolume): an
- * orange-to-white colour ramp, opacity from 20 up to 0.3, linear interpolation; shaded when
- * asked.
+ * The view and look TestVolumeMapperMatchesVTK compares with VTK's mapper (on MakeTestVolume):
+ * from (60, 90, 160) towards the origin; an orange-to-white colour ramp, opacity from 20 up
+ * to 0.3, linear interpolation; shaded when asked.
  */
+inline void ApplyComparisonView(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(60.0, 90.0, 160.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  renderer->ResetCamera();
+}
+
 inline vtkSmartPointer<vtkVolumeProperty> MakeComparisonProperty(bool shade)
 {
   vtkNew<vtkColorTransferFunction> color;

@@ -73,11 +73,7 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, int blend, bool vtks, bo
   property->SetScalarOpacity(opacity);
   volume->SetProperty(property);
   renderer->AddVolume(volume);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(60.0, 90.0, 160.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  renderer->ResetCamera();
+  deepshadow::testing::ApplyComparisonView(renderer);
   window->Render();
   Drawn drawn;
   drawn.Picture = Grab(window);

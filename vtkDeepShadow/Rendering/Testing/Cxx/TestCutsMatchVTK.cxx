@@ -63,11 +63,7 @@ deepshadow::Image Draw(vtkRenderWindow* window, const Cut& cut, bool vtks, bool 
   {
     cut(mapper, volume);
   }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(60.0, 90.0, 160.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  renderer->ResetCamera();
+  deepshadow::testing::ApplyComparisonView(renderer);
   window->Render();
   if (!ours->GetLastError().empty())
   {

@@ -105,11 +105,7 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
       {
         renderer->AddActor(actor);
       }
-      vtkCamera* camera = renderer->GetActiveCamera();
-      camera->SetPosition(60.0, 90.0, 160.0);
-      camera->SetFocalPoint(0.0, 0.0, 0.0);
-      camera->SetViewUp(0.0, 1.0, 0.0);
-      renderer->ResetCamera();
+      deepshadow::testing::ApplyComparisonView(renderer);
       window->Render();
       images[which] = Grab(window);
       if (which == 0 && !ours->GetLastError().empty())
