@@ -554,7 +554,19 @@ std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData
   return std::make_shared<const BoundRegion>(std::move(leaves), parsed);
 }
 
-TransferFunction MakeTransferFunction(vtkVolumeProperty* property)
+double DatasetLengthScale(const vtkMatrix4x4* propMatrix, bool* anisotropic)
+{
+  const glm::dmat3 linear = propMatrix ? glm::dmat3(ToGlm(propMatrix)) : glm::dmat3(1.0);
+  const double scale = std::cbrt(std::abs(glm::determinant(linear)));
+  if (anisotropic)
+  {
+    const double x = glm::length(linear[0]), y = glm::length(linear[1]), z = glm::length(linear[2]);
+    *anisotropic = std::max({ x, y, z }) - std::min({ x, y, z }) > 1e-6 * std::max({ x, y, z });
+  }
+  return std::isfinite(scale) && scale > 0.0 ? scale : 1.0;
+}
+
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale)
 {
   TransferFunction tf;
   tf.Opacity = FromVTK(property->GetScalarOpacity(0));
@@ -566,7 +578,7 @@ TransferFunction MakeTransferFunction(vtkVolumeProperty* property)
   {
     FromVTK(property->GetRGBTransferFunction(0), tf);
   }
-  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0);
+  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0) * unitScale;
   return tf;
 }
 

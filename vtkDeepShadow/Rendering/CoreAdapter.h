@@ -90,9 +90,17 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
 /**
  * Transfer function of component 0. Linear RGB nodes with default midpoint/sharpness are
  * copied exactly; other shapes (midpoints, sharpness, HSV/Lab interpolation) are sampled at
- * 4097 points, which makes them piecewise linear.
+ * 4097 points, which makes them piecewise linear. The opacity unit distance is the
+ * property's times `unitScale` (DatasetLengthScale: opacity per dataset unit, as VTK's).
  */
-TransferFunction MakeTransferFunction(vtkVolumeProperty* property);
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale = 1.0);
+
+/**
+ * World length of a dataset unit under the prop's matrix, so that opacity is per dataset unit
+ * as VTK's mapper integrates it: the scale of a uniformly scaled prop, the cube root of the
+ * volume change otherwise (`anisotropic` says so: VTK's then depends on the direction).
+ */
+double DatasetLengthScale(const vtkMatrix4x4* propMatrix, bool* anisotropic = nullptr);
 Material MakeMaterial(vtkVolumeProperty* property);
 /** A mesh's material from its actor's vtkProperty: colour, opacity (clamped to [0, 1]), Phong. */
 SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);

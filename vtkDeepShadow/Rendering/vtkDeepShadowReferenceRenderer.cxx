@@ -73,7 +73,9 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   }
   instance.Grid = grid;
   vtkVolumeProperty* property = volume->GetProperty();
-  instance.Transfer = adapter::MakeTransferFunction(property);
+  // Opacity per dataset unit, as the mapper (and VTK's) integrates it.
+  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
+  instance.Transfer = adapter::MakeTransferFunction(property, unitScale);
   instance.Surface = adapter::MakeMaterial(property);
   instance.Shade = property->GetShade(0) != 0;
   instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
@@ -89,7 +91,7 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
     instance.Shadows = technique->GetParameters();
     if (technique->GetShadowProperty())
     {
-      instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty());
+      instance.ShadowTransfer = adapter::MakeTransferFunction(technique->GetShadowProperty(), unitScale);
     }
   }
   std::vector<vtkPolyData*> bounds;

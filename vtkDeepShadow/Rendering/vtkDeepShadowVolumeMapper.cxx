@@ -359,7 +359,7 @@ bool vtkDeepShadowVolumeMapper::UpdateVolume(vtkOpenGLRenderWindow* window, vtkI
 }
 
 void vtkDeepShadowVolumeMapper::UpdateTables(
-  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step)
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step, double unitScale)
 {
   Internals& impl = *this->Impl;
   // What the table and the block map depend on: the functions themselves, not the property.
@@ -370,11 +370,11 @@ void vtkDeepShadowVolumeMapper::UpdateTables(
 
   // Transfer table: colour and step-corrected opacity (deepshadow::TransferTable).
   std::vector<double> transferKey{ static_cast<double>(colorFunction->GetMTime()),
-    static_cast<double>(opacityTime), property->GetScalarOpacityUnitDistance(0),
+    static_cast<double>(opacityTime), property->GetScalarOpacityUnitDistance(0) * unitScale,
     static_cast<double>(this->VolumeUploads), step, static_cast<double>(this->TransferTableSize) };
   if (impl.Transfer.NeedsUpdate(transferKey))
   {
-    impl.Transfer.Update(window, adapter::MakeTransferFunction(property), impl.Volume.GetRange(),
+    impl.Transfer.Update(window, adapter::MakeTransferFunction(property, unitScale), impl.Volume.GetRange(),
       this->TransferTableSize, step, std::move(transferKey));
     ++this->TransferTableBuilds;
     this->LastPasses.emplace_back("transfer-table");
@@ -529,6 +529,14 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   }
   // What VTK's mapper would draw and this one does not: said once each, never silent.
   this->Unsupported = deepshadow::UnsupportedSettings(this, property, this->ShadowTechnique != nullptr);
+  // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
+  bool anisotropic = false;
+  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
+  if (anisotropic)
+  {
+    this->Unsupported.emplace_back("a vtkVolume scaled differently along its axes: opacity per "
+                                   "dataset unit uses the mean scale (VTK's varies with the direction)");
+  }
   for (const std::string& setting : this->Unsupported)
   {
     if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==
@@ -561,7 +569,8 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   // Projections but additive look opacity up uncorrected (as VTK's mapper): a step of one
   // unit distance corrects nothing.
   const bool uncorrected = projection && !frame.Projection.CorrectsOpacity();
-  this->UpdateTables(window, property, uncorrected ? property->GetScalarOpacityUnitDistance(0) : step);
+  this->UpdateTables(window, property,
+    uncorrected ? property->GetScalarOpacityUnitDistance(0) * unitScale : step, unitScale);
   // The polyhedral bound: rebuilt when a bound, the expression or the data's placement changed.
   if (!this->UpdateBound(window, input, volume))
   {
@@ -604,6 +613,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.WorldToIndex = worldToIndex;
   context.ViewStep = step;
   context.ShadowStep = stillStep;
+  context.OpacityUnitScale = unitScale;
   context.DataVersion = this->VolumeUploads;
   context.Bound = impl.Bound.GetTextures();
   context.BoundVersion = this->BoundBuilds;
@@ -641,7 +651,7 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   }
   if (technique)
   {
-    context.Transfer = adapter::MakeTransferFunction(frame.Property);
+    context.Transfer = adapter::MakeTransferFunction(frame.Property, context.OpacityUnitScale);
     const bool prepared = vtkDeepShadowTechnique::Internals::Prepare(technique, context);
     const std::vector<std::string>& passes = technique->GetLastPasses();
     this->LastPasses.insert(this->LastPasses.end(), passes.begin(), passes.end());

@@ -352,7 +352,8 @@ private:
   /** Re-uploads the volume if the data changed (and then drops what was made from it). */
   bool UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input);
   /** The transfer table and the empty-space block map, if what they depend on changed. */
-  void UpdateTables(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step);
+  void UpdateTables(
+    vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step, double unitScale);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume);
 #ifndef __VTK_WRAP__

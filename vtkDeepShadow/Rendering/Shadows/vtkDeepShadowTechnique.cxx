@@ -165,7 +165,7 @@ bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext&
   const std::vector<double> drawnOpacityKey = context.TransferKey(false);
   if (self->ShadowProperty)
   {
-    context.Transfer = deepshadow::adapter::MakeTransferFunction(self->ShadowProperty);
+    context.Transfer = deepshadow::adapter::MakeTransferFunction(self->ShadowProperty, context.OpacityUnitScale);
   }
   impl.SkipEmpty = self->ShadowProperty == nullptr;
 

@@ -77,6 +77,7 @@ struct ShadowContext
   glm::dmat4 IndexToWorld{ 1.0 };
   glm::dmat4 WorldToIndex{ 1.0 };
   double ViewStep = 1.0;            // world step of the view rays this frame
+  double OpacityUnitScale = 1.0;    // world length of a dataset unit (adapter::DatasetLengthScale)
   /**
    * World step the shadow structures are built for: ViewStep, except while the interactor
    * moves with AutoAdjustSampleDistances on, when the view rays step coarser and the shadows

@@ -120,6 +120,43 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
     ok = ok && deepshadow::testing::CoveredFraction(images[0], { 0.1, 0.1, 0.2 }) > 0.1;
   }
 
+  // A prop scaled 3 times: opacity per dataset unit, as VTK's mapper integrates it. The
+  // control is ours integrating per world unit (the unit distance divided by the scale).
+  {
+    vtkNew<vtkDeepShadowRenderWindow> scaledWindow;
+    scaledWindow->SetSize(160, 160);
+    vtkSmartPointer<vtkVolumeProperty> unshaded = deepshadow::testing::MakeComparisonProperty(false);
+    vtkNew<vtkVolumeProperty> perWorldUnit;
+    perWorldUnit->DeepCopy(unshaded);
+    perWorldUnit->SetScalarOpacityUnitDistance(unshaded->GetScalarOpacityUnitDistance() / 3.0);
+    deepshadow::Image scaled[3];
+    for (int which = 0; which < 3; ++which)
+    {
+      vtkNew<vtkRenderer> renderer;
+      renderer->SetBackground(0.1, 0.1, 0.2);
+      scaledWindow->GetRenderers()->RemoveAllItems();
+      scaledWindow->AddRenderer(renderer);
+      vtkNew<vtkDeepShadowVolumeMapper> ours;
+      vtkNew<vtkGPUVolumeRayCastMapper> theirs;
+      theirs->SetAutoAdjustSampleDistances(0);
+      ours->SetSampleDistance(1.5f);
+      theirs->SetSampleDistance(1.5f);
+      vtkVolumeMapper* mapper = which == 1 ? static_cast<vtkVolumeMapper*>(theirs) : static_cast<vtkVolumeMapper*>(ours);
+      mapper->SetInputData(volumeData);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(which == 2 ? perWorldUnit.Get() : unshaded.Get());
+      volume->SetScale(3.0);
+      renderer->AddVolume(volume);
+      deepshadow::testing::ApplyComparisonView(renderer);
+      scaledWindow->Render();
+      scaled[which] = Grab(scaledWindow);
+    }
+    ok = WithinTolerance("a prop scaled 3 times", scaled[0], scaled[1], 0.005, 8.0 / 255.0, 0.01) && ok;
+    ok = !WithinTolerance("a prop scaled 3 times, ours per world unit (must fail)", scaled[2],
+           scaled[1], 0.005, 8.0 / 255.0, 0.01) && ok;
+  }
+
   // The last picture (ours: shaded, with the sphere) against the baseline.
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   vtkVolume* volume = vtkVolume::SafeDownCast(renderer->GetVolumes()->GetItemAsObject(0));
