@@ -204,21 +204,6 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
     return std::string("scalar type ") + array->GetDataTypeAsString() +
       " is not supported (the integer types, float and double are)";
   }
-  if (array->GetDataType() == VTK_DOUBLE)
-  {
-    // Kept in single precision: a finite double beyond float's range would become infinite.
-    const auto* values = static_cast<const double*>(array->GetVoidPointer(0));
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    {
-      if (std::isfinite(values[i]) && std::abs(values[i]) > static_cast<double>(FLT_MAX))
-      {
-        std::ostringstream why;
-        why << "the volume's double scalars reach " << values[i]
-            << ", beyond single precision's range (+-3.4e38) in which they are kept";
-        return why.str();
-      }
-    }
-  }
   scalars = array;
   return std::string();
 }
@@ -420,7 +405,7 @@ glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix)
 }
 
 std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4x4* propMatrix,
-  bool replaceNonFinite, std::string& error)
+  bool replaceNonFinite, std::string& error, size_t* replaced)
 {
   vtkDataArray* scalars = nullptr;
   error = CheckVolumeInput(image, scalars);
@@ -428,13 +413,28 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
   {
     return nullptr;
   }
+  // The grid keeps single precision: a finite scalar beyond float's range (a double) would
+  // turn infinite, so it is refused here, where each value is converted (not at every check).
   const vtkIdType count = scalars->GetNumberOfTuples();
   std::vector<float> values(static_cast<size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
   {
-    values[static_cast<size_t>(i)] = static_cast<float>(scalars->GetComponent(i, 0));
+    const double value = scalars->GetComponent(i, 0);
+    if (std::isfinite(value) && std::abs(value) > static_cast<double>(FLT_MAX))
+    {
+      std::ostringstream why;
+      why << "the volume's " << scalars->GetDataTypeAsString() << " scalars reach " << value
+          << ", beyond single precision's range (+-3.4e38) in which they are kept";
+      error = why.str();
+      return nullptr;
+    }
+    values[static_cast<size_t>(i)] = static_cast<float>(value);
   }
   const NonFiniteCount bad = CountNonFinite(values.data(), values.size());
+  if (replaced)
+  {
+    *replaced = replaceNonFinite ? bad.Total() : 0;
+  }
   if (bad.Total() > 0)
   {
     if (!replaceNonFinite)

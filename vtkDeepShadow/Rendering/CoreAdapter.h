@@ -82,10 +82,11 @@ glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix);
 
 /**
  * Float copy of a checked image's scalars as a VolumeGrid. Non-finite samples are an error
- * (returns null, sets `error`) unless `replaceNonFinite`, which applies ReplaceNonFinite.
+ * (returns null, sets `error`) unless `replaceNonFinite`, which applies ReplaceNonFinite and
+ * counts them in `replaced`; so is a finite value beyond float's range (a double).
  */
 std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4x4* propMatrix,
-  bool replaceNonFinite, std::string& error);
+  bool replaceNonFinite, std::string& error, size_t* replaced = nullptr);
 
 /**
  * Transfer function of component 0. Linear RGB nodes with default midpoint/sharpness are

@@ -32,7 +32,8 @@ bool VolumeTexture::Update(
   this->SourceTime = input ? input->GetMTime() : 0;
   this->ReplaceNonFinite = replaceNonFinite;
 
-  auto grid = adapter::MakeVolumeGrid(input, nullptr, replaceNonFinite, this->Error);
+  size_t replaced = 0;
+  auto grid = adapter::MakeVolumeGrid(input, nullptr, replaceNonFinite, this->Error, &replaced);
   if (grid)
   {
     GLint max3D = 0;
@@ -51,26 +52,10 @@ bool VolumeTexture::Update(
     return false;
   }
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  if (replaceNonFinite && (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE))
+  if (replaced > 0)
   {
-    size_t bad = 0;
-    if (scalars->GetDataType() == VTK_FLOAT)
-    {
-      bad = CountNonFinite(static_cast<const float*>(scalars->GetVoidPointer(0)), scalars->GetNumberOfTuples()).Total();
-    }
-    else
-    {
-      const auto* values = static_cast<const double*>(scalars->GetVoidPointer(0));
-      for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
-      {
-        bad += std::isfinite(values[i]) ? 0 : 1;
-      }
-    }
-    if (bad > 0)
-    {
-      warning = std::to_string(bad) +
-        " non-finite samples replaced (NaN by the smallest finite value, +-Inf by the largest/smallest)";
-    }
+    warning = std::to_string(replaced) +
+      " non-finite samples replaced (NaN by the smallest finite value, +-Inf by the largest/smallest)";
   }
   this->Error.clear();
   this->Dims = grid->GetDims();
