@@ -528,15 +528,10 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     return false;
   }
   // What VTK's mapper would draw and this one does not: said once each, never silent.
-  this->Unsupported = deepshadow::UnsupportedSettings(this, property, this->ShadowTechnique != nullptr);
+  this->Unsupported =
+    deepshadow::UnsupportedSettings(this, property, volume->GetMatrix(), this->ShadowTechnique != nullptr);
   // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
-  bool anisotropic = false;
-  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
-  if (anisotropic)
-  {
-    this->Unsupported.emplace_back("a vtkVolume scaled differently along its axes: opacity per "
-                                   "dataset unit uses the mean scale (VTK's varies with the direction)");
-  }
+  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
   for (const std::string& setting : this->Unsupported)
   {
     if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==

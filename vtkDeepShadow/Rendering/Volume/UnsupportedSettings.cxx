@@ -1,5 +1,7 @@
 #include "UnsupportedSettings.h"
 
+#include "CoreAdapter.h"
+
 #include "vtkPiecewiseFunction.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkVolumeProperty.h"
@@ -47,8 +49,8 @@ bool ChangesOpacity(vtkPiecewiseFunction* function)
 }
 }
 
-std::vector<std::string> UnsupportedSettings(
-  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, bool shadowed)
+std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
+  vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
@@ -104,6 +106,13 @@ std::vector<std::string> UnsupportedSettings(
                      "the volume on port 0 is drawn");
       break;
     }
+  }
+  bool anisotropic = false;
+  adapter::DatasetLengthScale(propMatrix, &anisotropic);
+  if (anisotropic)
+  {
+    said.push_back("a vtkVolume scaled differently along its axes: opacity per dataset unit "
+                   "uses the mean scale (VTK's varies with the direction)");
   }
   return said;
 }

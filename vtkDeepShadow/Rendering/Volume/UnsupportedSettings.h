@@ -8,6 +8,7 @@
 #include <vector>
 
 class vtkGPUVolumeRayCastMapper;
+class vtkMatrix4x4;
 class vtkVolumeProperty;
 
 namespace deepshadow
@@ -15,10 +16,12 @@ namespace deepshadow
 
 /** Isosurface and slice blending, gradient opacity, 2D transfer functions, masks, image
  * sample distance, final colour window/level, render to image, depth
- * pass, more input volumes: what `mapper` and `property` ask for that is not drawn; and,
- * when a shadow technique is set (`shadowed`), that projection blend modes have no shadows. */
-std::vector<std::string> UnsupportedSettings(
-  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, bool shadowed);
+ * pass, more input volumes: what `mapper` and `property` ask for that is not drawn; a prop
+ * (`propMatrix`) scaled differently along its axes, whose opacity per dataset unit is
+ * approximated; and, when a shadow technique is set (`shadowed`), that projection blend
+ * modes have no shadows. */
+std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
+  vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed);
 
 }
 #endif
