@@ -14,7 +14,6 @@ uniform vec2 u_averageRange;      // the scalars average intensity counts, in th
   float projectionCount = 0.0;
 //@Impl
     {
-      float opacity = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5)).a;
       bool first = projectionCount == 0.0;
       if (u_blendMode == 1)
       {
@@ -28,6 +27,8 @@ uniform vec2 u_averageRange;      // the scalars average intensity counts, in th
       }
       else if (u_blendMode == 4 || (scalar >= u_averageRange.x && scalar <= u_averageRange.y))
       {
+        // The table only here: the extremes look it up once, at the end.
+        float opacity = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5)).a;
         projectionSum += opacity * (scalar * u_normalizeMap.x + u_normalizeMap.y);
         projectionCount += 1.0;
       }
