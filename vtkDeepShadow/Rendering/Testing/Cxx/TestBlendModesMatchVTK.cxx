@@ -1,14 +1,16 @@
 // The projection blend modes - maximum, minimum and average intensity, additive - as VTK's
 // mapper draws them, and as the CPU twin computes them.
 //
-// Each mode on the comparison volume (unsigned char, values 0..255) and on a float copy of
-// it whose values span 40..160 (scalars are normalized over the data's range, as VTK's) is
-// drawn by our mapper and by VTK's in one run and compared within a tolerance calibrated on
-// VTK against itself (its picture at 0.8 times the sample distance): 1.5 times that
-// difference, at least RMSE 0.005 and 1% of pixels off by more than 8/255. The control,
-// composite blending, must fall outside it. Each GPU picture is within the twin's tolerance of
-// the CPU twin. A shadow technique does not apply to a projection: the picture is the same
-// with one set, and that is said once.
+// Each mode on the comparison volume (unsigned char, values 0..255) and on a float copy of it
+// whose values span 40..160 (scalars are normalized over the data's range, as VTK's) is drawn
+// by our mapper and by VTK's in one run and compared within a tolerance calibrated on VTK
+// against itself (its picture at 0.8 times the sample distance): 1.5 times that difference,
+// at least RMSE 0.005 and 1% of pixels off by more than 8/255. The minimum is drawn on the
+// volumes inverted, with their outside clear: otherwise every ray's minimum is the clear
+// background and both pictures are black, a comparison that cannot fail. Every picture must
+// not be black; the control, composite blending, must fall outside the tolerance. Each GPU
+// picture is within the twin's tolerance of the CPU twin. A shadow technique does not apply
+// to a projection: the picture is the same with one set, and that is said once.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 
@@ -68,7 +70,17 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, int blend, bool vtks, bo
   color->AddRGBPoint(range[1], 0.9, 0.9, 1.0);
   opacity->AddPoint(range[0], 0.0);
   opacity->AddPoint(range[0] + 20 * span, 0.05);
-  opacity->AddPoint(range[1], 0.8);
+  if (blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND)
+  {
+    // The inverted volume's outside (the maximum) clear: the minimum shows the ball's ring,
+    // not the box, whose silhouette is the proxy geometry's rasterization, not the blend.
+    opacity->AddPoint(range[0] + 160 * span, 0.8);
+    opacity->AddPoint(range[1], 0.0);
+  }
+  else
+  {
+    opacity->AddPoint(range[1], 0.8);
+  }
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   volume->SetProperty(property);
@@ -94,6 +106,11 @@ int TestBlendModesMatchVTK(int, char*[])
 {
   vtkSmartPointer<vtkImageData> bytes = deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR);
   vtkSmartPointer<vtkImageData> floats = deepshadow::testing::MakeTestVolume(VTK_FLOAT, 48, 120.0, 40.0);
+  // For the minimum: the same volumes inverted (high outside, low at the ball's centre), or
+  // every ray's minimum would be the clear background value and the picture black.
+  vtkSmartPointer<vtkImageData> invertedBytes =
+    deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR, 48, -255.0, 255.0);
+  vtkSmartPointer<vtkImageData> invertedFloats = deepshadow::testing::MakeTestVolume(VTK_FLOAT, 48, -120.0, 160.0);
   const std::vector<std::pair<const char*, int>> modes = {
     { "maximum intensity", vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND },
     { "minimum intensity", vtkVolumeMapper::MINIMUM_INTENSITY_BLEND },
@@ -105,9 +122,11 @@ int TestBlendModesMatchVTK(int, char*[])
   bool ok = true;
   for (const auto& [name, blend] : modes)
   {
-    for (vtkImageData* data : { bytes.Get(), floats.Get() })
+    const bool minimum = blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND;
+    for (vtkImageData* data : { minimum ? invertedBytes.Get() : bytes.Get(), minimum ? invertedFloats.Get() : floats.Get() })
     {
-      const std::string what = std::string(name) + (data == bytes ? ", unsigned char" : ", float 40..160");
+      const bool isBytes = data == bytes || data == invertedBytes;
+      const std::string what = std::string(name) + (isBytes ? ", unsigned char" : ", float 40..160");
       const Drawn ours = Draw(window, data, blend, false);
       const Drawn vtks = Draw(window, data, blend, true);
       // The tolerance, calibrated on VTK against itself: its picture at 0.8 times the sample
@@ -129,7 +148,7 @@ int TestBlendModesMatchVTK(int, char*[])
       const Drawn composite = Draw(window, data, vtkVolumeMapper::COMPOSITE_BLEND, false);
       ok = !WithinTolerance((what + ", ours compositing (must fail)").c_str(), composite.Picture,
              vtks.Picture, maxRMSE, 8.0 / 255.0, maxFraction) && ok;
-      ok = (blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
+      ok = deepshadow::testing::Check(what + ": not black",
              deepshadow::testing::CoveredFraction(ours.Picture, { 0.0, 0.0, 0.0 }) > 0.05) && ok;
     }
   }
