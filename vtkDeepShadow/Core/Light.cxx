@@ -41,4 +41,14 @@ LightSample Light::At(const glm::dvec3& p) const
   return sample;
 }
 
+LightSample Light::VolumeSampleAt(const glm::dvec3& p) const
+{
+  LightSample sample = this->At(p);
+  if (this->ShadedFromEye && p != this->Eye)
+  {
+    sample.ToLight = glm::normalize(this->Eye - p);
+  }
+  return sample;
+}
+
 }

@@ -24,12 +24,22 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
   double Exponent = 1.0;
   /** vtkLight::ShadowAttenuation: 0 casts no shadow, 1 full shadows (the default). */
   double ShadowAttenuation = 1.0;
+  /**
+   * VTK's volume mapper shades a lone headlight (the only light, a headlight of intensity 1)
+   * from the eye at every sample, not as a directional light: true for that light, with Eye
+   * the camera's position. It still casts shadows, and lights meshes, as the directional
+   * light it is (VolumeSampleAt).
+   */
+  bool ShadedFromEye = false;
+  glm::dvec3 Eye{ 0.0 };
 
   /** The spot's cone cosine, cos(ConeAngle); -2 (below any cosine) when it is no spot. */
   double ConeCosine() const;
 
   /** Direction and colour of this light as seen from world point `p`. */
   LightSample At(const glm::dvec3& p) const;
+  /** The same for shading a volume's sample at `p` (ShadedFromEye: towards the eye). */
+  LightSample VolumeSampleAt(const glm::dvec3& p) const;
 };
 
 }

@@ -98,16 +98,18 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   PreparedVolume prepared;
   const glm::dvec2 range = volume.Grid->GetRange();
   const bool projection = volume.Projection.Mode != BlendMode::Composite;
+  const bool isosurface = !volume.IsoValues.empty();
   if (settings.TransferTableSize > 0)
   {
-    // Projections but additive look opacity up uncorrected: a step of one unit distance
-    // corrects nothing.
-    const bool uncorrected = projection && !volume.Projection.CorrectsOpacity();
+    // Projections but additive, and isosurfaces, look opacity up uncorrected: a step of one
+    // unit distance corrects nothing.
+    const bool uncorrected = isosurface || (projection && !volume.Projection.CorrectsOpacity());
     prepared.Table = std::make_unique<TransferTable>(TransferTable::Sample(volume.Transfer,
       range.x, range.y, settings.TransferTableSize,
       uncorrected ? volume.Transfer.OpacityUnitDistance : settings.SampleDistance));
   }
-  if (settings.EmptySpaceSkipping && !projection) // a projection counts transparent samples too
+  // A projection counts transparent samples too; an isosurface's crossings lie anywhere.
+  if (settings.EmptySpaceSkipping && !projection && !isosurface)
   {
     prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
   }
@@ -124,7 +126,8 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Empty = prepared.Empty.get();
   caster.Bound = volume.Bound.get();
   caster.Surfaces = castSurfaces ? scene.CastingSurfaces.get() : nullptr;
-  if (volume.ShadowTransfer && settings.EmptySpaceSkipping)
+  caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
+  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
     caster.Empty = prepared.ShadowEmpty.get();
@@ -132,7 +135,8 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   if (settings.TransferTableSize > 0)
   {
     prepared.FeelerTable = std::make_unique<TransferTable>(TransferTable::Sample(casting,
-      range.x, range.y, settings.TransferTableSize, volume.Shadows.StepFactor * settings.SampleDistance));
+      range.x, range.y, settings.TransferTableSize,
+      isosurface ? casting.OpacityUnitDistance : volume.Shadows.StepFactor * settings.SampleDistance));
     caster.FeelerTable = prepared.FeelerTable.get();
   }
   for (size_t l = 0; l < scene.Lights.size(); ++l)
@@ -231,6 +235,9 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
 
   glm::dvec4 accumulated(0.0);
   glm::dvec4 termAccumulated(0.0);
+  const bool isosurface = !volume.IsoValues.empty();
+  IsoCrossings crossings(isosurface ? &volume.IsoValues : nullptr);
+  double previousT = t0; // an isosurface's receiver: the sample before its crossing
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
@@ -255,7 +262,17 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         continue;
       }
     }
-    const double scalar = grid.Sample(index, volume.Sampling);
+    const double scalar = crossings.Next(grid.Sample(index, volume.Sampling));
+    double receiverT = t;
+    if (isosurface)
+    {
+      receiverT = previousT;
+      previousT = t;
+      if (!IsoCrossings::IsCrossing(scalar))
+      {
+        continue;
+      }
+    }
 
     glm::dvec3 color;
     double alpha;
@@ -268,8 +285,8 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     else
     {
       color = volume.Transfer.Color(scalar);
-      alpha = CorrectOpacity(volume.Transfer.Opacity.Evaluate(scalar), dt,
-        volume.Transfer.OpacityUnitDistance);
+      const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
+      alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
     }
     if (alpha <= 0.0)
     {
@@ -278,7 +295,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     glm::dvec3 termColor(1.0); // nothing shadows an unlit sample
     if (lit)
     {
-      const glm::dvec3 position = ray.Origin + t * ray.Direction;
+      const glm::dvec3 position = ray.Origin + receiverT * ray.Direction;
       const glm::dvec3 normal = volume.Shade && !termOnly
         ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling))
         : glm::dvec3(0.0);
@@ -286,7 +303,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       glm::dvec3 term(1.0);
       for (size_t l = 0; l < scene.Lights.size(); ++l)
       {
-        const LightSample sample = scene.Lights[l].At(position);
+        const LightSample sample = scene.Lights[l].VolumeSampleAt(position);
         glm::dvec3 contribution(0.0);
         if (!termOnly)
         {
@@ -299,10 +316,13 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
         if ((own || others) && (contribution != glm::dvec3(0.0) || termReached))
         {
-          glm::dvec3 visibility = own ? own->Visibility(position) : glm::dvec3(1.0);
+          const glm::dvec3 receiver = isosurface
+            ? position + IsoReceiverOffset(volume.Shadows.StepFactor * dt) * scene.Lights[l].At(position).ToLight
+            : position;
+          glm::dvec3 visibility = own ? own->Visibility(receiver) : glm::dvec3(1.0);
           if (others)
           {
-            visibility *= others->Visibility(position);
+            visibility *= others->Visibility(receiver);
           }
           const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
           contribution *= factor;

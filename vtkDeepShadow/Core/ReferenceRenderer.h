@@ -37,6 +37,7 @@
 #include "Core/Image.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
+#include "Core/Isosurface.h"
 #include "Core/Projection.h"
 #include "Core/Shadows.h"
 #include "Core/Geometry/SurfaceSet.h"
@@ -73,6 +74,11 @@ struct VolumeInstance
   std::shared_ptr<const BoundRegion> Bound;
   /** Projection blend modes (maximum, minimum, average, additive): drawn unlit, unshadowed. */
   ProjectionSettings Projection;
+  /**
+   * Isosurface blending (Isosurface.h): the contour values, sorted; empty: composite (or the
+   * projection). The surfaces are lit and shadowed, and are what casts the shadows.
+   */
+  std::vector<double> IsoValues;
 };
 
 struct Scene

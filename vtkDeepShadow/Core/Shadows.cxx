@@ -3,6 +3,7 @@
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/Camera.h"
+#include "Core/Isosurface.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Core/OpticalModel.h"
 #include "Core/Parallel.h"
@@ -67,6 +68,15 @@ glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
 
 glm::dvec4 ShadowCaster::Sample(double scalar, double step) const
 {
+  if (this->IsoValues)
+  {
+    if (!IsoCrossings::IsCrossing(scalar))
+    {
+      return glm::dvec4(0.0);
+    }
+    // A surface's opacity is the function's own: its table is sampled for a unit step.
+    step = this->Transfer->OpacityUnitDistance;
+  }
   if (this->FeelerTable)
   {
     return this->FeelerTable->Lookup(scalar);
@@ -77,6 +87,14 @@ glm::dvec4 ShadowCaster::Sample(double scalar, double step) const
 
 bool ShadowCaster::AboveThreshold(double scalar, double step, const ShadowParameters& parameters) const
 {
+  if (this->IsoValues)
+  {
+    if (!IsoCrossings::IsCrossing(scalar))
+    {
+      return false;
+    }
+    step = this->Transfer->OpacityUnitDistance;
+  }
   if (parameters.Mode == ThresholdMode::Scalar)
   {
     const glm::dvec2 range = this->Grid->GetRange();
@@ -169,6 +187,7 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
   {
     bound.emplace(*caster.Bound, indexOrigin, indexDirection);
   }
+  IsoCrossings crossings(caster.IsoValues);
   for (long j = firstSample;; ++j)
   {
     const double t = (static_cast<double>(j) + 0.5) * step;
@@ -193,7 +212,7 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
         continue;
       }
     }
-    const double scalar = grid.Sample(index, caster.Sampling);
+    const double scalar = crossings.Next(grid.Sample(index, caster.Sampling));
     if (parameters.Opaque)
     {
       if (occluder.Sample(scalar))

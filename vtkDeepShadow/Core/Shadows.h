@@ -162,10 +162,20 @@ struct ShadowCaster
    * (opaque rays, shadow maps) stop at a surface whose opacity exceeds the threshold.
    */
   const SurfaceSet* Surfaces = nullptr;
+  /**
+   * Optional: isosurface blending's contour values, sorted (Isosurface.h). The light's rays
+   * then read, at each sample, the contour crossed since the one before (IsoCrossings), and
+   * a crossing's opacity is the transfer function's, uncorrected; no crossing casts nothing.
+   */
+  const std::vector<double>* IsoValues = nullptr;
 
-  /** Colour (transmission) and opacity corrected for `step` at `scalar`. */
+  /**
+   * Colour (transmission) and opacity corrected for `step` at `scalar`; under isosurface
+   * blending, of the contour `scalar` crossed (uncorrected; none: opacity 0).
+   */
   glm::dvec4 Sample(double scalar, double step) const;
-  /** Whether the sample at `scalar` is above a per-sample threshold (Opacity, Scalar modes). */
+  /** Whether the sample at `scalar` is above a per-sample threshold (Opacity, Scalar modes);
+   * under isosurface blending, whether the contour it crossed is. */
   bool AboveThreshold(double scalar, double step, const ShadowParameters& parameters) const;
 };
 

@@ -3,6 +3,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -481,6 +482,33 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
   return projection;
 }
 
+std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given)
+{
+  std::vector<double> values;
+  if (mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND && property)
+  {
+    vtkContourValues* contours = property->GetIsoSurfaceValues();
+    for (int i = 0; i < contours->GetNumberOfContours(); ++i)
+    {
+      const double value = contours->GetValue(i);
+      if (std::isfinite(value))
+      {
+        values.push_back(value);
+      }
+    }
+    std::sort(values.begin(), values.end());
+  }
+  if (given)
+  {
+    *given = static_cast<int>(values.size());
+  }
+  if (values.size() > static_cast<size_t>(MaxIsoValues))
+  {
+    values.resize(static_cast<size_t>(MaxIsoValues));
+  }
+  return values;
+}
+
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
   const std::string& expression, const glm::dmat4& dataToIndex, std::string& error)
 {
@@ -654,7 +682,24 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     l.ConeAngle = light->GetConeAngle();
     l.Exponent = light->GetExponent();
     l.ShadowAttenuation = light->GetShadowAttenuation();
+    l.Eye = ToGlm3(position);
+    l.ShadedFromEye = light->LightTypeIsHeadlight() && light->GetIntensity() == 1.0;
     lights.push_back(l);
+  }
+  // VTK's mappers treat a lone headlight of intensity 1 as their simplest lighting; the
+  // volume mapper then shades it from the eye (Light::ShadedFromEye).
+  int switchedOn = 0;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    switchedOn += light->GetSwitch() ? 1 : 0;
+  }
+  if (switchedOn != 1 || lights.size() != 1)
+  {
+    for (Light& light : lights)
+    {
+      light.ShadedFromEye = false;
+    }
   }
   return lights;
 }

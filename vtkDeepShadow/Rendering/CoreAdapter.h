@@ -5,6 +5,7 @@
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
+#include "Core/Isosurface.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
 #include "Core/Projection.h"
@@ -107,18 +108,25 @@ Material MakeMaterial(vtkVolumeProperty* property);
 SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);
 
 /**
+ * The mapper's blend mode as a projection over `dataRange` (the data's scalar range): its
+ * mode (Composite for composite, for isosurface (MakeIsoValues) and for slice, which is
+ * drawn composite) and AverageIPScalarRange.
+ */
+ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dataRange);
+/**
+ * Under isosurface blending, the property's contour values, finite ones sorted, the lowest
+ * MaxIsoValues of them; empty under any other blend mode. `given`: how many finite values
+ * the property holds (more than MaxIsoValues are said unsupported).
+ */
+std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given = nullptr);
+
+/**
  * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and
  * strips as triangles (points moved by `dataToIndex`), checked (CheckClosedMesh), oriented
  * outward, combined by `expression` (CSGExpression; "" is the union). An empty bound is an
  * empty solid, not an error. Returns null with `error` naming the bound ("bound B ...") on
  * bad input.
  */
-/**
- * The mapper's blend mode as a projection over `dataRange` (the data's scalar range): its
- * mode (Composite for composite, and for isosurface and slice, which are drawn composite) and
- * AverageIPScalarRange.
- */
-ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dataRange);
 
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
   const std::string& expression, const glm::dmat4& dataToIndex, std::string& error);

@@ -23,8 +23,18 @@ PackedLight PackLight(const Light& light)
 }
 
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,
-  const Material& material)
+  const Material& material, bool volume)
 {
+  int fromEye = -1;
+  for (size_t i = 0; volume && i < lights.size(); ++i)
+  {
+    if (lights[i].ShadedFromEye)
+    {
+      fromEye = static_cast<int>(i);
+      sink.Set("u_lightEye", glm::vec3(lights[i].Eye));
+    }
+  }
+  sink.Set("u_lightFromEye", fromEye);
   std::vector<int> positional;
   std::vector<glm::vec3> positions, directions, diffuse, specular, attenuation;
   std::vector<float> coneCos, exponent;

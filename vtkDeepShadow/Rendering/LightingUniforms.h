@@ -34,9 +34,13 @@ struct PackedLight
 };
 PackedLight PackLight(const Light& light);
 
-/** Lights in world space (in the order given), ambient light, two-sided lighting, material. */
+/**
+ * Lights in world space (in the order given), ambient light, two-sided lighting, material.
+ * `volume`: a volume's samples are shaded, with a lone headlight from the eye
+ * (Light::ShadedFromEye); meshes shade every directional light as one.
+ */
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,
-  const Material& material);
+  const Material& material, bool volume);
 
 }
 #endif

@@ -341,7 +341,7 @@ void ChooseSurfaceFeatures(vtkDeepShadowTechnique* technique, const deepshadow::
 void SetViewUniforms(deepshadow::UniformSink& sink, vtkRenderer* renderer, vtkActor* actor,
   const std::vector<deepshadow::Light>& lights, const deepshadow::SurfaceMaterial& material)
 {
-  deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading);
+  deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading, false);
   const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
   sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
   sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));

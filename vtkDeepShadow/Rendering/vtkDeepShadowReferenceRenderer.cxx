@@ -85,6 +85,7 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
+  instance.IsoValues = adapter::MakeIsoValues(mapper, property);
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {

@@ -561,9 +561,16 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   impl.Volume.GetTexture()->SetMagnificationFilter(filter);
   frame.Projection = adapter::MakeProjection(this, impl.Volume.GetRange());
   const bool projection = frame.Projection.Mode != deepshadow::BlendMode::Composite;
-  // Projections but additive look opacity up uncorrected (as VTK's mapper): a step of one
-  // unit distance corrects nothing.
-  const bool uncorrected = projection && !frame.Projection.CorrectsOpacity();
+  frame.Context.IsoValues = adapter::MakeIsoValues(this, property);
+  const bool isosurface = !frame.Context.IsoValues.empty();
+  if (this->BlendMode == vtkVolumeMapper::ISOSURFACE_BLEND && !isosurface)
+  {
+    ++this->RenderCount;
+    return false; // no contour value: nothing to draw, as VTK's mapper (said by UnsupportedSettings)
+  }
+  // Projections but additive, and isosurfaces, look opacity up uncorrected (as VTK's
+  // mapper): a step of one unit distance corrects nothing.
+  const bool uncorrected = isosurface || (projection && !frame.Projection.CorrectsOpacity());
   this->UpdateTables(window, property,
     uncorrected ? property->GetScalarOpacityUnitDistance(0) * unitScale : step, unitScale);
   // The polyhedral bound: rebuilt when a bound, the expression or the data's placement changed.
@@ -591,8 +598,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   deepshadow::ShadowContext& context = frame.Context;
   context.Window = window;
   context.Volume = impl.Volume.GetTexture();
-  // A projection counts clear samples too: nothing is skipped for being transparent.
-  context.Occupancy = !projection && this->EmptySpaceSkipping && impl.Occupancy.AnyEmptyBlock()
+  // A projection counts clear samples too: nothing is skipped for being transparent; an
+  // isosurface's crossings lie in clear blocks as well.
+  context.Occupancy = !projection && !isosurface && this->EmptySpaceSkipping && impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()
     : nullptr;
   context.BlockSize = static_cast<float>(deepshadow::VolumeTexture::BlockSize);

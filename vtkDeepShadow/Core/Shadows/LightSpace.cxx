@@ -2,6 +2,7 @@
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
+#include "Core/Isosurface.h"
 #include "Core/Parallel.h"
 #include "Core/Geometry/SurfaceSet.h"
 
@@ -269,6 +270,7 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
   {
     ++lastInBox;
   }
+  IsoCrossings crossings(caster.IsoValues);
   for (long j = 0; j <= lastInBox; ++j)
   {
     const glm::dvec3 index = indexOrigin + depthOf(j) * indexDirection;
@@ -288,7 +290,7 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
       j = last;
       continue;
     }
-    if (!surfacesUpTo(depthOf(j)) || !visit(j, depthOf(j), grid.Sample(index, caster.Sampling), false))
+    if (!surfacesUpTo(depthOf(j)) || !visit(j, depthOf(j), crossings.Next(grid.Sample(index, caster.Sampling)), false))
     {
       return;
     }

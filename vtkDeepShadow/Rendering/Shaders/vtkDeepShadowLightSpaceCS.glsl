@@ -10,6 +10,7 @@
 // works longer inside the first dispatch keeps its neighbours waiting.
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
+//DeepShadow::Isosurface::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
@@ -65,6 +66,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   }
   vec3 indexStep = indexDirection * u_feelerStep;
   //DeepShadow::Bound::TexelInit
+  //DeepShadow::Isosurface::TexelInit
   for (int j = 0; j <= lastInBox; ++j)
   {
     float t = tEnter + (float(j) + 0.5) * u_feelerStep;
@@ -87,7 +89,9 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     }
     float upTo = t;
     //DeepShadow::Surfaces::TexelUpTo
-    if (!visitSample(j, t, sampleScalar(sampleIndex)))
+    float scalar = sampleScalar(sampleIndex);
+    //DeepShadow::Isosurface::TexelSample
+    if (!visitSample(j, t, scalar))
     {
       return;
     }

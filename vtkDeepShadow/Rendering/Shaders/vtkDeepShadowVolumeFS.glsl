@@ -14,6 +14,7 @@ layout(location = 0) out vec4 fragColor;
 #endif
 
 //DeepShadow::VolumeSampling::Dec
+//DeepShadow::Isosurface::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
 uniform mat4 u_clipToWorld;      // inverse view-projection
 uniform vec4 u_viewport;         // x, y, width, height in window pixels
@@ -83,6 +84,7 @@ void main()
   //DeepShadow::Bound::Init
   //DeepShadow::VolumeSegments::Init
   //DeepShadow::Projection::Init
+  //DeepShadow::Isosurface::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -96,6 +98,8 @@ void main()
     //DeepShadow::EmptySpace::Impl
 
     float scalar = sampleScalar(index);
+    float receiverT = t; // where the sample receives light (Isosurface: the sample before)
+    //DeepShadow::Isosurface::Impl
     //DeepShadow::Projection::Impl
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
     if (transfer.a <= 0.0)

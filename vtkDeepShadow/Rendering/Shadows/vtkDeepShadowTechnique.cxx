@@ -236,7 +236,9 @@ void Internals::UpdateFeelerTable(
   vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context, bool colored)
 {
   Internals& impl = *self->Impl;
-  const double step = FeelerStep(self, context);
+  // An isosurface's opacity is the function's own: the table is sampled for a unit step.
+  const double step =
+    context.IsoValues.empty() ? FeelerStep(self, context) : context.Transfer.OpacityUnitDistance;
   std::vector<double> tableKey = context.TransferKey(colored);
   tableKey.insert(tableKey.end(), { static_cast<double>(context.DataVersion), step,
     static_cast<double>(context.TableSize), context.Range.x, context.Range.y });
@@ -449,9 +451,10 @@ void Internals::SetFeelerUniforms(const vtkDeepShadowTechnique* self,
   const deepshadow::ShadowParameters parameters = self->GetParameters();
   sink.Set("u_feelerTable", self->Impl->FeelerTable.GetTexture()->GetTextureUnit());
   sink.Set("u_feelerStep", static_cast<float>(step));
-  // Per-sample opacity thresholds are compared with the table's step-corrected opacity.
+  // Per-sample opacity thresholds are compared with the table's step-corrected opacity (an
+  // isosurface's is uncorrected).
   sink.Set("u_feelerThreshold",
-    static_cast<float>(parameters.Mode == deepshadow::ThresholdMode::Opacity
+    static_cast<float>(parameters.Mode == deepshadow::ThresholdMode::Opacity && context.IsoValues.empty()
         ? deepshadow::CorrectOpacity(self->Threshold, step, context.Transfer.OpacityUnitDistance)
         : self->Threshold));
   sink.Set("u_feelerThresholdMode", static_cast<int>(parameters.Mode));

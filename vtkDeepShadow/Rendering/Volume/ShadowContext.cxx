@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace deepshadow
 {
 
@@ -24,6 +26,8 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
     add(this->Transfer.Green);
     add(this->Transfer.Blue);
   }
+  key.push_back(static_cast<double>(this->IsoValues.size()));
+  key.insert(key.end(), this->IsoValues.begin(), this->IsoValues.end());
   return key;
 }
 
@@ -31,6 +35,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   std::map<std::string, ShaderFeature>& runtime, bool surfaces) const
 {
   enabled.insert("VolumeSampling");
+  if (!this->IsoValues.empty())
+  {
+    enabled.insert("Isosurface");
+  }
   if (this->Occupancy)
   {
     enabled.insert("EmptySpace");
@@ -83,6 +91,17 @@ void ShadowContext::SetSamplingUniforms(UniformSink& sink) const
   sink.Set("u_tableMap", glm::vec2(this->ShaderTableMap()));
   sink.Set("u_dims", glm::vec3(this->Dims));
   sink.Set("u_worldToIndex", glm::mat4(this->WorldToIndex));
+  if (!this->IsoValues.empty())
+  {
+    std::vector<float> values;
+    for (double value : this->IsoValues)
+    {
+      values.push_back(static_cast<float>(
+        std::clamp(value * this->ShaderScalar.x + this->ShaderScalar.y, -1.0e38, 1.0e38)));
+    }
+    sink.Set("u_isoValues", values);
+    sink.Set("u_isoCount", static_cast<int>(values.size()));
+  }
 }
 
 void ShadowContext::SetEmptySpaceUniforms(UniformSink& sink) const

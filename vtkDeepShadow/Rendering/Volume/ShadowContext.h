@@ -93,16 +93,21 @@ struct ShadowContext
   int BoundVersion = 0;           // increments with every change of the bound
   int SurfacesVersion = 0;        // increments with every change of the casting surfaces
   TransferFunction Transfer;      // the volume's; a technique may cast with its own
+  /**
+   * Isosurface blending's contour values, sorted, in data scalars (Isosurface.h); empty
+   * otherwise. The feature Isosurface is then part of every shader that reads the volume.
+   */
+  std::vector<double> IsoValues;
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
 
-  /** The content of Transfer (opacity, and colours if asked), to compare builds by. */
+  /** The content of Transfer (opacity, and colours if asked) and IsoValues, to compare builds by. */
   std::vector<double> TransferKey(bool colors) const;
 
   /**
-   * The features that read the volume as this context holds it: VolumeSampling, EmptySpace
-   * (if blocks are empty), Bound (runtime) and TriangleHierarchy (if bounded), and Surfaces
-   * when `surfaces` and surfaces cast shadows.
+   * The features that read the volume as this context holds it: VolumeSampling, Isosurface
+   * (under isosurface blending), EmptySpace (if blocks are empty), Bound (runtime) and
+   * TriangleHierarchy (if bounded), and Surfaces when `surfaces` and surfaces cast shadows.
    */
   void AddVolumeFeatures(std::set<std::string>& enabled,
     std::map<std::string, ShaderFeature>& runtime, bool surfaces) const;

@@ -7,6 +7,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <sstream>
+#include <string>
 
 namespace deepshadow
 {
@@ -54,10 +55,26 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
-  if (blend == vtkVolumeMapper::ISOSURFACE_BLEND || blend == vtkVolumeMapper::SLICE_BLEND)
+  if (blend == vtkVolumeMapper::SLICE_BLEND)
   {
     said.push_back(std::string("blend mode ") + BlendModeName(blend) +
       " is not supported: the volume is drawn with composite blending");
+  }
+  else if (blend == vtkVolumeMapper::ISOSURFACE_BLEND)
+  {
+    int given = 0;
+    adapter::MakeIsoValues(mapper, property, &given);
+    if (given == 0)
+    {
+      said.push_back("isosurface blending without contour values "
+                     "(vtkVolumeProperty::GetIsoSurfaceValues): nothing is drawn");
+    }
+    else if (given > MaxIsoValues)
+    {
+      said.push_back("isosurface blending draws at most " + std::to_string(MaxIsoValues) +
+        " contour values: the lowest " + std::to_string(MaxIsoValues) + " of " + std::to_string(given) +
+        " are drawn");
+    }
   }
   else if (blend != vtkVolumeMapper::COMPOSITE_BLEND && shadowed)
   {

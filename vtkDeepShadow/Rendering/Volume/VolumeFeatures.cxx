@@ -75,7 +75,7 @@ bool Normals(const Frame& f)
 
 void BindLighting(const Frame& f, UniformSink& sink)
 {
-  SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property));
+  SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property), true);
   sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(f.Context.WorldToIndex))));
 }
 
@@ -146,6 +146,15 @@ const std::vector<VolumeFeature>& VolumeFeatures()
       [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },
     { "Projection", [](const Frame& f) { return f.Projection.Mode != BlendMode::Composite; }, nullptr,
       BindProjection, nullptr },
+    // Its contour values are the volume's (ShadowContext::SetSamplingUniforms): shadow passes
+    // read them too.
+    { "Isosurface", [](const Frame& f) { return !f.Context.IsoValues.empty(); }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        sink.Set("u_isoReceiverOffset", f.Technique ? static_cast<float>(IsoReceiverOffset(
+                                                        f.Technique->GetStepFactor() * f.Context.ShadowStep))
+                                                    : 0.0f);
+      },
+      nullptr },
     { "Shadow", [](const Frame& f) { return f.Technique != nullptr; }, ComposeShadow,
       [](const Frame& f, UniformSink& sink)
       { vtkDeepShadowTechnique::Internals::Bind(f.Technique, sink, f.Context); },

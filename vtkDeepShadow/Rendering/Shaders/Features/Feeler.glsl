@@ -21,6 +21,7 @@ uniform int u_feelerSkipEmpty;     // may skip empty blocks (see SetFeelerUnifor
 
 vec4 feelerSample(float scalar)
 {
+  //DeepShadow::Isosurface::FeelerLookup
   return texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
 }
 
@@ -91,6 +92,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
   FeelerTransmittance transmittance = FeelerTransmittance(1.0);
   vec3 indexStep = indexDirection * u_feelerStep;
   //DeepShadow::Bound::FeelerInit
+  //DeepShadow::Isosurface::FeelerInit
   for (int j = tStart > 0.0 ? int(ceil(tStart / u_feelerStep - 0.5)) : 0;; ++j)
   {
     float t = (float(j) + 0.5) * u_feelerStep;
@@ -102,6 +104,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     vec3 sampleIndex = start + t * indexDirection;
     //DeepShadow::EmptySpace::FeelerSkip
     float scalar = sampleScalar(sampleIndex);
+    //DeepShadow::Isosurface::FeelerSample
     if (opaque)
     {
       if (feelerOccludes(scalar, occluderTransmittance))

@@ -15,6 +15,8 @@ uniform vec3 u_lightSpecular[MaxLights];
 uniform vec3 u_lightAttenuation[MaxLights];
 uniform float u_lightConeCos[MaxLights];   // cos(cone angle); < -1 means no cone
 uniform float u_lightExponent[MaxLights];
+uniform int u_lightFromEye;                // a volume's lone headlight, shaded from the eye
+uniform vec3 u_lightEye;                   // (deepshadow::Light::ShadedFromEye); -1: none
 uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
@@ -47,6 +49,11 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
         attenuation = coneDot >= u_lightConeCos[i] ? attenuation * pow(coneDot, u_lightExponent[i]) : 0.0;
       }
     }
+    vec3 shadowToLight = toLight; // shadows keep the light's own direction
+    if (i == u_lightFromEye && position != u_lightEye)
+    {
+      toLight = normalize(u_lightEye - position);
+    }
     if (attenuation <= 0.0)
     {
       continue;
@@ -61,4 +68,4 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   return clamp(lit, 0.0, 1.0);
 }
 //@Impl
-    color = lightSample(color, index, rayOrigin + t * rayDirection, -rayDirection);
+    color = lightSample(color, index, rayOrigin + receiverT * rayDirection, -rayDirection);

@@ -19,8 +19,8 @@ vec3 g_faceNormal;
 //@ShadowOffset
       {
         // deepshadow::ReceiverOffset: grows towards grazing light, where depths vary fastest.
-        float offset = u_receiverOffset / max(abs(dot(normal, toLight)), 0.25);
-        shadowPosition += offset * toLight;
+        float offset = u_receiverOffset / max(abs(dot(normal, shadowToLight)), 0.25);
+        shadowPosition += offset * shadowToLight;
         shadowDistance -= offset;
         shadowNormal = g_faceNormal;
       }

@@ -14,11 +14,12 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
       float shadowDistance = lightDistance;
       vec3 shadowNormal = vec3(0.0); // a volume sample
       //DeepShadow::MeshNormal::ShadowOffset
+      //DeepShadow::Isosurface::ShadowOffset
       bool shadowed = u_shadowSlot[i] >= 0;
       vec3 visibility = vec3(1.0);
       if (shadowed)
       {
-        visibility = lightVisibility(u_shadowSlot[i], shadowPosition, toLight, shadowDistance, shadowNormal);
+        visibility = lightVisibility(u_shadowSlot[i], shadowPosition, shadowToLight, shadowDistance, shadowNormal);
       }
       //DeepShadow::OtherVolumeShadows::Impl
       if (shadowed)

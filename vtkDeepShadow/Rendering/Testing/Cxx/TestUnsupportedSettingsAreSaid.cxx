@@ -9,6 +9,7 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkTrivialProducer.h"
 #include "vtkVolume.h"
@@ -87,8 +88,16 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
         m->SetShadowTechnique(dsm);
         m->SetBlendModeToMaximumIntensity();
       } },
-    { "isosurface", "blend mode isosurface",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetBlendModeToIsoSurface(); } },
+    { "isosurface without contour values", "isosurface blending without contour values",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
+        m->SetBlendModeToIsoSurface();
+        p->GetIsoSurfaceValues()->SetNumberOfContours(0); // VTK's default is one, at 0
+      } },
+    { "isosurface with 17 contour values", "the lowest 16 of 17 are drawn",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
+        m->SetBlendModeToIsoSurface();
+        p->GetIsoSurfaceValues()->GenerateValues(17, 10.0, 200.0);
+      } },
     { "gradient opacity", "gradient opacity",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) {
         vtkNew<vtkPiecewiseFunction> gradient;
