@@ -11,10 +11,12 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkCamera.h"
+#include "vtkContourValues.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -33,7 +35,39 @@ struct BenchCase
   std::string Scene;
   double Scale;
   bool Shade;
+  std::string Blend = "composite";
 };
+
+int BlendModeOf(const std::string& name)
+{
+  return name == "maximum" ? vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND
+    : name == "minimum"    ? vtkVolumeMapper::MINIMUM_INTENSITY_BLEND
+    : name == "average"    ? vtkVolumeMapper::AVERAGE_INTENSITY_BLEND
+    : name == "additive"   ? vtkVolumeMapper::ADDITIVE_BLEND
+    : name == "isosurface" ? vtkVolumeMapper::ISOSURFACE_BLEND
+                           : vtkVolumeMapper::COMPOSITE_BLEND;
+}
+
+// The scalar where the property's opacity first reaches half its maximum over `range`.
+double HalfOpacityScalar(vtkVolumeProperty* property, const double range[2])
+{
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
+  const int samples = 1024;
+  double largest = 0.0;
+  for (int i = 0; i < samples; ++i)
+  {
+    largest = std::max(largest, opacity->GetValue(range[0] + (range[1] - range[0]) * i / (samples - 1)));
+  }
+  for (int i = 0; i < samples; ++i)
+  {
+    const double scalar = range[0] + (range[1] - range[0]) * i / (samples - 1);
+    if (opacity->GetValue(scalar) >= 0.5 * largest)
+    {
+      return scalar;
+    }
+  }
+  return 0.5 * (range[0] + range[1]);
+}
 
 // Median frame time of `mapper` over a short orbit, after two warm-up frames.
 double TimeMapper(vtkDeepShadowRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume,
@@ -75,7 +109,11 @@ int RunBench(const Options& options)
   window->AddRenderer(renderer);
 
   std::vector<BenchCase> cases;
-  for (int size : options.BenchSizes)
+  for (const std::string& blend : options.BenchBlendModes)
+  {
+    cases.push_back({ "head", options.BenchSizes.front() / 256.0, true, blend });
+  }
+  for (int size : options.BenchBlendModes.empty() ? options.BenchSizes : std::vector<int>())
   {
     // spheres: sparse, native 128^3; head: dense CT-like, native 256x256x160.
     cases.push_back({ "spheres", size / 128.0, true });
@@ -83,8 +121,8 @@ int RunBench(const Options& options)
     cases.push_back({ "head", size / 256.0, false });
   }
 
-  std::printf("%-8s %-13s %-6s %8s %9s %9s %9s %7s %7s %6s\n", "scene", "dims", "shade", "step",
-    "ours_ms", "noskip_ms", "vtk_ms", "ratio", "noskip", "empty");
+  std::printf("%-8s %-13s %-6s %-10s %8s %9s %9s %9s %7s %7s %6s\n", "scene", "dims", "shade", "blend",
+    "step", "ours_ms", "noskip_ms", "vtk_ms", "ratio", "noskip", "empty");
   std::vector<Json> rows;
   for (const BenchCase& c : cases)
   {
@@ -95,6 +133,10 @@ int RunBench(const Options& options)
     vtkVolumeProperty* property = scene->GetVolumeProperty();
     property->SetShade(c.Shade ? 1 : 0);
     const double step = scene->GetSuggestedSampleDistance();
+    if (c.Blend == "isosurface")
+    {
+      property->GetIsoSurfaceValues()->SetValue(0, HalfOpacityScalar(property, data->GetScalarRange()));
+    }
 
     renderer->RemoveAllViewProps();
     renderer->RemoveAllLights();
@@ -118,6 +160,8 @@ int RunBench(const Options& options)
     theirs->SetAutoAdjustSampleDistances(0);
     theirs->SetSampleDistance(step);
     theirs->SetUseJittering(0);
+    ours->SetBlendMode(BlendModeOf(c.Blend));
+    theirs->SetBlendMode(BlendModeOf(c.Blend));
 
     const double oursMs = TimeMapper(window, renderer, volume, ours, scene, options.Frames);
     RequireContext(window);
@@ -135,14 +179,15 @@ int RunBench(const Options& options)
     data->GetDimensions(dims);
     const std::string dimsText =
       std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
-    std::printf("%-8s %-13s %-6s %8.3f %9.1f %9.1f %9.1f %7.3f %7.3f %6.2f\n", c.Scene.c_str(),
-      dimsText.c_str(), c.Shade ? "yes" : "no", step, oursMs, noSkipMs, vtkMs, oursMs / vtkMs,
-      noSkipMs / vtkMs, emptyFraction);
+    std::printf("%-8s %-13s %-6s %-10s %8.3f %9.1f %9.1f %9.1f %7.3f %7.3f %6.2f\n", c.Scene.c_str(),
+      dimsText.c_str(), c.Shade ? "yes" : "no", c.Blend.c_str(), step, oursMs, noSkipMs, vtkMs,
+      oursMs / vtkMs, noSkipMs / vtkMs, emptyFraction);
     std::fflush(stdout);
     Json row;
     row.Set("scene", c.Scene)
       .Set("dims", dimsText)
       .Set("shade", c.Shade)
+      .Set("blend", c.Blend)
       .Set("sample_distance", step)
       .Set("ours_ms", oursMs)
       .Set("ours_no_skipping_ms", noSkipMs)

@@ -570,6 +570,22 @@ Options Options::Parse(int argc, char* argv[])
     {
       o.Quick = true;
     }
+    else if (key == "--blend-modes")
+    {
+      o.BenchBlendModes.clear();
+      const std::string text = next();
+      const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
+        "isosurface" };
+      for (const auto& part : text == "all" ? known : Split(text, ','))
+      {
+        if (std::find(known.begin(), known.end(), part) == known.end())
+        {
+          throw UsageError("--blend-modes: unknown blend mode '" + part +
+            "' (composite, maximum, minimum, average, additive, isosurface or all)");
+        }
+        o.BenchBlendModes.push_back(part);
+      }
+    }
     else if (key == "--bench-sizes")
     {
       o.BenchSizes.clear();

@@ -106,6 +106,8 @@ struct Options
 
   // bench
   std::vector<int> BenchSizes{ 128, 256 };
+  /** --blend-modes: each of these on the shaded head at the first size, instead of the default cases. */
+  std::vector<std::string> BenchBlendModes;
   // shadow-bench
   std::vector<std::string> BenchScenes; // empty: all standard scenes
   std::vector<std::string> BenchTechniques; // empty: all but none

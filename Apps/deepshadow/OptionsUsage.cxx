@@ -111,7 +111,8 @@ Usage:
   deepshadow all       --out DIR [VIEW] [--frames N]
   deepshadow view     [SCENE] [VIEW] [RENDERING] [--keys K,K,...] [--screenshots DIR]
   deepshadow gallery   --out DIR [--scenes a,b] [--size WxH] [--error-size WxH] [--frames N]
-  deepshadow bench     [--bench-sizes 128,256] [--size WxH] [--frames N] [--json bench.json]
+  deepshadow bench     [--bench-sizes 128,256] [--blend-modes LIST|all] [--size WxH] [--frames N]
+                       [--json bench.json]
   deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
                        [--frames N] [--json shadows.json]
   deepshadow report    --out DIR [--quick] [--scenes a,b] [--techniques t,u] [--size WxH]
@@ -141,7 +142,9 @@ Commands:
   all         Renders every standard scene into DIR (DIR/<scene>.png and .json), with the
               CPU reference and the error against it.
   bench       Our mapper against VTK's vtkGPUVolumeRayCastMapper in one run, same scenes,
-              same sample distance; prints the ratio of median frame times.
+              same sample distance; prints the ratio of median frame times. --blend-modes:
+              the shaded head in each blend mode instead (isosurface: at the scalar where
+              the opacity first reaches half its maximum).
   shadow-bench  Per scene and technique: frame time when only the camera moves and when
               the light moves, as ratios to the unshadowed frame of the same run, build time,
               memory, and the error against the ground truth (CPU, translucent shadow rays at
