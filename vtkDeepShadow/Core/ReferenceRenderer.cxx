@@ -127,6 +127,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Bound = volume.Bound.get();
   caster.Surfaces = castSurfaces ? scene.CastingSurfaces.get() : nullptr;
   caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
+  caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
@@ -287,6 +288,10 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       color = volume.Transfer.Color(scalar);
       const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
       alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
+    }
+    if (volume.Gradient && alpha > 0.0)
+    {
+      alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);
     }
     if (alpha <= 0.0)
     {

@@ -37,6 +37,7 @@
 #include "Core/Image.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
+#include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Projection.h"
 #include "Core/Shadows.h"
@@ -79,6 +80,8 @@ struct VolumeInstance
    * projection). The surfaces are lit and shadowed, and are what casts the shadows.
    */
   std::vector<double> IsoValues;
+  /** Gradient opacity (composite blending only, as VTK's); drawn and cast. */
+  std::optional<GradientOpacity> Gradient;
 };
 
 struct Scene

@@ -3,6 +3,7 @@
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/Camera.h"
+#include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Core/OpticalModel.h"
@@ -66,8 +67,15 @@ glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
   return dims;
 }
 
-glm::dvec4 ShadowCaster::Sample(double scalar, double step) const
+CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) const
 {
+  return CastSample(crossings.Next(this->Grid->Sample(index, this->Sampling)),
+    this->Gradient ? this->Gradient->Factor(*this->Grid, index, this->Sampling) : 1.0);
+}
+
+glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
+{
+  const double scalar = sample.Scalar;
   if (this->IsoValues)
   {
     if (!IsoCrossings::IsCrossing(scalar))
@@ -77,16 +85,17 @@ glm::dvec4 ShadowCaster::Sample(double scalar, double step) const
     // A surface's opacity is the function's own: its table is sampled for a unit step.
     step = this->Transfer->OpacityUnitDistance;
   }
-  if (this->FeelerTable)
-  {
-    return this->FeelerTable->Lookup(scalar);
-  }
-  return glm::dvec4(this->Transfer->Color(scalar),
-    CorrectOpacity(this->Transfer->Opacity.Evaluate(scalar), step, this->Transfer->OpacityUnitDistance));
+  glm::dvec4 rgba = this->FeelerTable ? this->FeelerTable->Lookup(scalar)
+                                      : glm::dvec4(this->Transfer->Color(scalar),
+                                          CorrectOpacity(this->Transfer->Opacity.Evaluate(scalar), step,
+                                            this->Transfer->OpacityUnitDistance));
+  rgba.a *= sample.OpacityScale;
+  return rgba;
 }
 
-bool ShadowCaster::AboveThreshold(double scalar, double step, const ShadowParameters& parameters) const
+bool ShadowCaster::AboveThreshold(const CastSample& sample, double step, const ShadowParameters& parameters) const
 {
+  const double scalar = sample.Scalar;
   if (this->IsoValues)
   {
     if (!IsoCrossings::IsCrossing(scalar))
@@ -104,19 +113,19 @@ bool ShadowCaster::AboveThreshold(double scalar, double step, const ShadowParame
   if (this->FeelerTable)
   {
     // The table holds corrected opacity: compare with the corrected threshold.
-    return this->FeelerTable->Lookup(scalar).a >
+    return this->FeelerTable->Lookup(scalar).a * sample.OpacityScale >
       CorrectOpacity(parameters.Threshold, step, this->Transfer->OpacityUnitDistance);
   }
-  return this->Transfer->Opacity.Evaluate(scalar) > parameters.Threshold;
+  return this->Transfer->Opacity.Evaluate(scalar) * sample.OpacityScale > parameters.Threshold;
 }
 
-bool OccluderTest::Sample(double scalar)
+bool OccluderTest::Sample(const CastSample& sample)
 {
   if (this->Parameters.Mode == ThresholdMode::Accumulated)
   {
-    return this->Transmission(1.0 - this->Caster.Sample(scalar, this->Step).a);
+    return this->Transmission(1.0 - this->Caster.Sample(sample, this->Step).a);
   }
-  return this->Caster.AboveThreshold(scalar, this->Step, this->Parameters);
+  return this->Caster.AboveThreshold(sample, this->Step, this->Parameters);
 }
 
 bool OccluderTest::Surface(int surface)
@@ -212,7 +221,7 @@ glm::dvec3 FeelerVisibility(const ShadowCaster& caster, const glm::dvec3& from,
         continue;
       }
     }
-    const double scalar = crossings.Next(grid.Sample(index, caster.Sampling));
+    const CastSample scalar = caster.Read(index, crossings);
     if (parameters.Opaque)
     {
       if (occluder.Sample(scalar))

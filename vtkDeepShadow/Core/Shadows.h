@@ -38,7 +38,9 @@
 namespace deepshadow
 {
 class BoundRegion;
+class IsoCrossings;
 class SurfaceSet;
+struct GradientOpacity;
 
 /**
  * The technique family a ShadowParameters describes; the registry (ShadowTechniques.h) maps
@@ -143,6 +145,22 @@ constexpr double ShadowTerminationTransmittance = 1.0 / 512.0;
  */
 VTKDEEPSHADOWCORE_EXPORT glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size);
 
+/**
+ * One sample as the light's rays read it: its scalar (under isosurface blending, the contour
+ * crossed since the sample before, or none: IsoCrossings) and what its opacity is multiplied
+ * by (gradient opacity; 1 without).
+ */
+struct CastSample
+{
+  CastSample(double scalar, double opacityScale = 1.0)
+    : Scalar(scalar)
+    , OpacityScale(opacityScale)
+  {
+  }
+  double Scalar;
+  double OpacityScale;
+};
+
 /** The volume that casts shadows, as the techniques read it. */
 struct ShadowCaster
 {
@@ -168,15 +186,23 @@ struct ShadowCaster
    * a crossing's opacity is the transfer function's, uncorrected; no crossing casts nothing.
    */
   const std::vector<double>* IsoValues = nullptr;
+  /** Optional: gradient opacity (GradientOpacity.h), which light rays see as the view does. */
+  const GradientOpacity* Gradient = nullptr;
+
+  /**
+   * The sample at continuous voxel index `index` of a light ray whose crossings `crossings`
+   * follows (IsoCrossings(IsoValues), one per ray).
+   */
+  CastSample Read(const glm::dvec3& index, IsoCrossings& crossings) const;
 
   /**
    * Colour (transmission) and opacity corrected for `step` at `scalar`; under isosurface
    * blending, of the contour `scalar` crossed (uncorrected; none: opacity 0).
    */
-  glm::dvec4 Sample(double scalar, double step) const;
+  glm::dvec4 Sample(const CastSample& sample, double step) const;
   /** Whether the sample at `scalar` is above a per-sample threshold (Opacity, Scalar modes);
    * under isosurface blending, whether the contour it crossed is. */
-  bool AboveThreshold(double scalar, double step, const ShadowParameters& parameters) const;
+  bool AboveThreshold(const CastSample& sample, double step, const ShadowParameters& parameters) const;
 };
 
 /**
@@ -193,7 +219,7 @@ public:
     , Step(step)
   {
   }
-  bool Sample(double scalar);
+  bool Sample(const CastSample& sample);
   bool Surface(int surface);
   /** Counts what meshes let through at once (grey), for a ray that meets them first. */
   bool Transmission(double transmission);

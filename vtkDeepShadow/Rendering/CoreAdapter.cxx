@@ -482,6 +482,29 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
   return projection;
 }
 
+std::optional<GradientOpacity> MakeGradientOpacity(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing)
+{
+  if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND || !property ||
+    property->GetDisableGradientOpacity(0))
+  {
+    return std::nullopt;
+  }
+  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(0);
+  bool changes = false;
+  for (int i = 0; function && i < function->GetSize(); ++i)
+  {
+    double node[4];
+    function->GetNodeValue(i, node);
+    changes = changes || node[1] != 1.0;
+  }
+  if (!changes)
+  {
+    return std::nullopt;
+  }
+  return GradientOpacity::For(FromVTK(function), range, spacing);
+}
+
 std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given)
 {
   std::vector<double> values;

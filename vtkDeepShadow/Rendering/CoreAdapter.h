@@ -5,6 +5,7 @@
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
+#include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
@@ -16,6 +17,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -119,6 +121,13 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
  * the property holds (more than MaxIsoValues are said unsupported).
  */
 std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given = nullptr);
+/**
+ * The property's gradient opacity for data of scalar range `range` and dataset spacing
+ * `spacing`, when the mapper composites (VTK's applies it there only) and it changes
+ * anything (enabled, some node below 1); empty otherwise.
+ */
+std::optional<GradientOpacity> MakeGradientOpacity(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing);
 
 /**
  * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and

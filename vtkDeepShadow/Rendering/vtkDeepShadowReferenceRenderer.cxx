@@ -21,11 +21,12 @@
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
-#include <stdexcept>
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 namespace adapter = deepshadow::adapter;
 
@@ -86,6 +87,8 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
   instance.IsoValues = adapter::MakeIsoValues(mapper, property);
+  instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
+    glm::make_vec3(vtkImageData::SafeDownCast(mapper->GetDataSetInput())->GetSpacing()));
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {

@@ -39,6 +39,7 @@
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -128,6 +129,7 @@ public:
   // The GPU resources, each with its own update and release (Volume/).
   deepshadow::VolumeTexture Volume;
   deepshadow::TransferTableTexture Transfer;
+  deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
   deepshadow::OccupancyTexture Occupancy;
   deepshadow::BoundHierarchy Bound;
   // What clipping planes and cropping keep, as bound leaves (in the data's coordinates).
@@ -154,6 +156,7 @@ public:
   {
     this->Volume.Release(window);
     this->Transfer.Release(window);
+    this->GradientOpacity.Release(window);
     this->Occupancy.Release(window);
     this->Bound.Release(window);
     this->SurfacesGPU.Release(window);
@@ -568,6 +571,28 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     ++this->RenderCount;
     return false; // no contour value: nothing to draw, as VTK's mapper (said by UnsupportedSettings)
   }
+  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
+  // measures (a table of 1024; the magnitude's range depends on the data's).
+  const std::optional<deepshadow::GradientOpacity> gradient =
+    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
+  if (gradient)
+  {
+    std::vector<double> key{ gradient->MaxMagnitude };
+    for (const auto& [x, y] : gradient->Function.GetNodes())
+    {
+      key.insert(key.end(), { x, y });
+    }
+    if (impl.GradientOpacity.NeedsUpdate(key))
+    {
+      deepshadow::TransferFunction table; // the function as an opacity for a unit step
+      table.Opacity = gradient->Function;
+      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
+      this->LastPasses.emplace_back("gradient-opacity-table");
+    }
+    frame.Context.Gradient = *gradient;
+    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
+    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+  }
   // Projections but additive, and isosurfaces, look opacity up uncorrected (as VTK's
   // mapper): a step of one unit distance corrects nothing.
   const bool uncorrected = isosurface || (projection && !frame.Projection.CorrectsOpacity());
@@ -690,6 +715,7 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
   const Internals& impl = *this->Impl;
   const bool surfaces = impl.Surfaces && !impl.Surfaces->Empty();
   return impl.Volume.GetBytes() + impl.Transfer.GetBytes() +
+    (this->Impl->GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
     (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
     (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
 }

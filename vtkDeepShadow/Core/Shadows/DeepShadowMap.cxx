@@ -31,7 +31,7 @@ VisibilitySamples SampleVisibility(const ShadowCaster& caster, const glm::dvec3&
   };
   MarchTexelRay(
     caster, origin, direction, step, caster.Empty,
-    [&](long, double t, double scalar, bool skipped) {
+    [&](long, double t, const CastSample& scalar, bool skipped) {
       if (needStart)
       {
         samples.Depths.push_back(t - 0.5 * step);

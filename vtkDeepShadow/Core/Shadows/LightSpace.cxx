@@ -219,7 +219,7 @@ int ShadowMapFaceFor(const std::vector<ShadowMapFace>& faces, const glm::dvec3& 
 
 void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
   double step, const EmptySpaceMap* empty,
-  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit,
+  const std::function<bool(long j, double t, const CastSample& sample, bool skipped)>& visit,
   const std::function<bool(double t, int surface)>& visitSurface)
 {
   // Surface crossings come in depth order between the samples: those at or before a sample's
@@ -290,7 +290,7 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
       j = last;
       continue;
     }
-    if (!surfacesUpTo(depthOf(j)) || !visit(j, depthOf(j), crossings.Next(grid.Sample(index, caster.Sampling)), false))
+    if (!surfacesUpTo(depthOf(j)) || !visit(j, depthOf(j), caster.Read(index, crossings), false))
     {
       return;
     }

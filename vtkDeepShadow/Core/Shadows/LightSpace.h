@@ -98,16 +98,17 @@ VTKDEEPSHADOWCORE_EXPORT CasterBounds CasterBoundsOf(
 
 /**
  * Visits the samples of a texel's ray through the volume's box: sample j at depth
- * t = entry + (j + 0.5) * step (entry clamped to 0), with the scalar there. The visitor
- * returns false to stop. With `empty`, a run of samples in empty blocks is visited once, at
- * its last sample inside the box, with skipped = true (they have opacity 0: this is exact).
+ * t = entry + (j + 0.5) * step (entry clamped to 0), with what the light reads there
+ * (ShadowCaster::Read). The visitor returns false to stop. With `empty`, a run of samples in
+ * empty blocks is visited once, at its last sample inside the box, with skipped = true (they
+ * have opacity 0: this is exact).
  * With `visitSurface` and casting surfaces, their crossings at depths t > 0 are visited in
  * depth order between them: a crossing at or before a sample's depth (or a skipped run's
  * last) comes before it, and crossings beyond the box after the last sample.
  */
 VTKDEEPSHADOWCORE_EXPORT void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin,
   const glm::dvec3& direction, double step, const EmptySpaceMap* empty,
-  const std::function<bool(long j, double t, double scalar, bool skipped)>& visit,
+  const std::function<bool(long j, double t, const CastSample& sample, bool skipped)>& visit,
   const std::function<bool(double t, int surface)>& visitSurface = nullptr);
 
 /**

@@ -154,7 +154,7 @@ OpacityLevelsShadow::OpacityLevelsShadow(const ShadowParameters& parameters,
     auto more = [&] { return volume * steps.Transmittance() > ShadowTerminationTransmittance; };
     MarchTexelRay(
       caster, origin, direction, step, caster.Empty,
-      [&](long, double t, double scalar, bool skipped) {
+      [&](long, double t, const CastSample& scalar, bool skipped) {
         if (samples.Depths.empty())
         {
           samples.Depths.push_back(t - 0.5 * step);

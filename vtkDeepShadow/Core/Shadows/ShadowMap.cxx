@@ -88,7 +88,7 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
     OccluderTest occluder(caster, parameters, step);
     MarchTexelRay(
       caster, origin, direction, step, empty,
-      [&](long, double t, double scalar, bool skipped) {
+      [&](long, double t, const CastSample& scalar, bool skipped) {
         if (!skipped && occluder.Sample(scalar))
         {
           depth = static_cast<float>(t);

@@ -64,7 +64,7 @@ std::array<float, 3> TraceStochasticPhoton(const ShadowCaster& caster, const glm
   uint32_t crossings = 0;
   MarchTexelRay(
     caster, origin, direction, step, caster.Empty,
-    [&](long j, double t, double scalar, bool skipped) {
+    [&](long j, double t, const CastSample& scalar, bool skipped) {
       if (skipped)
       {
         return true; // no photon stops in empty space

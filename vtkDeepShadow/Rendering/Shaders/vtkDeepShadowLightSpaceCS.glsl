@@ -11,6 +11,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
+//DeepShadow::GradientOpacity::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
@@ -91,6 +92,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     //DeepShadow::Surfaces::TexelUpTo
     float scalar = sampleScalar(sampleIndex);
     //DeepShadow::Isosurface::TexelSample
+    //DeepShadow::GradientOpacity::TexelSample
     if (!visitSample(j, t, scalar))
     {
       return;

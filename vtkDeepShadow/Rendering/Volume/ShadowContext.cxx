@@ -28,6 +28,12 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
   }
   key.push_back(static_cast<double>(this->IsoValues.size()));
   key.insert(key.end(), this->IsoValues.begin(), this->IsoValues.end());
+  if (this->GradientOpacityTable)
+  {
+    add(this->Gradient.Function);
+    key.insert(key.end(), { this->Gradient.MaxMagnitude, this->Gradient.IndexScale.x,
+                            this->Gradient.IndexScale.y, this->Gradient.IndexScale.z });
+  }
   return key;
 }
 
@@ -38,6 +44,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   if (!this->IsoValues.empty())
   {
     enabled.insert("Isosurface");
+  }
+  if (this->GradientOpacityTable)
+  {
+    enabled.insert("GradientOpacity");
   }
   if (this->Occupancy)
   {
@@ -70,6 +80,10 @@ glm::dvec2 ShadowContext::ShaderRange() const
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
 {
   this->SetSamplingUniforms(sink);
+  if (this->GradientOpacityTable)
+  {
+    this->SetGradientOpacityUniforms(sink);
+  }
   if (this->Occupancy)
   {
     this->SetEmptySpaceUniforms(sink);
@@ -104,6 +118,15 @@ void ShadowContext::SetSamplingUniforms(UniformSink& sink) const
   }
 }
 
+void ShadowContext::SetGradientOpacityUniforms(UniformSink& sink) const
+{
+  sink.Set("u_gradientOpacity", this->GradientOpacityTable->GetTextureUnit());
+  sink.Set("u_gradientOpacityMap", glm::vec2(this->GradientOpacityMap));
+  // The shaders' scalar is the data's times ShaderScalar.x: back to data units.
+  sink.Set("u_gradientOpacityScale", glm::vec3(this->Gradient.IndexScale / this->ShaderScalar.x));
+  sink.Set("u_gradientOpacityMax", static_cast<float>(this->Gradient.MaxMagnitude));
+}
+
 void ShadowContext::SetEmptySpaceUniforms(UniformSink& sink) const
 {
   sink.Set("u_occupancy", this->Occupancy->GetTextureUnit());
@@ -129,6 +152,10 @@ void ShadowContext::SetSurfacesUniforms(UniformSink& sink) const
 void ShadowContext::ActivateVolumeTextures() const
 {
   this->Volume->Activate();
+  if (this->GradientOpacityTable)
+  {
+    this->GradientOpacityTable->Activate();
+  }
   if (this->Occupancy)
   {
     this->Occupancy->Activate();
@@ -148,6 +175,10 @@ void ShadowContext::ActivateVolumeTextures() const
 void ShadowContext::DeactivateVolumeTextures() const
 {
   this->Volume->Deactivate();
+  if (this->GradientOpacityTable)
+  {
+    this->GradientOpacityTable->Deactivate();
+  }
   if (this->Occupancy)
   {
     this->Occupancy->Deactivate();

@@ -7,6 +7,7 @@
 #include "GL/UniformSink.h"
 #include "Core/Light.h"
 #include "ShaderComposer.h"
+#include "Core/GradientOpacity.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
 
@@ -98,16 +99,28 @@ struct ShadowContext
    * otherwise. The feature Isosurface is then part of every shader that reads the volume.
    */
   std::vector<double> IsoValues;
+  /**
+   * Gradient opacity (Features/GradientOpacity.glsl), drawn and cast: its table (the
+   * function's values in alpha over [0, Gradient.MaxMagnitude]) and its parameters; null
+   * when it changes nothing.
+   */
+  vtkTextureObject* GradientOpacityTable = nullptr;
+  glm::dvec2 GradientOpacityMap{ 1.0, 0.0 }; // magnitude -> table coordinate
+  GradientOpacity Gradient;
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
 
-  /** The content of Transfer (opacity, and colours if asked) and IsoValues, to compare builds by. */
+  /**
+   * The content of Transfer (opacity, and colours if asked), IsoValues and the gradient
+   * opacity, to compare builds by.
+   */
   std::vector<double> TransferKey(bool colors) const;
 
   /**
    * The features that read the volume as this context holds it: VolumeSampling, Isosurface
-   * (under isosurface blending), EmptySpace (if blocks are empty), Bound (runtime) and
-   * TriangleHierarchy (if bounded), and Surfaces when `surfaces` and surfaces cast shadows.
+   * (under isosurface blending), GradientOpacity (if it changes anything), EmptySpace (if
+   * blocks are empty), Bound (runtime) and TriangleHierarchy (if bounded), and Surfaces when
+   * `surfaces` and surfaces cast shadows.
    */
   void AddVolumeFeatures(std::set<std::string>& enabled,
     std::map<std::string, ShaderFeature>& runtime, bool surfaces) const;
@@ -116,6 +129,7 @@ struct ShadowContext
   /** One of those features' uniforms (its textures active), for the ray caster's features. */
   void SetSamplingUniforms(UniformSink& sink) const;
   void SetEmptySpaceUniforms(UniformSink& sink) const;
+  void SetGradientOpacityUniforms(UniformSink& sink) const;
   void SetBoundUniforms(UniformSink& sink) const;
   void SetSurfacesUniforms(UniformSink& sink) const;
   /** Binds (releases) the textures those features read. */

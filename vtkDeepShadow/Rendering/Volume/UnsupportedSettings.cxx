@@ -2,7 +2,6 @@
 
 #include "CoreAdapter.h"
 
-#include "vtkPiecewiseFunction.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -32,21 +31,6 @@ const char* BlendModeName(int mode)
     default:
       return "unknown";
   }
-}
-
-// A gradient opacity that changes something: any node below 1.
-bool ChangesOpacity(vtkPiecewiseFunction* function)
-{
-  for (int i = 0; function && i < function->GetSize(); ++i)
-  {
-    double node[4];
-    function->GetNodeValue(i, node);
-    if (node[1] != 1.0)
-    {
-      return true;
-    }
-  }
-  return false;
 }
 }
 
@@ -80,11 +64,6 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
   {
     said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
       ": it is drawn exactly, without shadows");
-  }
-  if (property && !property->GetDisableGradientOpacity(0) &&
-    ChangesOpacity(property->GetStoredGradientOpacity(0)))
-  {
-    said.push_back("gradient opacity is not supported: opacity follows the scalar value only");
   }
   if (property && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {

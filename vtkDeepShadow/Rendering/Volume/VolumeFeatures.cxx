@@ -98,6 +98,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
 {
   static const std::vector<VolumeFeature> features = {
     { "VolumeSampling", [](const Frame&) { return true; }, nullptr, BindSampling, UnbindSampling },
+    { "GradientOpacity", [](const Frame& f) { return f.Context.GradientOpacityTable != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.GradientOpacityTable->Activate();
+        f.Context.SetGradientOpacityUniforms(sink);
+      },
+      [](const Frame& f) { f.Context.GradientOpacityTable->Deactivate(); } },
     { "EmptySpace", [](const Frame& f) { return f.Context.Occupancy != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Context.Occupancy->Activate();

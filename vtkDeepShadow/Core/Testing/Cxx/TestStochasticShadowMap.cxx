@@ -49,7 +49,7 @@ glm::dvec3 ExactTransmittance(const ShadowCaster& caster, const glm::dvec3& orig
   const glm::dvec3& direction, double step, double depth)
 {
   glm::dvec3 t(1.0);
-  MarchTexelRay(caster, origin, direction, step, nullptr, [&](long, double s, double scalar, bool) {
+  MarchTexelRay(caster, origin, direction, step, nullptr, [&](long, double s, const CastSample& scalar, bool) {
     if (s > depth)
     {
       return false;

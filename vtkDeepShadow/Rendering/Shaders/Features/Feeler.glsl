@@ -22,7 +22,9 @@ uniform int u_feelerSkipEmpty;     // may skip empty blocks (see SetFeelerUnifor
 vec4 feelerSample(float scalar)
 {
   //DeepShadow::Isosurface::FeelerLookup
-  return texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+  vec4 rgba = texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+  //DeepShadow::GradientOpacity::FeelerLookup
+  return rgba;
 }
 
 float feelerAlpha(float scalar)
@@ -105,6 +107,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     //DeepShadow::EmptySpace::FeelerSkip
     float scalar = sampleScalar(sampleIndex);
     //DeepShadow::Isosurface::FeelerSample
+    //DeepShadow::GradientOpacity::FeelerSample
     if (opaque)
     {
       if (feelerOccludes(scalar, occluderTransmittance))

@@ -421,6 +421,35 @@ inline void ApplyComparisonView(vtkRenderer* renderer)
   renderer->ResetCamera();
 }
 
+/** Bounds of a comparison with VTK's mapper, calibrated on VTK against itself. */
+struct VTKTolerance
+{
+  double MaxRMSE = 0.0;
+  double MaxFraction = 0.0; // of pixels beyond 8/255
+};
+
+/**
+ * Calibrates a comparison with VTK's picture `vtks`: VTK's own picture drawn again by
+ * `draw(step scale, jittered)` at 0.8x and 1.25x its sample distance and jittered differs
+ * from it by at most D; ours may differ by 1.5 D, at least RMSE `floor` and 1 % of pixels
+ * beyond 8/255. Prints each calibration picture's difference.
+ */
+inline VTKTolerance CalibrateOnVTK(const std::string& what, const Image& vtks,
+  const std::function<Image(float stepScale, bool jitter)>& draw, double floor = 0.007)
+{
+  ImageDifference self;
+  for (const auto& [scale, jitter] : { std::make_pair(0.8f, false), std::make_pair(1.25f, false),
+         std::make_pair(1.0f, true) })
+  {
+    const ImageDifference d = Compare(draw(scale, jitter), vtks, 8.0 / 255.0);
+    std::printf("%s: VTK at %.2fx its sample distance%s: RMSE %.5f, %.3f%% of pixels off by more than 8/255\n",
+      what.c_str(), scale, jitter ? ", jittered" : "", d.RMSE, 100.0 * d.FractionAbove);
+    self.RMSE = std::max(self.RMSE, d.RMSE);
+    self.FractionAbove = std::max(self.FractionAbove, d.FractionAbove);
+  }
+  return { std::max(floor, 1.5 * self.RMSE), std::max(0.01, 1.5 * self.FractionAbove) };
+}
+
 inline vtkSmartPointer<vtkVolumeProperty> MakeComparisonProperty(bool shade)
 {
   vtkNew<vtkColorTransferFunction> color;

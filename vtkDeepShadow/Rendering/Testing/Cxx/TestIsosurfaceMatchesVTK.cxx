@@ -3,8 +3,9 @@
 // Two contour values on the comparison volume (unsigned char 0..255, and a float copy spanning
 // 40..160): an outer, translucent surface (opacity 0.35 at its value) around an opaque inner
 // one, shaded, drawn by our mapper and by VTK's in one run. The tolerance is calibrated on VTK
-// against itself (its picture at 0.8 times the sample distance): 1.5 times that difference,
-// at least RMSE 0.007 and 1% of pixels off by more than 8/255. The control, the same volume
+// against itself (CalibrateOnVTK: its pictures at 0.8x and 1.25x its sample distance and
+// jittered): 1.5 times the largest difference, at least RMSE 0.007 and 1% of pixels off by
+// more than 8/255. The control, the same volume
 // composited, must fall outside it; no picture may be black; the GPU picture must match its
 // CPU twin.
 #include "DeepShadowTestUtilities.h"
@@ -93,20 +94,10 @@ int TestIsosurfaceMatchesVTK(int, char*[])
     const std::string what = std::string("isosurface, ") + (data == bytes ? "unsigned char" : "float 40..160");
     const Drawn ours = Draw(window, data, false, iso);
     const Drawn vtks = Draw(window, data, true, iso);
-    // VTK against itself: at 0.8 and 1.25 times its sample distance, and jittered.
-    deepshadow::ImageDifference self;
-    for (const auto& [step, jitter] : { std::make_pair(0.4f, false), std::make_pair(0.625f, false),
-           std::make_pair(0.5f, true) })
-    {
-      const deepshadow::ImageDifference d =
-        deepshadow::Compare(Draw(window, data, true, iso, step, jitter).Picture, vtks.Picture, 8.0 / 255.0);
-      std::printf("%s: VTK at %.2fx its sample distance%s: RMSE %.5f, %.3f%% of pixels off by more than 8/255\n",
-        what.c_str(), step / 0.5f, jitter ? ", jittered" : "", d.RMSE, 100.0 * d.FractionAbove);
-      self.RMSE = std::max(self.RMSE, d.RMSE);
-      self.FractionAbove = std::max(self.FractionAbove, d.FractionAbove);
-    }
-    const double maxRMSE = std::max(0.007, 1.5 * self.RMSE);
-    const double maxFraction = std::max(0.01, 1.5 * self.FractionAbove);
+    const deepshadow::testing::VTKTolerance tolerance = deepshadow::testing::CalibrateOnVTK(
+      what, vtks.Picture, [&](float scale, bool jitter) { return Draw(window, data, true, iso, 0.5f * scale, jitter).Picture; });
+    const double maxRMSE = tolerance.MaxRMSE;
+    const double maxFraction = tolerance.MaxFraction;
     ok = WithinTolerance(what.c_str(), ours.Picture, vtks.Picture, maxRMSE, 8.0 / 255.0, maxFraction) && ok;
     ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0,
            0.005) && ok;

@@ -98,13 +98,6 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
         m->SetBlendModeToIsoSurface();
         p->GetIsoSurfaceValues()->GenerateValues(17, 10.0, 200.0);
       } },
-    { "gradient opacity", "gradient opacity",
-      [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) {
-        vtkNew<vtkPiecewiseFunction> gradient;
-        gradient->AddPoint(0.0, 0.0);
-        gradient->AddPoint(50.0, 1.0);
-        p->SetGradientOpacity(gradient);
-      } },
     { "2D transfer function", "2D transfer functions",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
     { "mask", "masks (SetMaskInput)",
