@@ -1,6 +1,7 @@
 #include "Core/ReferenceRenderer.h"
 
 #include "Core/Jitter.h"
+#include "Core/Mask.h"
 #include "Core/Parallel.h"
 #include "Core/Shadows/ShadowGrid.h"
 
@@ -128,6 +129,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Surfaces = castSurfaces ? scene.CastingSurfaces.get() : nullptr;
   caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
+  caster.Mask = volume.Mask.get();
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
@@ -289,6 +291,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
       alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
     }
+    alpha *= MaskFactor(volume.Mask.get(), index);
     if (volume.Gradient && alpha > 0.0)
     {
       alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);

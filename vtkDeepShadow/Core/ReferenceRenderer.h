@@ -82,6 +82,8 @@ struct VolumeInstance
   std::vector<double> IsoValues;
   /** Gradient opacity (composite blending only, as VTK's); drawn and cast. */
   std::optional<GradientOpacity> Gradient;
+  /** A binary mask (Mask.h) of the grid's dimensions, or null; what it clears neither shows nor casts. */
+  std::shared_ptr<const VolumeGrid> Mask;
 };
 
 struct Scene

@@ -5,6 +5,7 @@
 #include "Core/Camera.h"
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
+#include "Core/Mask.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Core/OpticalModel.h"
 #include "Core/Parallel.h"
@@ -69,8 +70,9 @@ glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
 
 CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) const
 {
+  const double kept = MaskFactor(this->Mask, index);
   return CastSample(crossings.Next(this->Grid->Sample(index, this->Sampling)),
-    this->Gradient ? this->Gradient->Factor(*this->Grid, index, this->Sampling) : 1.0);
+    kept * (this->Gradient && kept > 0.0 ? this->Gradient->Factor(*this->Grid, index, this->Sampling) : 1.0));
 }
 
 glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const

@@ -188,6 +188,8 @@ struct ShadowCaster
   const std::vector<double>* IsoValues = nullptr;
   /** Optional: gradient opacity (GradientOpacity.h), which light rays see as the view does. */
   const GradientOpacity* Gradient = nullptr;
+  /** Optional: a binary mask (Mask.h, the data's dimensions); what it clears casts nothing. */
+  const VolumeGrid* Mask = nullptr;
 
   /**
    * The sample at continuous voxel index `index` of a light ray whose crossings `crossings`

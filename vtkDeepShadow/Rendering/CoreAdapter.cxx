@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -503,6 +504,19 @@ std::optional<GradientOpacity> MakeGradientOpacity(
     return std::nullopt;
   }
   return GradientOpacity::For(FromVTK(function), range, spacing);
+}
+
+vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume)
+{
+  vtkImageData* mask = mapper->GetMaskInput();
+  if (!mask || !volume || mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    return nullptr;
+  }
+  int maskDims[3], dims[3];
+  mask->GetDimensions(maskDims);
+  volume->GetDimensions(dims);
+  return std::equal(dims, dims + 3, maskDims) && mask->GetPointData()->GetScalars() ? mask : nullptr;
 }
 
 std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given)

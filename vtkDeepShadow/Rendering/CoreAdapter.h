@@ -22,6 +22,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkGPUVolumeRayCastMapper;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkPolyData;
@@ -128,6 +129,12 @@ std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* pr
  */
 std::optional<GradientOpacity> MakeGradientOpacity(
   vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing);
+
+/**
+ * The mapper's mask input when it can be drawn: an image of `volume`'s dimensions, under
+ * composite blending; null otherwise (UnsupportedSettings says why when one is set).
+ */
+vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume);
 
 /**
  * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and

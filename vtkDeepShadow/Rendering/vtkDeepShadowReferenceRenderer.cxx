@@ -8,6 +8,7 @@
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 
@@ -87,6 +88,17 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
   instance.IsoValues = adapter::MakeIsoValues(mapper, property);
+  auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
+  if (vtkImageData* mask =
+        gpuMapper ? adapter::UsableMask(gpuMapper, vtkImageData::SafeDownCast(mapper->GetDataSetInput())) : nullptr)
+  {
+    instance.Mask = adapter::MakeVolumeGrid(mask, volume->GetMatrix(), false, error);
+    if (!instance.Mask)
+    {
+      error = "the mask: " + error;
+      return false;
+    }
+  }
   instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
     glm::make_vec3(vtkImageData::SafeDownCast(mapper->GetDataSetInput())->GetSpacing()));
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;

@@ -130,6 +130,8 @@ public:
   deepshadow::VolumeTexture Volume;
   deepshadow::TransferTableTexture Transfer;
   deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
+  deepshadow::VolumeTexture Mask;                   // a binary mask (Core/Mask.h)
+  int MaskUploads = 0;
   deepshadow::OccupancyTexture Occupancy;
   deepshadow::BoundHierarchy Bound;
   // What clipping planes and cropping keep, as bound leaves (in the data's coordinates).
@@ -157,6 +159,7 @@ public:
     this->Volume.Release(window);
     this->Transfer.Release(window);
     this->GradientOpacity.Release(window);
+    this->Mask.Release(window);
     this->Occupancy.Release(window);
     this->Bound.Release(window);
     this->SurfacesGPU.Release(window);
@@ -411,6 +414,58 @@ void vtkDeepShadowVolumeMapper::GetDrawnRegion(
     static_cast<int>(impl.Bounds.size()), this->BoundExpression, static_cast<int>(cut.size()));
 }
 
+bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* window,
+  vtkVolumeProperty* property, vtkImageData* input, deepshadow::RayCastFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
+  // measures (a table of 1024; the magnitude's range depends on the data's).
+  const std::optional<deepshadow::GradientOpacity> gradient =
+    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
+  if (gradient)
+  {
+    std::vector<double> key{ gradient->MaxMagnitude };
+    for (const auto& [x, y] : gradient->Function.GetNodes())
+    {
+      key.insert(key.end(), { x, y });
+    }
+    if (impl.GradientOpacity.NeedsUpdate(key))
+    {
+      deepshadow::TransferFunction table; // the function as an opacity for a unit step
+      table.Opacity = gradient->Function;
+      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
+      this->LastPasses.emplace_back("gradient-opacity-table");
+    }
+    frame.Context.Gradient = *gradient;
+    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
+    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+  }
+  // The binary mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
+  if (vtkImageData* mask = adapter::UsableMask(this, input))
+  {
+    if (impl.Mask.NeedsUpdate(mask, false))
+    {
+      std::string warning;
+      if (!impl.Mask.Update(window, mask, false, warning))
+      {
+        this->ReportError("the mask: " + impl.Mask.GetError());
+        return false;
+      }
+      impl.Mask.GetTexture()->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.Mask.GetTexture()->SetMagnificationFilter(vtkTextureObject::Nearest);
+      ++impl.MaskUploads;
+      this->LastPasses.emplace_back("mask-upload");
+    }
+    // texel -> the shaders' scalar -> the mask's data value.
+    const glm::dvec2 toShader = impl.Mask.GetScalarMap();
+    const glm::dvec2 shader = impl.Mask.GetShaderScalar();
+    frame.Context.Mask = impl.Mask.GetTexture();
+    frame.Context.MaskToData = glm::dvec2(toShader.x / shader.x, (toShader.y - shader.y) / shader.x);
+    frame.Context.MaskVersion = impl.MaskUploads;
+  }
+  return true;
+}
+
 bool vtkDeepShadowVolumeMapper::UpdateBound(
   vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume)
 {
@@ -571,27 +626,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     ++this->RenderCount;
     return false; // no contour value: nothing to draw, as VTK's mapper (said by UnsupportedSettings)
   }
-  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
-  // measures (a table of 1024; the magnitude's range depends on the data's).
-  const std::optional<deepshadow::GradientOpacity> gradient =
-    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
-  if (gradient)
+  if (!this->UpdateOpacityFactors(window, property, input, frame))
   {
-    std::vector<double> key{ gradient->MaxMagnitude };
-    for (const auto& [x, y] : gradient->Function.GetNodes())
-    {
-      key.insert(key.end(), { x, y });
-    }
-    if (impl.GradientOpacity.NeedsUpdate(key))
-    {
-      deepshadow::TransferFunction table; // the function as an opacity for a unit step
-      table.Opacity = gradient->Function;
-      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
-      this->LastPasses.emplace_back("gradient-opacity-table");
-    }
-    frame.Context.Gradient = *gradient;
-    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
-    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+    return false;
   }
   // Projections but additive, and isosurfaces, look opacity up uncorrected (as VTK's
   // mapper): a step of one unit distance corrects nothing.
@@ -715,7 +752,8 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
   const Internals& impl = *this->Impl;
   const bool surfaces = impl.Surfaces && !impl.Surfaces->Empty();
   return impl.Volume.GetBytes() + impl.Transfer.GetBytes() +
-    (this->Impl->GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
+    (impl.GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
+    (impl.Mask.GetTexture() ? impl.Mask.GetBytes() : 0) +
     (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
     (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
 }

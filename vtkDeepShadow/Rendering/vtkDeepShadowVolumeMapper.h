@@ -356,6 +356,12 @@ private:
     vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step, double unitScale);
   /** Rebuilds the bound's hierarchy and textures if it changed; false on bad bounds. */
   bool UpdateBound(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume);
+  /**
+   * The gradient-opacity table and the binary mask, if they are in use and changed, into the
+   * frame's context; false on a bad mask (said by ReportError).
+   */
+  bool UpdateOpacityFactors(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, vtkImageData* input,
+    deepshadow::RayCastFrame& frame);
 #ifndef __VTK_WRAP__
   /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
   double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);

@@ -11,6 +11,7 @@ const int MaxLights = 8;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
 //DeepShadow::GradientOpacity::Dec
+//DeepShadow::Mask::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

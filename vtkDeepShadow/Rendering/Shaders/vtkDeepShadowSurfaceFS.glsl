@@ -14,6 +14,7 @@ uniform float u_opacity;      // the actor's
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
 //DeepShadow::GradientOpacity::Dec
+//DeepShadow::Mask::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

@@ -16,6 +16,7 @@ layout(location = 0) out vec4 fragColor;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
 //DeepShadow::GradientOpacity::Dec
+//DeepShadow::Mask::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
 uniform mat4 u_clipToWorld;      // inverse view-projection
 uniform vec4 u_viewport;         // x, y, width, height in window pixels
@@ -103,6 +104,7 @@ void main()
     //DeepShadow::Isosurface::Impl
     //DeepShadow::Projection::Impl
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+    //DeepShadow::Mask::Impl
     //DeepShadow::GradientOpacity::Impl
     if (transfer.a <= 0.0)
     {

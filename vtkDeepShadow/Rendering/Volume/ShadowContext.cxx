@@ -28,6 +28,10 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
   }
   key.push_back(static_cast<double>(this->IsoValues.size()));
   key.insert(key.end(), this->IsoValues.begin(), this->IsoValues.end());
+  if (this->Mask)
+  {
+    key.push_back(static_cast<double>(this->MaskVersion));
+  }
   if (this->GradientOpacityTable)
   {
     add(this->Gradient.Function);
@@ -48,6 +52,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   if (this->GradientOpacityTable)
   {
     enabled.insert("GradientOpacity");
+  }
+  if (this->Mask)
+  {
+    enabled.insert("Mask");
   }
   if (this->Occupancy)
   {
@@ -83,6 +91,10 @@ void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
   if (this->GradientOpacityTable)
   {
     this->SetGradientOpacityUniforms(sink);
+  }
+  if (this->Mask)
+  {
+    this->SetMaskUniforms(sink);
   }
   if (this->Occupancy)
   {
@@ -127,6 +139,12 @@ void ShadowContext::SetGradientOpacityUniforms(UniformSink& sink) const
   sink.Set("u_gradientOpacityMax", static_cast<float>(this->Gradient.MaxMagnitude));
 }
 
+void ShadowContext::SetMaskUniforms(UniformSink& sink) const
+{
+  sink.Set("u_mask", this->Mask->GetTextureUnit());
+  sink.Set("u_maskToData", glm::vec2(this->MaskToData));
+}
+
 void ShadowContext::SetEmptySpaceUniforms(UniformSink& sink) const
 {
   sink.Set("u_occupancy", this->Occupancy->GetTextureUnit());
@@ -156,6 +174,10 @@ void ShadowContext::ActivateVolumeTextures() const
   {
     this->GradientOpacityTable->Activate();
   }
+  if (this->Mask)
+  {
+    this->Mask->Activate();
+  }
   if (this->Occupancy)
   {
     this->Occupancy->Activate();
@@ -178,6 +200,10 @@ void ShadowContext::DeactivateVolumeTextures() const
   if (this->GradientOpacityTable)
   {
     this->GradientOpacityTable->Deactivate();
+  }
+  if (this->Mask)
+  {
+    this->Mask->Deactivate();
   }
   if (this->Occupancy)
   {

@@ -107,18 +107,22 @@ struct ShadowContext
   vtkTextureObject* GradientOpacityTable = nullptr;
   glm::dvec2 GradientOpacityMap{ 1.0, 0.0 }; // magnitude -> table coordinate
   GradientOpacity Gradient;
+  /** A binary mask (Features/Mask.glsl; nearest filtering), drawn and cast; null: none. */
+  vtkTextureObject* Mask = nullptr;
+  glm::dvec2 MaskToData{ 1.0, 0.0 }; // texel -> the mask's data value
+  int MaskVersion = 0;               // increments with every mask upload
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
 
   /**
-   * The content of Transfer (opacity, and colours if asked), IsoValues and the gradient
-   * opacity, to compare builds by.
+   * The content of Transfer (opacity, and colours if asked), IsoValues, the gradient opacity
+   * and the mask's version, to compare builds by.
    */
   std::vector<double> TransferKey(bool colors) const;
 
   /**
    * The features that read the volume as this context holds it: VolumeSampling, Isosurface
-   * (under isosurface blending), GradientOpacity (if it changes anything), EmptySpace (if
+   * (under isosurface blending), GradientOpacity (if it changes anything), Mask, EmptySpace (if
    * blocks are empty), Bound (runtime) and TriangleHierarchy (if bounded), and Surfaces when
    * `surfaces` and surfaces cast shadows.
    */
@@ -130,6 +134,7 @@ struct ShadowContext
   void SetSamplingUniforms(UniformSink& sink) const;
   void SetEmptySpaceUniforms(UniformSink& sink) const;
   void SetGradientOpacityUniforms(UniformSink& sink) const;
+  void SetMaskUniforms(UniformSink& sink) const;
   void SetBoundUniforms(UniformSink& sink) const;
   void SetSurfacesUniforms(UniformSink& sink) const;
   /** Binds (releases) the textures those features read. */

@@ -3,6 +3,8 @@
 #include "CoreAdapter.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
 #include "vtkVolumeProperty.h"
 
 #include <sstream>
@@ -70,9 +72,40 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
     said.push_back("2D transfer functions (TF_2D) are not supported: the 1D functions are used");
   }
   // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
-  if (mapper->GetMaskInput())
+  if (vtkImageData* mask = mapper->GetMaskInput())
   {
-    said.push_back("masks (SetMaskInput) are not supported: the whole volume is drawn");
+    vtkImageData* volume = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
+    if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+    {
+      said.push_back(std::string("masks apply to composite blending only: ") + BlendModeName(blend) +
+        " is drawn without the mask");
+    }
+    else if (!adapter::UsableMask(mapper, volume))
+    {
+      int maskDims[3] = { 0, 0, 0 }, dims[3] = { 0, 0, 0 };
+      mask->GetDimensions(maskDims);
+      if (volume)
+      {
+        volume->GetDimensions(dims);
+      }
+      std::ostringstream text;
+      if (!mask->GetPointData()->GetScalars())
+      {
+        text << "the mask has no point scalars: the volume is drawn without it";
+      }
+      else
+      {
+        text << "the mask's dimensions " << maskDims[0] << "x" << maskDims[1] << "x" << maskDims[2]
+             << " differ from the volume's " << dims[0] << "x" << dims[1] << "x" << dims[2]
+             << ": the volume is drawn without it";
+      }
+      said.push_back(text.str());
+    }
+    else if (mapper->GetMaskType() == vtkGPUVolumeRayCastMapper::LabelMapMaskType)
+    {
+      said.push_back("label-map masks (per-label colour and opacity) are not supported: the mask is drawn "
+                     "as a binary one (labels above 0 kept)");
+    }
   }
   if (mapper->GetImageSampleDistance() != 1.0f)
   {

@@ -104,6 +104,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
         f.Context.SetGradientOpacityUniforms(sink);
       },
       [](const Frame& f) { f.Context.GradientOpacityTable->Deactivate(); } },
+    { "Mask", [](const Frame& f) { return f.Context.Mask != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.Mask->Activate();
+        f.Context.SetMaskUniforms(sink);
+      },
+      [](const Frame& f) { f.Context.Mask->Deactivate(); } },
     { "EmptySpace", [](const Frame& f) { return f.Context.Occupancy != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Context.Occupancy->Activate();

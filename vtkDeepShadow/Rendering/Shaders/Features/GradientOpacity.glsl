@@ -8,8 +8,6 @@ uniform sampler2D u_gradientOpacity;   // the function's table over [0, u_gradie
 uniform vec2 u_gradientOpacityMap;     // table coordinate = magnitude * .x + .y
 uniform vec3 u_gradientOpacityScale;   // per index axis: mean spacing / spacing, in data units
 uniform float u_gradientOpacityMax;
-// What the light's sample at hand multiplies its opacity by (feelerSample reads it).
-float g_opacityScale = 1.0;
 
 float gradientOpacity(vec3 index)
 {
@@ -26,8 +24,6 @@ float gradientOpacity(vec3 index)
       transfer.a *= gradientOpacity(index);
     }
 //@FeelerSample
-    g_opacityScale = gradientOpacity(sampleIndex);
+    g_opacityScale *= gradientOpacity(sampleIndex);
 //@TexelSample
-    g_opacityScale = gradientOpacity(sampleIndex);
-//@FeelerLookup
-  rgba.a *= g_opacityScale;
+    g_opacityScale *= gradientOpacity(sampleIndex);

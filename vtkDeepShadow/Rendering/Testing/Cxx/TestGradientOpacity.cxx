@@ -6,9 +6,10 @@
 //    within a tolerance calibrated on VTK against itself (0.8x and 1.25x its sample distance,
 //    jittered): 1.5 times that, at least RMSE 0.007 and 1% of pixels beyond 8/255. Ours
 //    without the gradient opacity must fail it; the GPU picture must match its CPU twin.
-// 2. The shadow scene (a dense ball over a plate) with a gradient opacity that clears the
-//    flat insides and leaves a faint trace of the rims: every technique's picture matches its
-//    CPU twin, and the ground mesh in the ball's shadow gets more light than without it.
+// 2. The shadow scene (a dense ball over a plate, a ground mesh below) with a gradient
+//    opacity that clears the flat insides and leaves a faint trace of the rims: the ground's
+//    darkest point (in the plate's shadow) gets more light than without it; every technique's
+//    picture matches its CPU twin with the insides cleared and the rims kept.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
@@ -144,7 +145,7 @@ int TestGradientOpacity(int, char*[])
   const deepshadow::Image cleared = Grab(scene.Window);
   ok = Check("a gradient opacity set: the deep shadow map rebuilt", dsm->GetBuildCount() == builds + 1) && ok;
   ok = Check("composed with GradientOpacity", deepshadow::testing::HasFeature(scene.Mapper, "GradientOpacity")) && ok;
-  // The ground's darkest pixel without it (the ball's shadow) gets more light with it.
+  // The ground's darkest pixel without it (under the plate) gets more light with it.
   int darkest = -1;
   double darkestTerm = 2.0;
   for (int y = 0; y < plain.Height; ++y)

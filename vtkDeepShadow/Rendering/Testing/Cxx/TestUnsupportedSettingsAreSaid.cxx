@@ -100,9 +100,19 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
       } },
     { "2D transfer function", "2D transfer functions",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
-    { "mask", "masks (SetMaskInput)",
+    { "label-map mask", "label-map masks",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetMaskTypeToLabelMap();
+      } },
+    { "mask of other dimensions", "the mask's dimensions 40x40x40 differ from the volume's 48x48x48",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR, 40));
+      } },
+    { "mask under MIP", "masks apply to composite blending only",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetBlendModeToMaximumIntensity();
       } },
     { "image sample distance", "image sample distance 2",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetImageSampleDistance(2.0f); } },
