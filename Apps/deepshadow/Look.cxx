@@ -2,12 +2,16 @@
 
 #include "SceneSetup.h"
 
+#include "Core/Isosurface.h"
+
 #include "vtkDeepShadowVolumePresets.h"
 
 #include "vtkCamera.h"
+#include "vtkContourValues.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -19,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 namespace deepshadow
 {
@@ -168,6 +173,27 @@ bool ParseLookOption(Options& o, const std::string& key, const std::function<std
     o.Shade = value == "on";
     o.ShadeGiven = true;
   }
+  else if (key == "--isosurface")
+  {
+    o.IsoValues.clear();
+    std::stringstream values(next());
+    for (std::string part; std::getline(values, part, ',');)
+    {
+      o.IsoValues.push_back(ParseNumber(key, part));
+    }
+    if (o.IsoValues.size() > static_cast<size_t>(MaxIsoValues))
+    {
+      throw UsageError("--isosurface takes at most " + std::to_string(MaxIsoValues) + " contour values");
+    }
+  }
+  else if (key == "--gradient-opacity")
+  {
+    o.GradientOpacityFull = ParseNumber(key, next());
+    if (!(o.GradientOpacityFull > 0.0))
+    {
+      throw UsageError("--gradient-opacity must be positive");
+    }
+  }
   else if (key == "--ambient" || key == "--diffuse" || key == "--specular")
   {
     const double value = ParseNumber(key, next());
@@ -239,6 +265,10 @@ std::string LookUsage()
   --opacity-unit-distance D  world distance the opacities are for (default: the preset's,
                           or the smallest voxel edge)
   --shade on|off          gradient shading (default on; a preset may turn it off)
+  --isosurface V[,V...]   isosurface blending at these contour values (data units, at most
+                          16): the surfaces are drawn, lit, and cast the shadows
+  --gradient-opacity G    opacity times 0 below G/10 of gradient magnitude, rising to 1 at G
+                          (data units per mean voxel edge, as VTK's gradient opacity)
   --ambient A, --diffuse D, --specular S   lighting coefficients in [0, 1]
   --view )" + ViewNames() + R"(
                           look at the volume from that patient side (world axes as DICOM's:
@@ -285,6 +315,18 @@ void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProper
   if (options.Specular >= 0.0)
   {
     property->SetSpecular(options.Specular);
+  }
+  for (size_t i = 0; i < options.IsoValues.size(); ++i)
+  {
+    property->GetIsoSurfaceValues()->SetValue(static_cast<int>(i), options.IsoValues[i]);
+  }
+  if (options.GradientOpacityFull > 0.0)
+  {
+    vtkNew<vtkPiecewiseFunction> gradient;
+    gradient->AddPoint(0.0, 0.0);
+    gradient->AddPoint(0.1 * options.GradientOpacityFull, 0.0);
+    gradient->AddPoint(options.GradientOpacityFull, 1.0);
+    property->SetGradientOpacity(gradient);
   }
 }
 

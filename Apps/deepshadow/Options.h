@@ -70,6 +70,8 @@ struct Options
   std::vector<LightSpec> Lights; // empty: the scene's key light, or the headlight for files
   bool Shade = true;
   bool ShadeGiven = false;       // --shade/--no-shading given: overrides a preset's
+  std::vector<double> IsoValues; // --isosurface: isosurface blending at these contour values
+  double GradientOpacityFull = 0.0; // --gradient-opacity: magnitude of full opacity; 0: none
   std::string TransferFunction;  // --tf: a preset name or a ParaView JSON preset file
   double Window = 0.0;           // --window/--level: the preset's interval mapped onto
   double Level = 0.0;            //   [L - W/2, L + W/2]; Window 0: the preset's own

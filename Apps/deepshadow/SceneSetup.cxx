@@ -384,6 +384,10 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Mapper->SetJitterSeed(options.JitterSeed);
   setup.Mapper->SetEmptySpaceSkipping(options.EmptySpaceSkipping);
   setup.Mapper->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
+  if (!options.IsoValues.empty())
+  {
+    setup.Mapper->SetBlendModeToIsoSurface();
+  }
   setup.Technique = MakeTechnique(options);
   setup.Mapper->SetShadowTechnique(setup.Technique);
   if (options.CsgMesh && csgMesh)

@@ -98,6 +98,18 @@ expect 2 "unknown preset" "neither a transfer-function preset" -- "$tool" render
 echo '[{"RGBPoints": [0, 0, 0]}]' > bad-preset.json
 expect 2 "bad preset file" "whole nodes of 4" -- "$tool" render --tf bad-preset.json --out x.png
 expect 2 "window without level" -- "$tool" render --tf CT-Bone --window 100 --out x.png
+# Isosurfaces and gradient opacity reach the mapper (its composed features say so).
+expect 0 "head as an isosurface with a deep shadow map" -- "$tool" render --scene head --scale 0.25 \
+  --isosurface 700 --technique dsm --size 64x64 --frames 1 --out iso.png --json iso.json
+not_flat iso.png "head as an isosurface"
+grep -q '"Isosurface"' iso.json || fail "--isosurface did not compose the Isosurface feature"
+expect 0 "head with gradient opacity" -- "$tool" render --scene head --scale 0.25 \
+  --gradient-opacity 200 --size 64x64 --frames 1 --out gradient.png --json gradient.json
+not_flat gradient.png "head with gradient opacity"
+grep -q '"GradientOpacity"' gradient.json || fail "--gradient-opacity did not compose GradientOpacity"
+expect 2 "bad contour value" "--isosurface expects a number" -- "$tool" render --isosurface 1,x --out x.png
+expect 2 "17 contour values" "at most 16" -- "$tool" render --isosurface 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17 --out x.png
+expect 2 "non-positive gradient opacity" "must be positive" -- "$tool" render --gradient-opacity 0 --out x.png
 expect 2 "window without a preset" -- "$tool" render --window 100 --level 0 --out x.png
 expect 2 "bad shade" -- "$tool" render --shade maybe --out x.png
 expect 2 "ambient out of range" -- "$tool" render --ambient 2 --out x.png
