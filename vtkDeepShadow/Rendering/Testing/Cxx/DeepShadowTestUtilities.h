@@ -9,6 +9,8 @@
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowTechnique.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
@@ -16,6 +18,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
@@ -421,6 +424,57 @@ inline void ApplyComparisonView(vtkRenderer* renderer)
   renderer->ResetCamera();
 }
 
+/** Our mapper and VTK's, one of them drawn in a comparison (VTK's auto-adjustment off). */
+struct ComparisonMappers
+{
+  vtkNew<vtkDeepShadowVolumeMapper> Ours;
+  vtkNew<vtkGPUVolumeRayCastMapper> Theirs;
+
+  /** VTK's (`vtks`) or ours, at sample distance `step`, VTK's jittered if asked. */
+  vtkGPUVolumeRayCastMapper* Pick(bool vtks, float step, bool jitter = false)
+  {
+    this->Theirs->SetAutoAdjustSampleDistances(0);
+    this->Theirs->SetUseJittering(jitter);
+    vtkGPUVolumeRayCastMapper* mapper = vtks ? static_cast<vtkGPUVolumeRayCastMapper*>(this->Theirs) : this->Ours;
+    mapper->SetSampleDistance(step);
+    return mapper;
+  }
+};
+
+/** What a comparison draws: the GPU picture, and for our mapper its CPU twin. */
+struct ComparisonPicture
+{
+  Image Picture;
+  Image Twin; // empty unless asked for
+};
+
+/**
+ * Draws `data` with `mapper` (ours or VTK's) and `property` in a fresh renderer of `window`
+ * (the comparison view, background `background`); with `twin`, the CPU twin of that renderer.
+ */
+inline ComparisonPicture DrawForComparison(vtkRenderWindow* window, vtkVolumeMapper* mapper, vtkImageData* data,
+  vtkVolumeProperty* property, const glm::dvec3& background, bool twin)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(background.x, background.y, background.z);
+  window->GetRenderers()->RemoveAllItems();
+  window->AddRenderer(renderer);
+  mapper->SetInputData(data);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  ApplyComparisonView(renderer);
+  window->Render();
+  ComparisonPicture drawn;
+  drawn.Picture = Grab(window);
+  if (twin)
+  {
+    drawn.Twin = Reference(renderer, true);
+  }
+  return drawn;
+}
+
 /** Bounds of a comparison with VTK's mapper, calibrated on VTK against itself. */
 struct VTKTolerance
 {
@@ -548,6 +602,24 @@ struct ShadowScene
     mapper->SetInputData(plane->GetOutput());
     actor->SetMapper(mapper);
     this->Renderer->AddActor(actor);
+  }
+
+  /**
+   * The usual eight techniques against their CPU twins, named "`what`, NAME vs CPU twin":
+   * translucent ones within RMSE 2/255 (at most 1 % of pixels beyond 12/255), binary ones
+   * (opaque rays, shadow maps) within 4/255 (3 % beyond 24/255).
+   */
+  bool AllMatchTwins(const std::string& what)
+  {
+    bool ok = true;
+    for (const char* name : { "rays", "dsm", "dsm-color", "dsm3", "cssm", "dsm-cached", "rays-opaque", "shadowmap" })
+    {
+      const bool binary = std::string(name) == "rays-opaque" || std::string(name) == "shadowmap";
+      Image gpu;
+      ok = this->MatchesTwin((what + ", " + name + " vs CPU twin").c_str(), vtkDeepShadowTechniqueFactory::New(name),
+             (binary ? 4.0 : 2.0) / 255.0, (binary ? 24.0 : 12.0) / 255.0, binary ? 0.03 : 0.01, gpu) && ok;
+    }
+    return ok;
   }
 
   /** Mean colour of the floor in the ball's shadow (left of centre, lower quarter). */

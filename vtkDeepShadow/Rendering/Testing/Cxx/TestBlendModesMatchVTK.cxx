@@ -24,22 +24,14 @@ using deepshadow::testing::WithinTolerance;
 
 namespace
 {
-struct Drawn
+struct Drawn : deepshadow::testing::ComparisonPicture
 {
-  deepshadow::Image Picture;
-  deepshadow::Image Twin; // the CPU twin of ours (empty for VTK's)
   std::vector<std::string> Warnings;
 };
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, int blend, bool vtks, bool shadowed = false,
   float step = 0.5f)
 {
-  vtkNew<vtkRenderer> renderer;
-  // Black: average and additive draw the whole box opaque (black where nothing counts), and
-  // which pixels its silhouette covers is the proxy geometry's rasterization, not the blend.
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
   vtkNew<vtkDeepShadowVolumeMapper> ours;
   vtkNew<deepshadow::testing::MessageCapture> capture;
   capture->Watch(ours);
@@ -54,9 +46,6 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, int blend, bool vtks, bo
     ours->SetShadowTechnique(dsm);
   }
   mapper->SetBlendMode(blend);
-  mapper->SetInputData(data);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
   // The comparison look over this data's range: the same colours and opacities per
   // normalized scalar, whatever the range.
   double range[2];
@@ -83,16 +72,11 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, int blend, bool vtks, bo
   }
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  deepshadow::testing::ApplyComparisonView(renderer);
-  window->Render();
+  // Black: average and additive draw the whole box opaque (black where nothing counts), and
+  // which pixels its silhouette covers is the proxy geometry's rasterization, not the blend.
   Drawn drawn;
-  drawn.Picture = Grab(window);
-  if (!vtks)
-  {
-    drawn.Twin = deepshadow::testing::Reference(renderer, true);
-  }
+  static_cast<deepshadow::testing::ComparisonPicture&>(drawn) =
+    deepshadow::testing::DrawForComparison(window, mapper, data, property, { 0.0, 0.0, 0.0 }, !vtks);
   drawn.Warnings = capture->Warnings;
   if (!ours->GetLastError().empty())
   {

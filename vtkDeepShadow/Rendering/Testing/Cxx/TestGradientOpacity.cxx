@@ -13,8 +13,6 @@
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
-#include "vtkDeepShadowTechnique.h"
-#include "vtkDeepShadowTechniqueFactory.h"
 
 #include "vtkActor.h"
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -37,27 +35,13 @@ vtkSmartPointer<vtkPiecewiseFunction> ClearFlat(double full)
   return gradient;
 }
 
-struct Drawn
-{
-  deepshadow::Image Picture;
-  deepshadow::Image Twin; // the CPU twin of ours (empty for VTK's)
-};
+using Drawn = deepshadow::testing::ComparisonPicture;
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, bool gradientOpacity, float step = 0.5f,
   bool jitter = false)
 {
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.15);
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> ours;
-  vtkNew<vtkGPUVolumeRayCastMapper> theirs;
-  theirs->SetAutoAdjustSampleDistances(0);
-  theirs->SetUseJittering(jitter);
-  vtkVolumeMapper* mapper = vtks ? static_cast<vtkVolumeMapper*>(theirs) : static_cast<vtkVolumeMapper*>(ours);
-  ours->SetSampleDistance(step);
-  theirs->SetSampleDistance(step);
-  mapper->SetInputData(data);
+  deepshadow::testing::ComparisonMappers mappers;
+  vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
   double range[2];
   data->GetScalarRange(range);
   const double span = (range[1] - range[0]) / 255.0;
@@ -77,19 +61,7 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, bool gradient
     // Magnitudes are in data units: the same look per normalized scalar on either range.
     property->SetGradientOpacity(ClearFlat(60.0 * span));
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  deepshadow::testing::ApplyComparisonView(renderer);
-  window->Render();
-  Drawn drawn;
-  drawn.Picture = Grab(window);
-  if (!vtks)
-  {
-    drawn.Twin = deepshadow::testing::Reference(renderer, true);
-  }
-  return drawn;
+  return deepshadow::testing::DrawForComparison(window, mapper, data, property, { 0.1, 0.1, 0.15 }, !vtks);
 }
 
 bool MatchesVTK(vtkRenderWindow* window, vtkImageData* data, const std::string& what)
@@ -172,17 +144,6 @@ int TestGradientOpacity(int, char*[])
   // The twins compared on a picture with something in it: flat insides cleared, rims kept.
   groundMapper->SetOutputModeToColor();
   scene.Property->SetGradientOpacity(ClearFlat(40.0));
-  for (const char* name : { "rays", "dsm", "dsm-color", "dsm3", "cssm", "dsm-cached" })
-  {
-    deepshadow::Image gpu;
-    ok = scene.MatchesTwin((std::string("gradient opacity, ") + name + " vs CPU twin").c_str(),
-           vtkDeepShadowTechniqueFactory::New(name), 2.0 / 255.0, 12.0 / 255.0, 0.01, gpu) && ok;
-  }
-  for (const char* name : { "rays-opaque", "shadowmap" })
-  {
-    deepshadow::Image gpu;
-    ok = scene.MatchesTwin((std::string("gradient opacity, ") + name + " vs CPU twin").c_str(),
-           vtkDeepShadowTechniqueFactory::New(name), 4.0 / 255.0, 24.0 / 255.0, 0.03, gpu) && ok;
-  }
+  ok = scene.AllMatchTwins("gradient opacity") && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -20,28 +20,14 @@ using deepshadow::testing::WithinTolerance;
 
 namespace
 {
-struct Drawn
-{
-  deepshadow::Image Picture;
-  deepshadow::Image Twin; // the CPU twin of ours (empty for VTK's)
-};
+using Drawn = deepshadow::testing::ComparisonPicture;
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, int blend, float step = 0.5f,
   bool jitter = false)
 {
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.15);
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> ours;
-  vtkNew<vtkGPUVolumeRayCastMapper> theirs;
-  theirs->SetAutoAdjustSampleDistances(0);
-  theirs->SetUseJittering(jitter);
-  vtkVolumeMapper* mapper = vtks ? static_cast<vtkVolumeMapper*>(theirs) : static_cast<vtkVolumeMapper*>(ours);
-  ours->SetSampleDistance(step);
-  theirs->SetSampleDistance(step);
+  deepshadow::testing::ComparisonMappers mappers;
+  vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
   mapper->SetBlendMode(blend);
-  mapper->SetInputData(data);
   // The look over this data's range: the same colours and opacities per normalized scalar.
   double range[2];
   data->GetScalarRange(range);
@@ -61,23 +47,7 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, int blend, fl
   // Given unsorted: both mappers sort them.
   property->GetIsoSurfaceValues()->SetValue(0, range[0] + 150 * span);
   property->GetIsoSurfaceValues()->SetValue(1, range[0] + 50 * span);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  deepshadow::testing::ApplyComparisonView(renderer);
-  window->Render();
-  Drawn drawn;
-  drawn.Picture = Grab(window);
-  if (!vtks)
-  {
-    drawn.Twin = deepshadow::testing::Reference(renderer, true);
-    if (!ours->GetLastError().empty())
-    {
-      std::printf("ours: %s\n", ours->GetLastError().c_str());
-    }
-  }
-  return drawn;
+  return deepshadow::testing::DrawForComparison(window, mapper, data, property, { 0.1, 0.1, 0.15 }, !vtks);
 }
 }
 

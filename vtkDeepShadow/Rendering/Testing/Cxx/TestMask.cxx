@@ -10,8 +10,6 @@
 //    clears casts nothing, and drops nowhere; every technique's picture matches its CPU twin
 //    with a mask that keeps half of the ball.
 #include "DeepShadowTestUtilities.h"
-#include "vtkDeepShadowTechnique.h"
-#include "vtkDeepShadowTechniqueFactory.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
 
@@ -46,41 +44,17 @@ vtkSmartPointer<vtkImageData> MakeMask(vtkImageData* image, const std::function<
   return mask;
 }
 
-struct Drawn
-{
-  deepshadow::Image Picture;
-  deepshadow::Image Twin; // the CPU twin of ours (empty for VTK's)
-};
+using Drawn = deepshadow::testing::ComparisonPicture;
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, vtkImageData* mask, bool vtks, float step = 0.5f,
   bool jitter = false)
 {
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.15);
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepShadowVolumeMapper> ours;
-  vtkNew<vtkGPUVolumeRayCastMapper> theirs;
-  theirs->SetAutoAdjustSampleDistances(0);
-  theirs->SetUseJittering(jitter);
-  vtkGPUVolumeRayCastMapper* mapper = vtks ? static_cast<vtkGPUVolumeRayCastMapper*>(theirs) : ours;
-  mapper->SetSampleDistance(step);
-  mapper->SetInputData(data);
+  deepshadow::testing::ComparisonMappers mappers;
+  vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
   mapper->SetMaskInput(mask);
   mapper->SetMaskTypeToBinary();
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(deepshadow::testing::MakeComparisonProperty(true));
-  renderer->AddVolume(volume);
-  deepshadow::testing::ApplyComparisonView(renderer);
-  window->Render();
-  Drawn drawn;
-  drawn.Picture = Grab(window);
-  if (!vtks)
-  {
-    drawn.Twin = deepshadow::testing::Reference(renderer, true);
-  }
-  return drawn;
+  return deepshadow::testing::DrawForComparison(
+    window, mapper, data, deepshadow::testing::MakeComparisonProperty(true), { 0.1, 0.1, 0.15 }, !vtks);
 }
 }
 
@@ -156,17 +130,6 @@ int TestMask(int, char*[])
   // The twins compared with half of the ball kept (x < -0.1).
   scene.Mapper->SetMaskInput(
     MakeMask(scene.Data, [&](double x, double y, double z) { return !ball(x, y, z) || x < -0.1; }));
-  for (const char* name : { "rays", "dsm", "dsm-color", "dsm3", "cssm", "dsm-cached" })
-  {
-    deepshadow::Image gpu;
-    ok = scene.MatchesTwin((std::string("mask, ") + name + " vs CPU twin").c_str(),
-           vtkDeepShadowTechniqueFactory::New(name), 2.0 / 255.0, 12.0 / 255.0, 0.01, gpu) && ok;
-  }
-  for (const char* name : { "rays-opaque", "shadowmap" })
-  {
-    deepshadow::Image gpu;
-    ok = scene.MatchesTwin((std::string("mask, ") + name + " vs CPU twin").c_str(),
-           vtkDeepShadowTechniqueFactory::New(name), 4.0 / 255.0, 24.0 / 255.0, 0.03, gpu) && ok;
-  }
+  ok = scene.AllMatchTwins("mask") && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
