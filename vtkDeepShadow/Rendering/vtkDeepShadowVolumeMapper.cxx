@@ -1,34 +1,25 @@
 #include "vtkDeepShadowVolumeMapper.h"
+#include "vtkDeepShadowVolumeMapperInternals.h"
 
 #include "CoreAdapter.h"
-#include "GL/FramebufferCopy.h"
 #include "PassFrame.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
-#include "Volume/BoxDrawer.h"
-#include "Volume/CutRegion.h"
-#include "Volume/OccupancyTexture.h"
 #include "Volume/RayCastFrame.h"
 #include "Volume/ShadowContext.h"
-#include "Volume/TransferTableTexture.h"
-#include "Volume/TriangleHierarchy.h"
 #include "Volume/UnsupportedSettings.h"
 #include "Volume/VolumeFeatures.h"
-#include "Volume/VolumeTexture.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 #include "vtkDeepShadowVolumeFS.h"
 #include "vtkDeepShadowVolumeVS.h"
 
-#include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -39,7 +30,6 @@
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -122,53 +112,6 @@ bool HasOpaqueGeometry(vtkRenderer* renderer)
   return false;
 }
 }
-
-class vtkDeepShadowVolumeMapper::Internals
-{
-public:
-  // The GPU resources, each with its own update and release (Volume/).
-  deepshadow::VolumeTexture Volume;
-  deepshadow::TransferTableTexture Transfer;
-  deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
-  deepshadow::VolumeTexture Mask;                   // a binary mask (Core/Mask.h)
-  int MaskUploads = 0;
-  deepshadow::OccupancyTexture Occupancy;
-  deepshadow::BoundHierarchy Bound;
-  // What clipping planes and cropping keep, as bound leaves (in the data's coordinates).
-  deepshadow::CutRegion Cut;
-  deepshadow::SurfaceHierarchy SurfacesGPU;
-  // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
-  deepshadow::FramebufferCopy Opaque;
-  deepshadow::BoxDrawer Box;
-  double EffectiveStep = 0.0; // world sample distance of the last frame
-
-  // The polyhedral bounds as set (feature Bound).
-  std::vector<vtkSmartPointer<vtkPolyData>> Bounds;
-  // Surfaces that cast shadows onto the volume, in world space (uploaded by SurfacesGPU).
-  std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
-
-  std::string LastSource;
-
-  // vtkDeepShadowPass prepared this frame (PrepareShadows): Render() keeps the passes it ran.
-  bool PreparedByPass = false;
-
-  // The GPU resources and what was made from them; what was set (bounds, surfaces, the pass's
-  // state, the composed source) stays.
-  void Release(vtkWindow* window)
-  {
-    this->Volume.Release(window);
-    this->Transfer.Release(window);
-    this->GradientOpacity.Release(window);
-    this->Mask.Release(window);
-    this->Occupancy.Release(window);
-    this->Bound.Release(window);
-    this->SurfacesGPU.Release(window);
-    this->Opaque.Release(window);
-    this->Box.Release();
-    this->EffectiveStep = 0.0;
-    this->PreparedByPass = false;
-  }
-};
 
 vtkDeepShadowVolumeMapper::vtkDeepShadowVolumeMapper()
   : TerminationOpacity(deepshadow::DefaultTerminationOpacity)
@@ -338,65 +281,6 @@ void vtkDeepShadowVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 
-bool vtkDeepShadowVolumeMapper::UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input)
-{
-  Internals& impl = *this->Impl;
-  if (impl.Volume.NeedsUpdate(input, this->ReplaceNonFiniteScalars))
-  {
-    // Everything on the GPU was made from the old data: rebuilt below as needed.
-    impl.Release(window);
-    std::string warning;
-    if (impl.Volume.Update(window, input, this->ReplaceNonFiniteScalars, warning))
-    {
-      if (!warning.empty())
-      {
-        vtkWarningMacro(<< warning);
-      }
-      ++this->VolumeUploads;
-      this->LastPasses.emplace_back("volume-upload");
-    }
-  }
-  if (!impl.Volume.GetError().empty())
-  {
-    this->ReportError(impl.Volume.GetError());
-    return false;
-  }
-  return true;
-}
-
-void vtkDeepShadowVolumeMapper::UpdateTables(
-  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step, double unitScale)
-{
-  Internals& impl = *this->Impl;
-  // What the table and the block map depend on: the functions themselves, not the property.
-  vtkObject* colorFunction = property->GetColorChannels(0) == 1
-    ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
-    : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
-  const vtkMTimeType opacityTime = property->GetScalarOpacity(0)->GetMTime();
-
-  // Transfer table: colour and step-corrected opacity (deepshadow::TransferTable).
-  std::vector<double> transferKey{ static_cast<double>(colorFunction->GetMTime()),
-    static_cast<double>(opacityTime), property->GetScalarOpacityUnitDistance(0) * unitScale,
-    static_cast<double>(this->VolumeUploads), step, static_cast<double>(this->TransferTableSize) };
-  if (impl.Transfer.NeedsUpdate(transferKey))
-  {
-    impl.Transfer.Update(window, adapter::MakeTransferFunction(property, unitScale), impl.Volume.GetRange(),
-      this->TransferTableSize, step, std::move(transferKey));
-    ++this->TransferTableBuilds;
-    this->LastPasses.emplace_back("transfer-table");
-  }
-
-  // Empty-space block map: depends on the data and the opacity function only.
-  if (this->EmptySpaceSkipping && impl.Occupancy.NeedsUpdate(opacityTime, this->VolumeUploads))
-  {
-    impl.Occupancy.Update(window, impl.Volume.GetBlocks(), adapter::MakeTransferFunction(property).Opacity,
-      opacityTime, this->VolumeUploads);
-    ++this->OccupancyBuilds;
-    this->LastPasses.emplace_back("occupancy");
-  }
-  this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.Occupancy.GetEmptyFraction() : 0.0;
-}
-
 void vtkDeepShadowVolumeMapper::GetDrawnRegion(
   vtkVolume* volume, std::vector<vtkPolyData*>& meshes, std::string& expression)
 {
@@ -412,118 +296,6 @@ void vtkDeepShadowVolumeMapper::GetDrawnRegion(
   meshes.insert(meshes.end(), cut.begin(), cut.end());
   expression = deepshadow::CutRegion::Combine(
     static_cast<int>(impl.Bounds.size()), this->BoundExpression, static_cast<int>(cut.size()));
-}
-
-bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* window,
-  vtkVolumeProperty* property, vtkImageData* input, deepshadow::RayCastFrame& frame)
-{
-  Internals& impl = *this->Impl;
-  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
-  // measures (a table of 1024; the magnitude's range depends on the data's).
-  const std::optional<deepshadow::GradientOpacity> gradient =
-    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
-  if (gradient)
-  {
-    std::vector<double> key{ gradient->MaxMagnitude };
-    for (const auto& [x, y] : gradient->Function.GetNodes())
-    {
-      key.insert(key.end(), { x, y });
-    }
-    if (impl.GradientOpacity.NeedsUpdate(key))
-    {
-      deepshadow::TransferFunction table; // the function as an opacity for a unit step
-      table.Opacity = gradient->Function;
-      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
-      this->LastPasses.emplace_back("gradient-opacity-table");
-    }
-    frame.Context.Gradient = *gradient;
-    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
-    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
-  }
-  // The binary mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
-  if (vtkImageData* mask = adapter::UsableMask(this, input))
-  {
-    if (impl.Mask.NeedsUpdate(mask, false))
-    {
-      std::string warning;
-      if (!impl.Mask.Update(window, mask, false, warning))
-      {
-        this->ReportError("the mask: " + impl.Mask.GetError());
-        return false;
-      }
-      impl.Mask.GetTexture()->SetMinificationFilter(vtkTextureObject::Nearest);
-      impl.Mask.GetTexture()->SetMagnificationFilter(vtkTextureObject::Nearest);
-      ++impl.MaskUploads;
-      this->LastPasses.emplace_back("mask-upload");
-    }
-    // texel -> the shaders' scalar -> the mask's data value.
-    const glm::dvec2 toShader = impl.Mask.GetScalarMap();
-    const glm::dvec2 shader = impl.Mask.GetShaderScalar();
-    frame.Context.Mask = impl.Mask.GetTexture();
-    frame.Context.MaskToData = glm::dvec2(toShader.x / shader.x, (toShader.y - shader.y) / shader.x);
-    frame.Context.MaskVersion = impl.MaskUploads;
-  }
-  return true;
-}
-
-bool vtkDeepShadowVolumeMapper::UpdateBound(
-  vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume)
-{
-  Internals& impl = *this->Impl;
-  std::vector<vtkPolyData*> meshes;
-  std::string expression;
-  this->GetDrawnRegion(volume, meshes, expression);
-  if (meshes.empty())
-  {
-    impl.Bound.Clear();
-    return true;
-  }
-  // The bound lives in the data's coordinates: it follows the image's placement, not the prop's.
-  const glm::dmat4 dataToIndex = glm::inverse(adapter::IndexToWorld(input, nullptr));
-  std::vector<vtkMTimeType> times;
-  for (vtkPolyData* mesh : meshes)
-  {
-    times.push_back(mesh ? mesh->GetMTime() : 0);
-  }
-  if (impl.Bound.NeedsUpdate(times, expression, dataToIndex) &&
-    impl.Bound.Update(window, meshes, times, expression, dataToIndex))
-  {
-    if (impl.Bound.EnclosesNothing())
-    {
-      vtkWarningMacro("the volume's bound encloses nothing (its meshes are empty): nothing is drawn");
-    }
-    ++this->BoundBuilds;
-    this->LastPasses.emplace_back("bound-upload");
-  }
-  if (!impl.Bound.GetError().empty())
-  {
-    this->ReportError(impl.Bound.GetError());
-    return false;
-  }
-  return true;
-}
-
-bool vtkDeepShadowVolumeMapper::UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex)
-{
-  Internals& impl = *this->Impl;
-  if (!impl.Surfaces || impl.Surfaces->Empty())
-  {
-    impl.SurfacesGPU.Clear();
-    return true;
-  }
-  if (!impl.SurfacesGPU.NeedsUpdate(impl.Surfaces, worldToIndex))
-  {
-    return true;
-  }
-  const std::string limit = impl.SurfacesGPU.Update(window, impl.Surfaces, worldToIndex);
-  if (!limit.empty())
-  {
-    this->ReportError("the surfaces that cast shadows cannot be used: " + limit);
-    return false;
-  }
-  ++this->SurfaceUploads;
-  this->LastPasses.emplace_back("surface-upload");
-  return true;
 }
 
 void vtkDeepShadowVolumeMapper::BeginFrame()
@@ -745,17 +517,6 @@ void vtkDeepShadowVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
     this->LastError.clear();
   }
   ++this->RenderCount;
-}
-
-long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
-{
-  const Internals& impl = *this->Impl;
-  const bool surfaces = impl.Surfaces && !impl.Surfaces->Empty();
-  return impl.Volume.GetBytes() + impl.Transfer.GetBytes() +
-    (impl.GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
-    (impl.Mask.GetTexture() ? impl.Mask.GetBytes() : 0) +
-    (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
-    (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
 }
 
 bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)

@@ -1,0 +1,204 @@
+// vtkDeepShadowVolumeMapper's GPU holders brought up to date for a frame: the volume, the
+// transfer and gradient-opacity tables, the mask, the empty-space blocks, the bound and the
+// casting surfaces, each rebuilt only when what it depends on changed (the counters and
+// GetLastPasses() show it). The frame itself is in vtkDeepShadowVolumeMapper.cxx.
+#include "vtkDeepShadowVolumeMapper.h"
+#include "vtkDeepShadowVolumeMapperInternals.h"
+
+#include "CoreAdapter.h"
+#include "Volume/RayCastFrame.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+namespace adapter = deepshadow::adapter;
+
+bool vtkDeepShadowVolumeMapper::UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input)
+{
+  Internals& impl = *this->Impl;
+  if (impl.Volume.NeedsUpdate(input, this->ReplaceNonFiniteScalars))
+  {
+    // Everything on the GPU was made from the old data: rebuilt below as needed.
+    impl.Release(window);
+    std::string warning;
+    if (impl.Volume.Update(window, input, this->ReplaceNonFiniteScalars, warning))
+    {
+      if (!warning.empty())
+      {
+        vtkWarningMacro(<< warning);
+      }
+      ++this->VolumeUploads;
+      this->LastPasses.emplace_back("volume-upload");
+    }
+  }
+  if (!impl.Volume.GetError().empty())
+  {
+    this->ReportError(impl.Volume.GetError());
+    return false;
+  }
+  return true;
+}
+
+void vtkDeepShadowVolumeMapper::UpdateTables(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step, double unitScale)
+{
+  Internals& impl = *this->Impl;
+  // What the table and the block map depend on: the functions themselves, not the property.
+  vtkObject* colorFunction = property->GetColorChannels(0) == 1
+    ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+    : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
+  const vtkMTimeType opacityTime = property->GetScalarOpacity(0)->GetMTime();
+
+  // Transfer table: colour and step-corrected opacity (deepshadow::TransferTable).
+  std::vector<double> transferKey{ static_cast<double>(colorFunction->GetMTime()),
+    static_cast<double>(opacityTime), property->GetScalarOpacityUnitDistance(0) * unitScale,
+    static_cast<double>(this->VolumeUploads), step, static_cast<double>(this->TransferTableSize) };
+  if (impl.Transfer.NeedsUpdate(transferKey))
+  {
+    impl.Transfer.Update(window, adapter::MakeTransferFunction(property, unitScale), impl.Volume.GetRange(),
+      this->TransferTableSize, step, std::move(transferKey));
+    ++this->TransferTableBuilds;
+    this->LastPasses.emplace_back("transfer-table");
+  }
+
+  // Empty-space block map: depends on the data and the opacity function only.
+  if (this->EmptySpaceSkipping && impl.Occupancy.NeedsUpdate(opacityTime, this->VolumeUploads))
+  {
+    impl.Occupancy.Update(window, impl.Volume.GetBlocks(), adapter::MakeTransferFunction(property).Opacity,
+      opacityTime, this->VolumeUploads);
+    ++this->OccupancyBuilds;
+    this->LastPasses.emplace_back("occupancy");
+  }
+  this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.Occupancy.GetEmptyFraction() : 0.0;
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* window,
+  vtkVolumeProperty* property, vtkImageData* input, deepshadow::RayCastFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
+  // measures (a table of 1024; the magnitude's range depends on the data's).
+  const std::optional<deepshadow::GradientOpacity> gradient =
+    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
+  if (gradient)
+  {
+    std::vector<double> key{ gradient->MaxMagnitude };
+    for (const auto& [x, y] : gradient->Function.GetNodes())
+    {
+      key.insert(key.end(), { x, y });
+    }
+    if (impl.GradientOpacity.NeedsUpdate(key))
+    {
+      deepshadow::TransferFunction table; // the function as an opacity for a unit step
+      table.Opacity = gradient->Function;
+      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
+      this->LastPasses.emplace_back("gradient-opacity-table");
+    }
+    frame.Context.Gradient = *gradient;
+    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
+    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+  }
+  // The binary mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
+  if (vtkImageData* mask = adapter::UsableMask(this, input))
+  {
+    if (impl.Mask.NeedsUpdate(mask, false))
+    {
+      std::string warning;
+      if (!impl.Mask.Update(window, mask, false, warning))
+      {
+        this->ReportError("the mask: " + impl.Mask.GetError());
+        return false;
+      }
+      impl.Mask.GetTexture()->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.Mask.GetTexture()->SetMagnificationFilter(vtkTextureObject::Nearest);
+      ++impl.MaskUploads;
+      this->LastPasses.emplace_back("mask-upload");
+    }
+    // texel -> the shaders' scalar -> the mask's data value.
+    const glm::dvec2 toShader = impl.Mask.GetScalarMap();
+    const glm::dvec2 shader = impl.Mask.GetShaderScalar();
+    frame.Context.Mask = impl.Mask.GetTexture();
+    frame.Context.MaskToData = glm::dvec2(toShader.x / shader.x, (toShader.y - shader.y) / shader.x);
+    frame.Context.MaskVersion = impl.MaskUploads;
+  }
+  return true;
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateBound(
+  vtkOpenGLRenderWindow* window, vtkImageData* input, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  std::vector<vtkPolyData*> meshes;
+  std::string expression;
+  this->GetDrawnRegion(volume, meshes, expression);
+  if (meshes.empty())
+  {
+    impl.Bound.Clear();
+    return true;
+  }
+  // The bound lives in the data's coordinates: it follows the image's placement, not the prop's.
+  const glm::dmat4 dataToIndex = glm::inverse(adapter::IndexToWorld(input, nullptr));
+  std::vector<vtkMTimeType> times;
+  for (vtkPolyData* mesh : meshes)
+  {
+    times.push_back(mesh ? mesh->GetMTime() : 0);
+  }
+  if (impl.Bound.NeedsUpdate(times, expression, dataToIndex) &&
+    impl.Bound.Update(window, meshes, times, expression, dataToIndex))
+  {
+    if (impl.Bound.EnclosesNothing())
+    {
+      vtkWarningMacro("the volume's bound encloses nothing (its meshes are empty): nothing is drawn");
+    }
+    ++this->BoundBuilds;
+    this->LastPasses.emplace_back("bound-upload");
+  }
+  if (!impl.Bound.GetError().empty())
+  {
+    this->ReportError(impl.Bound.GetError());
+    return false;
+  }
+  return true;
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateSurfaces(vtkOpenGLRenderWindow* window, const glm::dmat4& worldToIndex)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Surfaces || impl.Surfaces->Empty())
+  {
+    impl.SurfacesGPU.Clear();
+    return true;
+  }
+  if (!impl.SurfacesGPU.NeedsUpdate(impl.Surfaces, worldToIndex))
+  {
+    return true;
+  }
+  const std::string limit = impl.SurfacesGPU.Update(window, impl.Surfaces, worldToIndex);
+  if (!limit.empty())
+  {
+    this->ReportError("the surfaces that cast shadows cannot be used: " + limit);
+    return false;
+  }
+  ++this->SurfaceUploads;
+  this->LastPasses.emplace_back("surface-upload");
+  return true;
+}
+
+long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
+{
+  const Internals& impl = *this->Impl;
+  const bool surfaces = impl.Surfaces && !impl.Surfaces->Empty();
+  return impl.Volume.GetBytes() + impl.Transfer.GetBytes() +
+    (impl.GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
+    (impl.Mask.GetTexture() ? impl.Mask.GetBytes() : 0) +
+    (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
+    (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
+}

@@ -1,0 +1,72 @@
+// Internal: what vtkDeepShadowVolumeMapper holds on the GPU (each holder in Volume/, with its
+// own update and release) and between frames. Shared by the mapper's two files: the frame
+// (vtkDeepShadowVolumeMapper.cxx) and the holders' updates (vtkDeepShadowVolumeMapperHolders.cxx).
+#ifndef vtkDeepShadowVolumeMapperInternals_h
+#define vtkDeepShadowVolumeMapperInternals_h
+
+#include "vtkDeepShadowVolumeMapper.h"
+
+#include "Core/Geometry/SurfaceSet.h"
+#include "GL/FramebufferCopy.h"
+#include "Volume/BoxDrawer.h"
+#include "Volume/CutRegion.h"
+#include "Volume/OccupancyTexture.h"
+#include "Volume/TransferTableTexture.h"
+#include "Volume/TriangleHierarchy.h"
+#include "Volume/VolumeTexture.h"
+
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkDeepShadowVolumeMapper::Internals
+{
+public:
+  // The GPU resources, each with its own update and release (Volume/).
+  deepshadow::VolumeTexture Volume;
+  deepshadow::TransferTableTexture Transfer;
+  deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
+  deepshadow::VolumeTexture Mask;                   // a binary mask (Core/Mask.h)
+  int MaskUploads = 0;
+  deepshadow::OccupancyTexture Occupancy;
+  deepshadow::BoundHierarchy Bound;
+  // What clipping planes and cropping keep, as bound leaves (in the data's coordinates).
+  deepshadow::CutRegion Cut;
+  deepshadow::SurfaceHierarchy SurfacesGPU;
+  // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
+  deepshadow::FramebufferCopy Opaque;
+  deepshadow::BoxDrawer Box;
+  double EffectiveStep = 0.0; // world sample distance of the last frame
+
+  // The polyhedral bounds as set (feature Bound).
+  std::vector<vtkSmartPointer<vtkPolyData>> Bounds;
+  // Surfaces that cast shadows onto the volume, in world space (uploaded by SurfacesGPU).
+  std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
+
+  std::string LastSource;
+
+  // vtkDeepShadowPass prepared this frame (PrepareShadows): Render() keeps the passes it ran.
+  bool PreparedByPass = false;
+
+  // The GPU resources and what was made from them; what was set (bounds, surfaces, the pass's
+  // state, the composed source) stays.
+  void Release(vtkWindow* window)
+  {
+    this->Volume.Release(window);
+    this->Transfer.Release(window);
+    this->GradientOpacity.Release(window);
+    this->Mask.Release(window);
+    this->Occupancy.Release(window);
+    this->Bound.Release(window);
+    this->SurfacesGPU.Release(window);
+    this->Opaque.Release(window);
+    this->Box.Release();
+    this->EffectiveStep = 0.0;
+    this->PreparedByPass = false;
+  }
+};
+
+#endif
