@@ -15,8 +15,9 @@ uniform vec3 u_lightSpecular[MaxLights];
 uniform vec3 u_lightAttenuation[MaxLights];
 uniform float u_lightConeCos[MaxLights];   // cos(cone angle); < -1 means no cone
 uniform float u_lightExponent[MaxLights];
-uniform int u_lightFromEye;                // a volume's lone headlight, shaded from the eye
-uniform vec3 u_lightEye;                   // (deepshadow::Light::ShadedFromEye); -1: none
+uniform int u_lightFromEye;                // the light shaded from the eye (a volume's lone
+                                           // headlight, deepshadow::Light::ShadedFromEye); -1: none
+uniform vec3 u_lightEye;                   // the eye, for it
 uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
