@@ -359,6 +359,10 @@ Options Options::Parse(int argc, char* argv[])
     {
       o.VolumeFile = next();
     }
+    else if (key == "--mask")
+    {
+      o.MaskFile = next();
+    }
     else if (key == "--bound")
     {
       o.BoundFiles.push_back(next());

@@ -56,6 +56,7 @@ struct Options
   // What to render.
   std::string Scene;      // standard scene name
   std::string VolumeFile; // or a file
+  std::string MaskFile;   // --mask: a binary mask volume of the data's dimensions
   double SceneScale = 1.0;
   std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
   std::string Csg;                     // --csg: how they combine ("" = their union)

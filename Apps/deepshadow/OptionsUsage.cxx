@@ -169,6 +169,9 @@ SCENE (default: --scene box):
   --volume FILE|DIR       a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr, .nii/.nii.gz
                           (placed by its s/q-form), or a directory of one DICOM series
   --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing
+  --mask FILE             a binary mask, a volume file of the data's dimensions: samples whose
+                          nearest mask voxel is 0 or less are clear, drawn and cast (VTK's
+                          SetMaskInput)
   --bound FILE            the volume exists only inside this closed mesh (.vtp, .vtk, .stl,
                           .ply, .obj; in the volume's data coordinates); repeatable: the
                           bounds are named A, B, C... in the order given

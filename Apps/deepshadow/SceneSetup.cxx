@@ -50,6 +50,29 @@ namespace tool
 {
 namespace
 {
+// --mask: read with the same checks as --volume, and of the volume's dimensions.
+vtkSmartPointer<vtkImageData> ReadMask(const std::string& path, vtkImageData* volume)
+{
+  vtkNew<vtkDeepShadowVolumeReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (!reader->GetLastError().empty())
+  {
+    throw UsageError("--mask: " + reader->GetLastError());
+  }
+  vtkSmartPointer<vtkImageData> mask = reader->GetOutput();
+  int maskDims[3], dims[3];
+  mask->GetDimensions(maskDims);
+  volume->GetDimensions(dims);
+  if (!std::equal(dims, dims + 3, maskDims))
+  {
+    throw UsageError("--mask: the mask's dimensions " + std::to_string(maskDims[0]) + "x" +
+      std::to_string(maskDims[1]) + "x" + std::to_string(maskDims[2]) + " differ from the volume's " +
+      std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
+  }
+  return mask;
+}
+
 // The range of the finite samples (NaN and +-Inf, which --replace-nonfinite replaces by the
 // extremes of the finite ones, would make the transfer function span infinity: blank).
 void FiniteRange(vtkImageData* data, double range[2])
@@ -387,6 +410,11 @@ SceneSetup SceneSetup::Build(const Options& options)
   if (!options.IsoValues.empty())
   {
     setup.Mapper->SetBlendModeToIsoSurface();
+  }
+  if (!options.MaskFile.empty())
+  {
+    setup.Mapper->SetMaskInput(ReadMask(options.MaskFile, setup.Data));
+    setup.Mapper->SetMaskTypeToBinary();
   }
   setup.Technique = MakeTechnique(options);
   setup.Mapper->SetShadowTechnique(setup.Technique);

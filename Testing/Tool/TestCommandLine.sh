@@ -107,6 +107,19 @@ expect 0 "head with gradient opacity" -- "$tool" render --scene head --scale 0.2
   --gradient-opacity 200 --size 64x64 --frames 1 --out gradient.png --json gradient.json
 not_flat gradient.png "head with gradient opacity"
 grep -q '"GradientOpacity"' gradient.json || fail "--gradient-opacity did not compose GradientOpacity"
+# A binary mask of the volume's dimensions (the half x < 8 kept), read as --volume is.
+write_mhd masked MET_UCHAR "16 16 16" "python3 -c 'import sys; sys.stdout.buffer.write(bytes(((i * 37) % 200) + 40 for i in range(4096)))'"
+write_mhd halfmask MET_UCHAR "16 16 16" "python3 -c 'import sys; sys.stdout.buffer.write(bytes(1 if i % 16 < 8 else 0 for i in range(4096)))'"
+write_mhd smallmask MET_UCHAR "8 8 8" "head -c 512 /dev/zero"
+expect 0 "a volume with a mask" -- "$tool" render --volume masked.mhd --mask halfmask.mhd \
+  --size 64x64 --frames 1 --out masked.png --json masked.json
+not_flat masked.png "a volume with a mask"
+grep -q '"Mask"' masked.json || fail "--mask did not compose the Mask feature"
+expect 0 "the same volume without it" -- "$tool" render --volume masked.mhd --size 64x64 --frames 1 --out unmasked.png
+rmse_at_least masked.png unmasked.png 0.01 "a volume with and without its mask"
+expect 2 "a mask of other dimensions" "the mask's dimensions 8x8x8 differ from the volume's 16x16x16" -- \
+  "$tool" render --volume masked.mhd --mask smallmask.mhd --out x.png
+expect 2 "a mask that is not there" "--mask:" -- "$tool" render --volume masked.mhd --mask nowhere.mhd --out x.png
 expect 2 "bad contour value" "--isosurface expects a number" -- "$tool" render --isosurface 1,x --out x.png
 expect 2 "17 contour values" "at most 16" -- "$tool" render --isosurface 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17 --out x.png
 expect 2 "non-positive gradient opacity" "must be positive" -- "$tool" render --gradient-opacity 0 --out x.png
