@@ -10,6 +10,7 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 const int MaxLights = 8;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
+//DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::EmptySpace::Dec

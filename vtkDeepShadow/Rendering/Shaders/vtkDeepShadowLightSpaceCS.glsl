@@ -11,6 +11,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
+//DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::EmptySpace::Dec
@@ -93,7 +94,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     //DeepShadow::Surfaces::TexelUpTo
     float scalar = sampleScalar(sampleIndex);
     //DeepShadow::Isosurface::TexelSample
-    g_opacityScale = 1.0;
+    //DeepShadow::OpacityScale::TexelSample
     //DeepShadow::GradientOpacity::TexelSample
     //DeepShadow::Mask::TexelSample
     if (!visitSample(j, t, scalar))

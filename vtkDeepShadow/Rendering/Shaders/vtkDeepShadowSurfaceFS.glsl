@@ -13,6 +13,7 @@ uniform float u_opacity;      // the actor's
 // What the shadow lookup reads: the casting volume and surfaces (features in use only).
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
+//DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::EmptySpace::Dec

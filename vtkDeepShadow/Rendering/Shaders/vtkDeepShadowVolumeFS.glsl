@@ -15,6 +15,7 @@ layout(location = 0) out vec4 fragColor;
 
 //DeepShadow::VolumeSampling::Dec
 //DeepShadow::Isosurface::Dec
+//DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step

@@ -57,6 +57,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   {
     enabled.insert("Mask");
   }
+  if (this->GradientOpacityTable || this->Mask)
+  {
+    enabled.insert("OpacityScale");
+  }
   if (this->Occupancy)
   {
     enabled.insert("EmptySpace");

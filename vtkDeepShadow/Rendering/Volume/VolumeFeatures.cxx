@@ -104,6 +104,9 @@ const std::vector<VolumeFeature>& VolumeFeatures()
         f.Context.SetGradientOpacityUniforms(sink);
       },
       [](const Frame& f) { f.Context.GradientOpacityTable->Deactivate(); } },
+    // The light's per-sample opacity factor, which the two above set in the feelers.
+    { "OpacityScale", [](const Frame& f) { return f.Context.GradientOpacityTable || f.Context.Mask; }, nullptr,
+      nullptr, nullptr },
     { "Mask", [](const Frame& f) { return f.Context.Mask != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Context.Mask->Activate();

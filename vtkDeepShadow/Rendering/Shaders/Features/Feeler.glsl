@@ -19,15 +19,11 @@ uniform vec2 u_scalarRange;
 uniform float u_feelerTermination; // transmittance at which translucent feelers stop
 uniform int u_feelerSkipEmpty;     // may skip empty blocks (see SetFeelerUniforms)
 
-// What the light's sample at hand multiplies its opacity by (deepshadow::CastSample): the
-// marches set it per sample, from gradient opacity and the mask when they are in use.
-float g_opacityScale = 1.0;
-
 vec4 feelerSample(float scalar)
 {
   //DeepShadow::Isosurface::FeelerLookup
   vec4 rgba = texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
-  rgba.a *= g_opacityScale;
+  //DeepShadow::OpacityScale::FeelerLookup
   return rgba;
 }
 
@@ -111,7 +107,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     //DeepShadow::EmptySpace::FeelerSkip
     float scalar = sampleScalar(sampleIndex);
     //DeepShadow::Isosurface::FeelerSample
-    g_opacityScale = 1.0;
+    //DeepShadow::OpacityScale::FeelerSample
     //DeepShadow::GradientOpacity::FeelerSample
     //DeepShadow::Mask::FeelerSample
     if (opaque)

@@ -117,6 +117,16 @@ int TestGradientOpacity(int, char*[])
   const deepshadow::Image cleared = Grab(scene.Window);
   ok = Check("a gradient opacity set: the deep shadow map rebuilt", dsm->GetBuildCount() == builds + 1) && ok;
   ok = Check("composed with GradientOpacity", deepshadow::testing::HasFeature(scene.Mapper, "GradientOpacity")) && ok;
+  // Left out where it is not used: no gradient-opacity or opacity-factor code without it.
+  const std::string withSource = scene.Mapper->GetFragmentShaderSource();
+  scene.Property->SetDisableGradientOpacity(1);
+  scene.Window->Render();
+  const std::string withoutSource = scene.Mapper->GetFragmentShaderSource();
+  scene.Property->SetDisableGradientOpacity(0);
+  ok = Check("its code composed only while it is used",
+         withSource.find("g_opacityScale") != std::string::npos &&
+           withoutSource.find("g_opacityScale") == std::string::npos &&
+           withoutSource.find("gradientOpacity(") == std::string::npos) && ok;
   // The ground's darkest pixel without it (under the plate) gets more light with it.
   int darkest = -1;
   double darkestTerm = 2.0;
