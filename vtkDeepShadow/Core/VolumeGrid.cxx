@@ -170,7 +170,7 @@ glm::dvec3 VolumeGrid::IndexGradient(const glm::dvec3& index, Interpolation inte
   for (int axis = 0; axis < 3; ++axis)
   {
     glm::dvec3 offset(0.0);
-    offset[axis] = 1.0;
+    offset[axis] = this->GradientReach;
     gradient[axis] =
       0.5 * (this->Sample(index + offset, interpolation) - this->Sample(index - offset, interpolation));
   }

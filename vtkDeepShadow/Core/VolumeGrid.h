@@ -97,8 +97,14 @@ public:
   /** Value at a continuous index, as GL_NEAREST / GL_LINEAR with clamp-to-edge read it. */
   double Sample(const glm::dvec3& index, Interpolation interpolation) const;
 
-  /** Central differences over +-1 voxel (the GPU's formula), per index unit. */
+  /**
+   * Half the central differences over +-GradientReach voxels (the GPU's formula): per index
+   * unit at reach 1; per two index units at reach 2, a grid resampled from cell scalars
+   * (whose cells are two voxels wide), so that it is VTK's gradient, one cell apart.
+   */
   glm::dvec3 IndexGradient(const glm::dvec3& index, Interpolation interpolation) const;
+  int GetGradientReach() const { return this->GradientReach; }
+  void SetGradientReach(int voxels) { this->GradientReach = voxels; }
   /** The same gradient in world units: transpose(J) * g with J the world-to-index Jacobian. */
   glm::dvec3 WorldGradient(const glm::dvec3& index, Interpolation interpolation) const;
 
@@ -111,6 +117,7 @@ private:
   glm::dmat4 IndexToWorld{ 1.0 };
   glm::dmat4 WorldToIndex{ 1.0 };
   glm::dvec2 Range{ 0.0, 0.0 };
+  int GradientReach = 1;
 };
 
 }

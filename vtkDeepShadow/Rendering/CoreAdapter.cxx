@@ -16,7 +16,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkCellData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolumeMapper.h"
@@ -192,9 +191,7 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
   vtkDataArray* array = image->GetPointData()->GetScalars();
   if (!array)
   {
-    return image->GetCellData()->GetScalars()
-      ? "the volume has cell scalars only; convert them with vtkCellDataToPointData"
-      : "the volume has no point scalars";
+    return "the volume has no point scalars";
   }
   if (array->GetNumberOfComponents() != 1)
   {

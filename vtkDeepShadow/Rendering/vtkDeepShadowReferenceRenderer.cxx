@@ -3,6 +3,7 @@
 #include "CoreAdapter.h"
 #include "Core/ReferenceRenderer.h"
 #include "Core/Shadows.h"
+#include "Volume/DrawnScalars.h"
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowTechnique.h"
@@ -67,12 +68,19 @@ deepshadow::Scene MakeSceneFrame(vtkRenderer* renderer)
 bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replaceNonFinite,
   bool groundTruth, deepshadow::VolumeInstance& instance, std::string& error)
 {
-  auto grid = adapter::MakeVolumeGrid(vtkImageData::SafeDownCast(mapper->GetDataSetInput()),
-    volume->GetMatrix(), replaceNonFinite, error);
+  // The array the mapper selects, as its point scalars (cell scalars resampled as drawn).
+  deepshadow::DrawnScalars drawn;
+  vtkImageData* image = drawn.Update(mapper, vtkImageData::SafeDownCast(mapper->GetDataSetInput()), error);
+  if (!error.empty())
+  {
+    return false;
+  }
+  auto grid = adapter::MakeVolumeGrid(image, volume->GetMatrix(), replaceNonFinite, error);
   if (!grid)
   {
     return false;
   }
+  grid->SetGradientReach(drawn.FromCells() ? 2 : 1); // cells are two voxels of the drawn grid
   instance.Grid = grid;
   vtkVolumeProperty* property = volume->GetProperty();
   // Opacity per dataset unit, as the mapper (and VTK's) integrates it.
@@ -90,7 +98,7 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   instance.IsoValues = adapter::MakeIsoValues(mapper, property);
   auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
   if (vtkImageData* mask =
-        gpuMapper ? adapter::UsableMask(gpuMapper, vtkImageData::SafeDownCast(mapper->GetDataSetInput())) : nullptr)
+        gpuMapper ? adapter::UsableMask(gpuMapper, image) : nullptr)
   {
     instance.Mask = adapter::MakeVolumeGrid(mask, volume->GetMatrix(), false, error);
     if (!instance.Mask)
@@ -100,7 +108,7 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
     }
   }
   instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
-    glm::make_vec3(vtkImageData::SafeDownCast(mapper->GetDataSetInput())->GetSpacing()));
+    glm::make_vec3(image->GetSpacing()));
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {
@@ -119,7 +127,6 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   if (!bounds.empty())
   {
     // The mapper's bound, built the same way (in the data's coordinates).
-    auto* image = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
     instance.Bound = adapter::MakeBoundRegion(bounds, expression,
       glm::inverse(adapter::IndexToWorld(image, nullptr)), error);
     if (!instance.Bound)

@@ -251,7 +251,13 @@ void vtkDeepShadowVolumeMapper::ReportError(const std::string& message)
 
 vtkImageData* vtkDeepShadowVolumeMapper::GetImageInput()
 {
-  return vtkImageData::SafeDownCast(this->GetDataSetInput());
+  std::string problem;
+  vtkImageData* drawn = this->Impl->Drawn.Update(this, vtkImageData::SafeDownCast(this->GetDataSetInput()), problem);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+  }
+  return drawn;
 }
 
 double vtkDeepShadowVolumeMapper::GetEffectiveSampleDistance()
@@ -342,7 +348,11 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   vtkImageData* input = this->GetImageInput();
   vtkVolumeProperty* property = volume->GetProperty();
   Internals& impl = *this->Impl;
-  if (!this->UpdateVolume(window, input))
+  if (!input && !this->ErrorThisFrame && this->GetDataSetInput())
+  {
+    this->ReportError("the volume mapper's input is not a vtkImageData");
+  }
+  if (!input || !this->UpdateVolume(window, input))
   {
     return false;
   }
@@ -359,7 +369,8 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   }
   // What VTK's mapper would draw and this one does not: said once each, never silent.
   this->Unsupported =
-    deepshadow::UnsupportedSettings(this, property, volume->GetMatrix(), this->ShadowTechnique != nullptr);
+    deepshadow::UnsupportedSettings(this, input, impl.Drawn.FromCells(), property, volume->GetMatrix(),
+      this->ShadowTechnique != nullptr);
   // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
   const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
   for (const std::string& setting : this->Unsupported)
@@ -441,6 +452,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.Dims = impl.Volume.GetDims();
   context.Range = impl.Volume.GetRange();
   context.ScalarMap = impl.Volume.GetScalarMap();
+  context.GradientReach = impl.Drawn.FromCells() ? 2 : 1; // cells are two voxels of the drawn grid
   context.ShaderScalar = impl.Volume.GetShaderScalar();
   context.TableMap = impl.Transfer.GetTable().CoordinateMap();
   context.TableSize = this->TransferTableSize;

@@ -238,7 +238,11 @@ public:
    */
   const deepshadow::ShadowContext* PrepareShadows(vtkRenderer* renderer, vtkVolume* volume);
 
-  /** The input as image data (only vtkImageData inputs are accepted). */
+  /**
+   * The image drawn: the input's array that the scalar mode and SelectScalarArray select, as
+   * point scalars (cell scalars resampled as VTK's mapper draws them: Volume/DrawnScalars.h).
+   * Null without an input, or, said once, when the selection finds nothing to draw.
+   */
   vtkImageData* GetImageInput();
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;

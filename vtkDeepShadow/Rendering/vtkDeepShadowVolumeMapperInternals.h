@@ -10,6 +10,7 @@
 #include "GL/FramebufferCopy.h"
 #include "Volume/BoxDrawer.h"
 #include "Volume/CutRegion.h"
+#include "Volume/DrawnScalars.h"
 #include "Volume/OccupancyTexture.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
@@ -25,6 +26,8 @@
 class vtkDeepShadowVolumeMapper::Internals
 {
 public:
+  // The input's selected array as the point scalars drawn (cell scalars resampled).
+  deepshadow::DrawnScalars Drawn;
   // The GPU resources, each with its own update and release (Volume/).
   deepshadow::VolumeTexture Volume;
   deepshadow::TransferTableTexture Transfer;

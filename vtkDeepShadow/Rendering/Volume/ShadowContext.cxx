@@ -141,6 +141,7 @@ void ShadowContext::SetGradientOpacityUniforms(UniformSink& sink) const
   // The shaders' scalar is the data's times ShaderScalar.x: back to data units.
   sink.Set("u_gradientOpacityScale", glm::vec3(this->Gradient.IndexScale / this->ShaderScalar.x));
   sink.Set("u_gradientOpacityMax", static_cast<float>(this->Gradient.MaxMagnitude));
+  sink.Set("u_gradientReach", static_cast<float>(this->GradientReach));
 }
 
 void ShadowContext::SetMaskUniforms(UniformSink& sink) const

@@ -61,6 +61,7 @@ struct ShadowContext
   glm::ivec3 Dims{ 0 };
   glm::dvec2 Range{ 0.0, 1.0 };     // finite scalar range
   glm::dvec2 ScalarMap{ 1.0, 0.0 }; // texel -> the shaders' scalar
+  int GradientReach = 1;            // deepshadow::VolumeGrid::GetGradientReach
   /**
    * Data scalar -> the shaders' scalar: the identity, or for float data Range onto [0, 1]
    * (a float range may be denormal or span +-FLT_MAX, which float arithmetic cannot map to a

@@ -36,8 +36,8 @@ const char* BlendModeName(int mode)
 }
 }
 
-std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
-  vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
+std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume,
+  bool fromCells, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
@@ -74,11 +74,14 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
   // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
   if (vtkImageData* mask = mapper->GetMaskInput())
   {
-    vtkImageData* volume = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
     if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
     {
       said.push_back(std::string("masks apply to composite blending only: ") + BlendModeName(blend) +
         " is drawn without the mask");
+    }
+    else if (fromCells)
+    {
+      said.push_back("masks are not drawn over cell scalars: the volume is drawn without the mask");
     }
     else if (!adapter::UsableMask(mapper, volume))
     {

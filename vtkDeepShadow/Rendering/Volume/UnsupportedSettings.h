@@ -8,6 +8,7 @@
 #include <vector>
 
 class vtkGPUVolumeRayCastMapper;
+class vtkImageData;
 class vtkMatrix4x4;
 class vtkVolumeProperty;
 
@@ -19,9 +20,10 @@ namespace deepshadow
  * pass, more input volumes: what `mapper` and `property` ask for that is not drawn; a prop
  * (`propMatrix`) scaled differently along its axes, whose opacity per dataset unit is
  * approximated; and, when a shadow technique is set (`shadowed`), that projection blend
- * modes have no shadows. */
-std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper,
-  vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed);
+ * modes have no shadows. `drawn` is the image drawn (DrawnScalars), `fromCells` whether
+ * from cell scalars. */
+std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* drawn,
+  bool fromCells, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed);
 
 }
 #endif

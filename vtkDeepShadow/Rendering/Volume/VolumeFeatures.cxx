@@ -77,6 +77,7 @@ void BindLighting(const Frame& f, UniformSink& sink)
 {
   SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property), true);
   sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(f.Context.WorldToIndex))));
+  sink.Set("u_gradientReach", static_cast<float>(f.Context.GradientReach));
 }
 
 void ComposeShadow(const Frame& f, ComposedFeatures& features)

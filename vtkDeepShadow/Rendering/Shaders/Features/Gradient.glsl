@@ -5,11 +5,7 @@ uniform mat3 u_indexGradientToWorld; // transpose of the world-to-index Jacobian
 
 vec3 worldGradient(vec3 index)
 {
-  vec3 g;
-  g.x = sampleScalar(index + vec3(1.0, 0.0, 0.0)) - sampleScalar(index - vec3(1.0, 0.0, 0.0));
-  g.y = sampleScalar(index + vec3(0.0, 1.0, 0.0)) - sampleScalar(index - vec3(0.0, 1.0, 0.0));
-  g.z = sampleScalar(index + vec3(0.0, 0.0, 1.0)) - sampleScalar(index - vec3(0.0, 0.0, 1.0));
-  return u_indexGradientToWorld * (0.5 * g);
+  return u_indexGradientToWorld * indexGradient(index);
 }
 //@Normal
   vec3 gradient = worldGradient(index);

@@ -11,11 +11,7 @@ uniform float u_gradientOpacityMax;
 
 float gradientOpacity(vec3 index)
 {
-  vec3 g;
-  g.x = sampleScalar(index + vec3(1.0, 0.0, 0.0)) - sampleScalar(index - vec3(1.0, 0.0, 0.0));
-  g.y = sampleScalar(index + vec3(0.0, 1.0, 0.0)) - sampleScalar(index - vec3(0.0, 1.0, 0.0));
-  g.z = sampleScalar(index + vec3(0.0, 0.0, 1.0)) - sampleScalar(index - vec3(0.0, 0.0, 1.0));
-  float magnitude = clamp(length(0.5 * g * u_gradientOpacityScale), 0.0, u_gradientOpacityMax);
+  float magnitude = clamp(length(indexGradient(index) * u_gradientOpacityScale), 0.0, u_gradientOpacityMax);
   return texture(u_gradientOpacity, vec2(magnitude * u_gradientOpacityMap.x + u_gradientOpacityMap.y, 0.5)).a;
 }
 //@Impl

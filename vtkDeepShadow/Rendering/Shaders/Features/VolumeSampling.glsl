@@ -13,6 +13,19 @@ float sampleScalar(vec3 index)
   return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
 }
 
+// Half the scalar's central differences over +-u_gradientReach voxels, for shading and
+// gradient opacity (deepshadow::VolumeGrid::IndexGradient; 2 on a grid resampled from cells).
+uniform float u_gradientReach;
+vec3 indexGradient(vec3 index)
+{
+  float r = u_gradientReach;
+  vec3 g;
+  g.x = sampleScalar(index + vec3(r, 0.0, 0.0)) - sampleScalar(index - vec3(r, 0.0, 0.0));
+  g.y = sampleScalar(index + vec3(0.0, r, 0.0)) - sampleScalar(index - vec3(0.0, r, 0.0));
+  g.z = sampleScalar(index + vec3(0.0, 0.0, r)) - sampleScalar(index - vec3(0.0, 0.0, r));
+  return 0.5 * g;
+}
+
 // Parametric interval of the ray index + t * direction inside the box [0, Dims - 1]
 // (deepshadow::IntersectBox); empty when !(entry < exit).
 vec2 boxInterval(vec3 index, vec3 direction)

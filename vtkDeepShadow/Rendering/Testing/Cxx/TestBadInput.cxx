@@ -1,9 +1,9 @@
 // Bad input gets one clear error (once, not every frame), no crash, and no garbage: the
 // volume (or mesh) is not drawn and the picture shows only the background.
-//   Data: no input, an empty image, zero extent (N x N x 1), cell scalars only, three
-//   components, unsupported scalar types (int, double), NaN and Inf samples (an error, or
-//   with ReplaceNonFiniteScalars a warning and a defined picture), a volume beyond the GL's
-//   3D texture limit.
+//   Data: no input, an empty image, zero extent (N x N x 1), flat cell scalars, no scalars, a
+//   named array that is not there, three components, unsupported scalar types (int, double),
+//   NaN and Inf samples (an error, or with ReplaceNonFiniteScalars a warning and a defined
+//   picture), a volume beyond the GL's 3D texture limit.
 //   Placement and settings (silent before issue 17): NaN spacing and origin, a zero or NaN
 //   direction matrix, spacings of 1e-30 and 1e30 and an origin far away for its size, a NaN
 //   opacity point, an opacity unit distance of 0 or NaN, a NaN light position, a positional
@@ -228,12 +228,18 @@ int TestBadInput(int, char*[])
   ok = Expect("zero extent (N x N x 1)", RenderBad(Image(8, 8, 1, VTK_UNSIGNED_CHAR)),
          "zero extent along z", false) && ok;
   {
-    auto cells = Image(8, 8, 8, VTK_VOID);
+    // Cell scalars are drawn (TestCellScalars); a flat image has no cells to draw.
+    auto cells = Image(8, 8, 1, VTK_VOID);
     vtkNew<vtkFloatArray> values;
     values->SetNumberOfTuples(cells->GetNumberOfCells());
     values->FillValue(1.0f);
     cells->GetCellData()->SetScalars(values);
-    ok = Expect("cell scalars only", RenderBad(cells), "vtkCellDataToPointData", false) && ok;
+    ok = Expect("cell scalars, zero extent", RenderBad(cells), "cell scalars need at least one cell", false) && ok;
+    ok = Expect("no scalars at all", RenderBad(Image(8, 8, 8, VTK_VOID)), "no point or cell scalars", false) && ok;
+    ok = Expect("a named array that is not there", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR), false, [](Scene& s) {
+      s.Mapper->SetScalarModeToUsePointFieldData();
+      s.Mapper->SelectScalarArray("density");
+    }), "no point array 'density'", false) && ok;
   }
   ok = Expect("three components", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR, 3)),
          "3 components", false) && ok;
