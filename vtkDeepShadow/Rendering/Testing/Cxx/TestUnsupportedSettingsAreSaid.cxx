@@ -4,6 +4,8 @@
 // vtkGPUVolumeRayCastMapper: its settings (masks, sampling, window/level...) compile and are
 // said too.
 #include "DeepShadowTestUtilities.h"
+
+#include "vtkCellData.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -108,6 +110,14 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
     { "mask of other dimensions", "the mask's dimensions 40x40x40 differ from the volume's 48x48x48",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR, 40));
+      } },
+    { "mask over cell scalars", "masks are not drawn over cell scalars",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+        auto cells = vtkSmartPointer<vtkImageData>::New();
+        cells->SetDimensions(49, 49, 49);
+        cells->GetCellData()->SetScalars(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR)->GetPointData()->GetScalars());
+        m->SetInputData(cells);
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
       } },
     { "mask under MIP", "masks apply to composite blending only",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
