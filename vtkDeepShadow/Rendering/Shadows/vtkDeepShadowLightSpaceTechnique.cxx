@@ -8,6 +8,7 @@
 #include "vtkDeepShadowLightSpaceCS.h"
 
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
@@ -133,6 +134,11 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
       // errors of earlier GL calls are not ours to report
     }
     glGenTextures(1, &maps.Texture);
+    // Bound on a unit of our own, chosen through VTK's state: VTK caches the active unit and
+    // what its textures are bound to (ParaView warns every frame when they change behind it).
+    vtkTextureUnitManager* units = context.Window->GetTextureUnitManager();
+    const int unit = units->Allocate();
+    context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
     glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, self->MapSize, self->MapSize, static_cast<GLsizei>(layers));
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -140,6 +146,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    units->Free(unit);
     if (glGetError() != GL_NO_ERROR)
     {
       self->LastError = "the GL could not allocate " +
@@ -262,7 +269,7 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   vtkDeepShadowLightSpaceTechnique* self = this->Self;
   Maps& maps = *self->LightMaps;
   maps.Unit = context.Window->GetTextureUnitManager()->Allocate();
-  glActiveTexture(GL_TEXTURE0 + maps.Unit);
+  context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + maps.Unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
   sink.Set("u_shadowMap", maps.Unit);
   std::vector<int> faceCount, perspective;
@@ -298,7 +305,7 @@ void vtkDeepShadowLightSpaceTechnique::UnbindLookup()
   Maps& maps = *this->LightMaps;
   if (maps.Unit >= 0)
   {
-    glActiveTexture(GL_TEXTURE0 + maps.Unit);
+    maps.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + maps.Unit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     maps.Window->GetTextureUnitManager()->Free(maps.Unit);
     maps.Unit = -1;

@@ -175,11 +175,12 @@ bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext&
   const int maxLights = self->Cached ? std::min(self->GetMaxShadowLights(), MaxCachedLights)
                                      : self->GetMaxShadowLights();
   const int dropped = impl.Slots.Assign(context.Lights, maxLights);
-  if (dropped > 0)
+  if (dropped > 0 && dropped != impl.DroppedSaid)
   {
     vtkWarningWithObjectMacro(self, << dropped << " shadow-casting lights beyond " << maxLights
                                     << " cast no shadow (" << self->GetName() << ")");
   }
+  impl.DroppedSaid = dropped;
   if (!impl.TechniqueHooks->AllocateStructures(context, impl.Slots))
   {
     impl.Slots.Invalidate();

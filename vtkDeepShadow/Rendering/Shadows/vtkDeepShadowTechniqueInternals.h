@@ -126,6 +126,8 @@ public:
   // Zero-opacity blocks of the volume's opacity may be skipped (not with a shadow property).
   bool SkipEmpty = true;
   deepshadow::ShadowSlots Slots;
+  // Shadow-casting lights left without a slot at the last warning (said once while it lasts).
+  int DroppedSaid = 0;
   // Build timing of the current Prepare.
   double PassStart = 0.0;
   double PassMilliseconds = 0.0;
