@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The ParaView tests (ctest label "paraview"): pvbatch with the DeepShadow plugin, one MPI
+# rank and two, under a private Xvfb. Exit 77 (skipped) when the plugin is not built
+# (scripts/build-paraview-plugin.sh builds it; scripts/test.sh does so first).
+#   run.sh SOURCE_DIR OUT_DIR plugin|ranks
+set -euo pipefail
+source_dir=$1
+out=$2
+what=$3
+plugin="$source_dir/build-paraview/lib/paraview-5.11/plugins/DeepShadow/DeepShadow.so"
+sdk=${DEEPSHADOW_PVSDK:-/opt/deepshadow-pvsdk}
+if [ ! -f "$plugin" ] || [ ! -f "$sdk/env.sh" ]; then
+  echo "the ParaView plugin is not built (scripts/build-paraview-plugin.sh): skipped"
+  exit 77
+fi
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+compare() { env -u PYTHONPATH /usr/bin/python3 "$here/compare.py" "$@"; }
+mkdir -p "$out"
+
+# A display of our own (-noreset: two ranks reconnecting while the server resets abort).
+display=""
+for n in $(seq 140 199); do
+  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=":$n"; break; fi
+done
+Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
+xvfb=$!
+trap 'kill $xvfb 2>/dev/null || true' EXIT
+for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
+
+(
+  # shellcheck disable=SC1090
+  . "$sdk/env.sh"
+  export DISPLAY=$display
+  draw() { # draw RANKS OUTPUT REPRESENTATION [TECHNIQUE [LIGHTS]]
+    local ranks=$1; shift
+    if [ "$ranks" = 1 ]; then
+      timeout -k 5 300 pvbatch "$here/shadowed_volume.py" "$plugin" "$@"
+    else
+      timeout -k 5 300 mpirun -np "$ranks" pvbatch "$here/shadowed_volume.py" "$plugin" "$@"
+    fi
+  }
+  case "$what" in
+    plugin)
+      draw 1 "$out/volume.png" "Volume"
+      draw 1 "$out/none.png" "Shadowed Volume" none
+      draw 1 "$out/dsm.png" "Shadowed Volume" dsm
+      draw 1 "$out/dsm-all-lights.png" "Shadowed Volume" dsm 1
+      ;;
+    ranks)
+      draw 1 "$out/none-1.png" "Shadowed Volume" none
+      draw 2 "$out/none-2.png" "Shadowed Volume" none
+      ;;
+  esac
+) 2>&1 | { grep -v '^0x' || true; } # a backtrace's addresses say nothing here
+
+case "$what" in
+  plugin)
+    # Unshadowed, ours draws what ParaView's own mapper draws (VTK 9.2's GPU ray caster).
+    compare diff "$out/none.png" "$out/volume.png" 0.012 0.02
+    # ... and that check fails on a shadowed picture.
+    if compare diff "$out/dsm.png" "$out/volume.png" 0.012 0.02; then
+      echo "the comparison passes a shadowed picture: FAILED"
+      exit 1
+    fi
+    # The key light's deep shadow darkens the volume; every light's more so.
+    compare darker "$out/dsm.png" "$out/none.png" 0.97
+    compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
+    ;;
+  ranks)
+    # Unshadowed, two ranks' bricks composited by IceT match one rank.
+    compare diff "$out/none-2.png" "$out/none-1.png" 0.01 0.01
+    ;;
+esac

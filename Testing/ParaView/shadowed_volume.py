@@ -1,0 +1,29 @@
+"""pvbatch: a Wavelet drawn by the DeepShadow plugin's "Shadowed Volume" representation (or
+ParaView's own "Volume"), shaded, saved to a PNG. Arguments: PLUGIN OUTPUT.png
+REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS]]. Under mpirun every rank holds a brick of it."""
+import sys
+
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetOpacityTransferFunction,
+                             LoadPlugin, ResetCamera, SaveScreenshot, Show, Wavelet)
+
+plugin, output, representation = sys.argv[1:4]
+LoadPlugin(plugin, remote=False, ns=globals())
+wavelet = Wavelet()
+wavelet.WholeExtent = [-24, 24, -24, 24, -24, 24]
+view = GetActiveViewOrCreate("RenderView")
+view.ViewSize = [240, 240]
+view.OrientationAxesVisibility = 0
+display = Show(wavelet, view)
+display.Representation = representation
+ColorBy(display, ("POINTS", "RTData"))
+display.Shade = 1
+# Clear below 150, denser towards the peak: a lobed ball that shadows itself.
+GetOpacityTransferFunction("RTData").Points = [37, 0.0, 0.5, 0.0, 150, 0.0, 0.5, 0.0, 276, 0.8, 0.5, 0.0]
+if representation == "Shadowed Volume":
+    display.ShadowTechnique = sys.argv[4] if len(sys.argv) > 4 else "dsm"
+    display.ShadowLights = int(sys.argv[5]) if len(sys.argv) > 5 else 0
+view.CameraPosition = [0, -100, 50]
+view.CameraFocalPoint = [0, 0, 0]
+view.CameraViewUp = [0, 0, 1]
+ResetCamera(view)
+SaveScreenshot(output, view)

@@ -1,0 +1,82 @@
+/**
+ * @class   vtkDeepShadowVolumeRepresentation
+ * @brief   ParaView's volume representation of image data, drawn by vtkDeepShadowVolumeMapper.
+ *
+ * The "Shadowed Volume" representation type of the DeepShadow plugin. Everything ParaView's
+ * "Volume" representation does (the selected point or cell array, its colour map and opacity
+ * function, shading, blend modes, cropping) goes through unchanged: the superclass drives the
+ * mapper with vtkVolumeMapper's API, which ours honours. Added: the shadow technique, by its
+ * registry name, and its parameters as KEY=VALUE text, both read from the technique registry
+ * (Core/ShadowTechniques.h), so every technique and key the tool knows is available here.
+ */
+#ifndef vtkDeepShadowVolumeRepresentation_h
+#define vtkDeepShadowVolumeRepresentation_h
+
+#include "vtkDeepShadowParaViewModule.h" // For export macro
+#include "vtkImageVolumeRepresentation.h"
+
+#include <string> // For ivars
+
+class vtkRenderer;
+
+class VTKDEEPSHADOWPARAVIEW_EXPORT vtkDeepShadowVolumeRepresentation : public vtkImageVolumeRepresentation
+{
+public:
+  static vtkDeepShadowVolumeRepresentation* New();
+  vtkTypeMacro(vtkDeepShadowVolumeRepresentation, vtkImageVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The shadow technique by registry name: "none", "dsm" (the default), "rays",
+   * "dsm-color-cached", ... (deepshadow::ShadowTechniqueNames()). An unknown name is one
+   * error; the technique in use stays.
+   */
+  void SetShadowTechnique(const char* name);
+  const char* GetShadowTechnique() const { return this->TechniqueName.c_str(); }
+
+  /**
+   * The technique's parameters as KEY=VALUE pairs separated by spaces or commas, with the
+   * tool's keys and ranges ("epsilon=0.01 mapsize=1024"); empty: the technique's defaults. A
+   * key the technique does not read, or a value out of range, is one error naming it; the
+   * technique in use stays.
+   */
+  void SetShadowParameters(const char* text);
+  const char* GetShadowParameters() const { return this->ParameterText.c_str(); }
+
+  /**
+   * Which of the view's lights cast shadows: 0, the brightest one (ParaView's key light, the
+   * default; its other lights are fill, head and back lights); 1, every light (the mapper
+   * shadows at most four). Set on the lights' vtkLight::ShadowAttenuation at each render.
+   */
+  vtkSetClampMacro(ShadowLights, int, 0, 1);
+  vtkGetMacro(ShadowLights, int);
+
+  /** The error of the last technique or parameters set, "" when they were applied. */
+  const char* GetShadowError() const { return this->Error.c_str(); }
+
+protected:
+  vtkDeepShadowVolumeRepresentation();
+  ~vtkDeepShadowVolumeRepresentation() override;
+
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* in, vtkInformation* out) override;
+
+private:
+  vtkDeepShadowVolumeRepresentation(const vtkDeepShadowVolumeRepresentation&) = delete;
+  void operator=(const vtkDeepShadowVolumeRepresentation&) = delete;
+
+  /** Makes the technique from the name and parameters set; false (Error set) if they are bad. */
+  bool ApplyTechnique();
+
+  /** Sets the lights' ShadowAttenuation as ShadowLights says (only values that change). */
+  void ChooseShadowLights();
+
+  int ShadowLights = 0;
+  vtkRenderer* Renderer = nullptr; // the view's, while the representation is in one
+  std::string TechniqueName = "dsm";
+  std::string ParameterText;
+  std::string Error;
+};
+
+#endif
