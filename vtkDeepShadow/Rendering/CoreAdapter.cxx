@@ -483,7 +483,11 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
 std::optional<GradientOpacity> MakeGradientOpacity(
   vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing)
 {
+  // HasGradientOpacity first: GetStoredGradientOpacity would create a default function in
+  // the user's property, and VTK's mapper, drawing the same property later, would then take
+  // gradient opacity as set (it changes its multi-component pictures).
   if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND || !property ||
+    property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D || !property->HasGradientOpacity(0) ||
     property->GetDisableGradientOpacity(0))
   {
     return std::nullopt;
