@@ -109,8 +109,14 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
       range.x, range.y, settings.TransferTableSize,
       uncorrected ? volume.Transfer.OpacityUnitDistance : settings.SampleDistance));
   }
-  // A projection counts transparent samples too; an isosurface's crossings lie anywhere.
-  if (settings.EmptySpaceSkipping && !projection && !isosurface)
+  if (volume.Components)
+  {
+    prepared.Components = std::make_unique<ComponentLookup>(*volume.Components, *volume.Grid, volume.Transfer,
+      settings.SampleDistance, settings.TransferTableSize);
+  }
+  // A projection counts transparent samples too; an isosurface's crossings lie anywhere;
+  // the block map knows one component's opacity only.
+  if (settings.EmptySpaceSkipping && !projection && !isosurface && !volume.Components)
   {
     prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
   }
@@ -130,7 +136,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   caster.Mask = volume.Mask.get();
-  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface)
+  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
     caster.Empty = prepared.ShadowEmpty.get();
@@ -141,6 +147,12 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
       range.x, range.y, settings.TransferTableSize,
       isosurface ? casting.OpacityUnitDistance : volume.Shadows.StepFactor * settings.SampleDistance));
     caster.FeelerTable = prepared.FeelerTable.get();
+  }
+  if (volume.Components)
+  {
+    prepared.FeelerComponents = std::make_unique<ComponentLookup>(*volume.Components, *volume.Grid, casting,
+      volume.Shadows.StepFactor * settings.SampleDistance, settings.TransferTableSize);
+    caster.Components = prepared.FeelerComponents.get();
   }
   for (size_t l = 0; l < scene.Lights.size(); ++l)
   {
@@ -279,7 +291,18 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
 
     glm::dvec3 color;
     double alpha;
-    if (table)
+    glm::dvec4 componentValues(0.0);
+    ComponentColors componentColors{};
+    if (prepared.Components)
+    {
+      componentValues = volume.Components->Sample(grid, index, volume.Sampling);
+      componentColors = prepared.Components->Colors(componentValues, dt);
+      const glm::dvec4 combined =
+        CombineComponents(*volume.Components, componentColors, componentValues);
+      color = glm::dvec3(combined);
+      alpha = combined.a;
+    }
+    else if (table)
     {
       const glm::dvec4 entry = table->Lookup(scalar);
       color = glm::dvec3(entry);
@@ -304,44 +327,82 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (lit)
     {
       const glm::dvec3 position = ray.Origin + receiverT * ray.Direction;
-      const glm::dvec3 normal = volume.Shade && !termOnly
-        ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling))
-        : glm::dvec3(0.0);
-      glm::dvec3 light = volume.Surface.Ambient * color * scene.AmbientLight;
+      // Each light's shadow factor, looked up once per sample, when something needs it.
+      std::vector<std::optional<glm::dvec3>> factors(scene.Lights.size());
+      auto factorOf = [&](size_t l) {
+        if (!factors[l])
+        {
+          const LightShadow* own = shadowed ? prepared.Shadows[l].get() : nullptr;
+          const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
+          glm::dvec3 factor(1.0);
+          if (own || others)
+          {
+            const glm::dvec3 receiver = isosurface
+              ? position + IsoReceiverOffset(volume.Shadows.StepFactor * dt) * scene.Lights[l].At(position).ToLight
+              : position;
+            glm::dvec3 visibility = own ? own->Visibility(receiver) : glm::dvec3(1.0);
+            if (others)
+            {
+              visibility *= others->Visibility(receiver);
+            }
+            factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+          }
+          factors[l] = factor;
+        }
+        return *factors[l];
+      };
+      // What the lights give colour `c` of normal `normal` (Phong) or none (isotropic).
+      auto shade = [&](const glm::dvec3& c, const glm::dvec3& normal, const Material& material) {
+        glm::dvec3 light = material.Ambient * c * scene.AmbientLight;
+        for (size_t l = 0; l < scene.Lights.size(); ++l)
+        {
+          const LightSample sample = scene.Lights[l].VolumeSampleAt(position);
+          const glm::dvec3 contribution = volume.Shade
+            ? PhongLight(c, normal, -ray.Direction, sample, material, scene.TwoSidedLighting)
+            : material.Diffuse * sample.Diffuse * c;
+          if (contribution != glm::dvec3(0.0))
+          {
+            light += contribution * factorOf(l);
+          }
+        }
+        return glm::clamp(light, 0.0, 1.0);
+      };
       glm::dvec3 term(1.0);
-      for (size_t l = 0; l < scene.Lights.size(); ++l)
+      if (wantTerm)
       {
-        const LightSample sample = scene.Lights[l].VolumeSampleAt(position);
-        glm::dvec3 contribution(0.0);
-        if (!termOnly)
+        for (size_t l = 0; l < scene.Lights.size(); ++l)
         {
-          contribution = volume.Shade
-            ? PhongLight(color, normal, -ray.Direction, sample, volume.Surface, scene.TwoSidedLighting)
-            : volume.Surface.Diffuse * sample.Diffuse * color;
-        }
-        const bool termReached = wantTerm && sample.Reach > 0.0;
-        const LightShadow* own = shadowed ? prepared.Shadows[l].get() : nullptr;
-        const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
-        if ((own || others) && (contribution != glm::dvec3(0.0) || termReached))
-        {
-          const glm::dvec3 receiver = isosurface
-            ? position + IsoReceiverOffset(volume.Shadows.StepFactor * dt) * scene.Lights[l].At(position).ToLight
-            : position;
-          glm::dvec3 visibility = own ? own->Visibility(receiver) : glm::dvec3(1.0);
-          if (others)
+          if (scene.Lights[l].VolumeSampleAt(position).Reach > 0.0)
           {
-            visibility *= others->Visibility(receiver);
-          }
-          const glm::dvec3 factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
-          contribution *= factor;
-          if (termReached)
-          {
-            term *= factor;
+            term *= factorOf(l);
           }
         }
-        light += contribution;
       }
-      color = glm::clamp(termOnly ? term : light, 0.0, 1.0);
+      if (termOnly)
+      {
+        color = glm::clamp(term, 0.0, 1.0);
+      }
+      else if (volume.Components && volume.Components->LitApart(volume.Shade))
+      {
+        // Each component lit with its own gradient and material, then combined (VTK's).
+        for (int i = 0; i < volume.Components->Count(); ++i)
+        {
+          glm::dvec4& c = componentColors[static_cast<size_t>(i)];
+          if (c.a > 0.0 && volume.Components->Weights[i] > 0.0)
+          {
+            const glm::dvec3 normal =
+              NormalFromGradient(volume.Components->Grid(grid, i).WorldGradient(index, volume.Sampling));
+            c = glm::dvec4(shade(glm::dvec3(c), normal, volume.Components->Materials[static_cast<size_t>(i)]), c.a);
+          }
+        }
+        color = glm::dvec3(CombineComponents(*volume.Components, componentColors, componentValues));
+      }
+      else
+      {
+        const glm::dvec3 normal =
+          volume.Shade ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling)) : glm::dvec3(0.0);
+        color = shade(color, normal, volume.Surface);
+      }
       termColor = glm::clamp(term, 0.0, 1.0);
     }
     if (shadowTerm)

@@ -34,6 +34,7 @@
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
+#include "Core/Components.h"
 #include "Core/Image.h"
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
@@ -84,6 +85,8 @@ struct VolumeInstance
   std::optional<GradientOpacity> Gradient;
   /** A binary mask (Mask.h) of the grid's dimensions, or null; what it clears neither shows nor casts. */
   std::shared_ptr<const VolumeGrid> Mask;
+  /** Several components per voxel (Components.h; composite only): Grid is component 0. */
+  std::optional<ComponentSet> Components;
 };
 
 struct Scene
@@ -183,6 +186,8 @@ public:
   {
     std::unique_ptr<TransferTable> Table;       // GPU twin only
     std::unique_ptr<TransferTable> FeelerTable; // GPU twin with shadows only
+    std::unique_ptr<ComponentLookup> Components;       // several components: the view's step
+    std::unique_ptr<ComponentLookup> FeelerComponents; // and the light rays'
     std::unique_ptr<EmptySpaceMap> Empty;       // blocks rays may skip (exact)
     std::unique_ptr<EmptySpaceMap> ShadowEmpty; // the same for a separate shadow transfer
     std::vector<std::unique_ptr<LightShadow>> Shadows; // per scene light; null: no shadow

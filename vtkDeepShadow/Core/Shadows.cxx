@@ -3,6 +3,7 @@
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/Camera.h"
+#include "Core/Components.h"
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Mask.h"
@@ -71,8 +72,13 @@ glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
 CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) const
 {
   const double kept = MaskFactor(this->Mask, index);
-  return CastSample(crossings.Next(this->Grid->Sample(index, this->Sampling)),
+  CastSample sample(crossings.Next(this->Grid->Sample(index, this->Sampling)),
     kept * (this->Gradient && kept > 0.0 ? this->Gradient->Factor(*this->Grid, index, this->Sampling) : 1.0));
+  if (this->Components)
+  {
+    sample.Values = this->Components->GetSet().Sample(*this->Grid, index, this->Sampling);
+  }
+  return sample;
 }
 
 glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
@@ -86,6 +92,12 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
     }
     // A surface's opacity is the function's own: its table is sampled for a unit step.
     step = this->Transfer->OpacityUnitDistance;
+  }
+  if (this->Components)
+  {
+    glm::dvec4 rgba = this->Components->Combined(sample.Values, step);
+    rgba.a *= sample.OpacityScale;
+    return rgba;
   }
   glm::dvec4 rgba = this->FeelerTable ? this->FeelerTable->Lookup(scalar)
                                       : glm::dvec4(this->Transfer->Color(scalar),
@@ -111,6 +123,12 @@ bool ShadowCaster::AboveThreshold(const CastSample& sample, double step, const S
     const glm::dvec2 range = this->Grid->GetRange();
     const double width = range.y > range.x ? range.y - range.x : 1.0;
     return (scalar - range.x) / width > parameters.Threshold;
+  }
+  if (this->Components)
+  {
+    // The sample's combined opacity, corrected for the step: against the corrected threshold.
+    return this->Sample(sample, step).a >
+      CorrectOpacity(parameters.Threshold, step, this->Transfer->OpacityUnitDistance);
   }
   if (this->FeelerTable)
   {

@@ -38,6 +38,7 @@
 namespace deepshadow
 {
 class BoundRegion;
+class ComponentLookup;
 class IsoCrossings;
 class SurfaceSet;
 struct GradientOpacity;
@@ -159,6 +160,7 @@ struct CastSample
   }
   double Scalar;
   double OpacityScale;
+  glm::dvec4 Values{ 0.0 }; // every component's value (Components.h), when there are several
 };
 
 /** The volume that casts shadows, as the techniques read it. */
@@ -190,6 +192,8 @@ struct ShadowCaster
   const GradientOpacity* Gradient = nullptr;
   /** Optional: a binary mask (Mask.h, the data's dimensions); what it clears casts nothing. */
   const VolumeGrid* Mask = nullptr;
+  /** Several components (Components.h): their colours and opacities replace Transfer's. */
+  const ComponentLookup* Components = nullptr;
 
   /**
    * The sample at continuous voxel index `index` of a light ray whose crossings `crossings`

@@ -632,19 +632,19 @@ double DatasetLengthScale(const vtkMatrix4x4* propMatrix, bool* anisotropic)
   return std::isfinite(scale) && scale > 0.0 ? scale : 1.0;
 }
 
-TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale)
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale, int component)
 {
   TransferFunction tf;
-  tf.Opacity = FromVTK(property->GetScalarOpacity(0));
-  if (property->GetColorChannels(0) == 1)
+  tf.Opacity = FromVTK(property->GetScalarOpacity(component));
+  if (property->GetColorChannels(component) == 1)
   {
-    tf.Red = tf.Green = tf.Blue = FromVTK(property->GetGrayTransferFunction(0));
+    tf.Red = tf.Green = tf.Blue = FromVTK(property->GetGrayTransferFunction(component));
   }
   else
   {
-    FromVTK(property->GetRGBTransferFunction(0), tf);
+    FromVTK(property->GetRGBTransferFunction(component), tf);
   }
-  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0) * unitScale;
+  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(component) * unitScale;
   return tf;
 }
 
@@ -662,14 +662,58 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
   return material;
 }
 
-Material MakeMaterial(vtkVolumeProperty* property)
+Material MakeMaterial(vtkVolumeProperty* property, int component)
 {
   Material material;
-  material.Ambient = property->GetAmbient(0);
-  material.Diffuse = property->GetDiffuse(0);
-  material.Specular = property->GetSpecular(0);
-  material.SpecularPower = property->GetSpecularPower(0);
+  material.Ambient = property->GetAmbient(component);
+  material.Diffuse = property->GetDiffuse(component);
+  material.Specular = property->GetSpecular(component);
+  material.SpecularPower = property->GetSpecularPower(component);
   return material;
+}
+
+std::string MakeComponentSet(
+  vtkVolumeProperty* property, int count, int dataType, double unitScale, ComponentSet& set)
+{
+  const bool independent = property->GetIndependentComponents() != 0;
+  if (!independent && count != 2 && count != 4)
+  {
+    return std::to_string(count) + " dependent components are not drawn (VTK's mapper draws 2, luminance and "
+                                    "opacity, or 4, RGBA); set IndependentComponents on";
+  }
+  set.Mode = independent ? ComponentMode::Independent
+    : count == 2         ? ComponentMode::LuminanceAlpha
+                         : ComponentMode::RGBA;
+  set.Transfers.clear();
+  set.Materials.clear();
+  for (int i = 0; i < count; ++i)
+  {
+    // Dependent components share component 0's functions and material, over their own range.
+    const int source = independent ? i : 0;
+    set.Transfers.push_back(MakeTransferFunction(property, unitScale, source));
+    set.Materials.push_back(MakeMaterial(property, source));
+    set.Weights[i] = independent ? property->GetComponentWeight(i) : 1.0;
+    // What VTK's texture holds: 8- and 16-bit integers normalized by the type's largest.
+    switch (dataType)
+    {
+      case VTK_UNSIGNED_CHAR:
+        set.TextureScale[i] = 1.0 / VTK_UNSIGNED_CHAR_MAX;
+        break;
+      case VTK_CHAR:
+      case VTK_SIGNED_CHAR:
+        set.TextureScale[i] = 1.0 / VTK_SIGNED_CHAR_MAX;
+        break;
+      case VTK_UNSIGNED_SHORT:
+        set.TextureScale[i] = 1.0 / VTK_UNSIGNED_SHORT_MAX;
+        break;
+      case VTK_SHORT:
+        set.TextureScale[i] = 1.0 / VTK_SHORT_MAX;
+        break;
+      default:
+        set.TextureScale[i] = 1.0;
+    }
+  }
+  return std::string();
 }
 
 std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)

@@ -5,6 +5,7 @@
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
+#include "Core/Components.h"
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Light.h"
@@ -93,12 +94,12 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
   bool replaceNonFinite, std::string& error, size_t* replaced = nullptr);
 
 /**
- * Transfer function of component 0. Linear RGB nodes with default midpoint/sharpness are
+ * Transfer function of a component (0 by default). Linear RGB nodes with default midpoint/sharpness are
  * copied exactly; other shapes (midpoints, sharpness, HSV/Lab interpolation) are sampled at
  * 4097 points, which makes them piecewise linear. The opacity unit distance is the
  * property's times `unitScale` (DatasetLengthScale: opacity per dataset unit, as VTK's).
  */
-TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale = 1.0);
+TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale = 1.0, int component = 0);
 
 /**
  * World length of a dataset unit under the prop's matrix, so that opacity is per dataset unit
@@ -106,7 +107,16 @@ TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitSc
  * volume change otherwise (`anisotropic` says so: VTK's then depends on the direction).
  */
 double DatasetLengthScale(const vtkMatrix4x4* propMatrix, bool* anisotropic = nullptr);
-Material MakeMaterial(vtkVolumeProperty* property);
+Material MakeMaterial(vtkVolumeProperty* property, int component = 0);
+/**
+ * How `property` classifies `count` (2 to 4) components (Core/Components.h): independent
+ * (IndependentComponents on) with each component's functions, material and weight; else 2
+ * (luminance, opacity) or 4 (RGBA) dependent ones sharing component 0's; `dataType` (the
+ * scalars' VTK type) sets TextureScale. Fills all but the grids; returns "" or one line (3
+ * dependent components).
+ */
+std::string MakeComponentSet(
+  vtkVolumeProperty* property, int count, int dataType, double unitScale, ComponentSet& set);
 /** A mesh's material from its actor's vtkProperty: colour, opacity (clamped to [0, 1]), Phong. */
 SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property);
 

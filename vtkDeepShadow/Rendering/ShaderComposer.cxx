@@ -82,6 +82,13 @@ ShaderFeature BoundShaderFeature(int leaves)
   return WithDefines("Bound", vtkDeepShadowFeatureBound, "#define BOUND_LEAVES " + std::to_string(leaves));
 }
 
+ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart)
+{
+  return WithDefines("Components", vtkDeepShadowFeatureComponents,
+    "#define COMPONENT_COUNT " + std::to_string(count) + "\n#define COMPONENT_MODE " + std::to_string(mode) +
+      (litApart ? "\n#define COMPONENTS_LIT_APART" : ""));
+}
+
 ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices)
 {
   std::string defines = "#define TRANSLUCENT_LAYERS " + std::to_string(layers) +

@@ -37,6 +37,12 @@ const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 ShaderFeature BoundShaderFeature(int leaves);
 
 /**
+ * The Components feature for `count` components (2 to 4) of mode `mode` (deepshadow::
+ * ComponentMode), lit apart or not (COMPONENT_COUNT, COMPONENT_MODE, COMPONENTS_LIT_APART).
+ */
+ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart);
+
+/**
  * The TranslucentLayers feature for `layers` peeled layers and `segmentSlices` slices of
  * other volumes' segments (Rendering/Translucency).
  */

@@ -13,6 +13,7 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
@@ -91,14 +92,36 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
     ? deepshadow::Interpolation::Nearest
     : deepshadow::Interpolation::Linear;
+  // Several components: combined as VTK's mapper combines them, composite only (the mapper
+  // says so once for a projection, isosurfaces, gradient opacity or a mask).
+  const bool several = !drawn.GetOtherComponents().empty();
+  if (several)
+  {
+    deepshadow::ComponentSet set;
+    error = adapter::MakeComponentSet(property, 1 + static_cast<int>(drawn.GetOtherComponents().size()),
+      image->GetPointData()->GetScalars()->GetDataType(), unitScale, set);
+    if (!error.empty())
+    {
+      return false;
+    }
+    for (const auto& other : drawn.GetOtherComponents())
+    {
+      auto otherGrid = adapter::MakeVolumeGrid(other, volume->GetMatrix(), replaceNonFinite, error);
+      if (!otherGrid)
+      {
+        return false;
+      }
+      set.Others.push_back(otherGrid);
+    }
+    instance.Components = std::move(set);
+  }
   auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
-  instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
+  instance.Projection = several ? deepshadow::ProjectionSettings() : adapter::MakeProjection(mapper, grid->GetRange());
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
-  instance.IsoValues = adapter::MakeIsoValues(mapper, property);
+  instance.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(mapper, property);
   auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
-  if (vtkImageData* mask =
-        gpuMapper ? adapter::UsableMask(gpuMapper, image) : nullptr)
+  if (vtkImageData* mask = gpuMapper && !several ? adapter::UsableMask(gpuMapper, image) : nullptr)
   {
     instance.Mask = adapter::MakeVolumeGrid(mask, volume->GetMatrix(), false, error);
     if (!instance.Mask)
@@ -107,8 +130,11 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
       return false;
     }
   }
-  instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
-    glm::make_vec3(image->GetSpacing()));
+  if (!several)
+  {
+    instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
+      glm::make_vec3(image->GetSpacing()));
+  }
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {

@@ -369,7 +369,8 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   }
   // What VTK's mapper would draw and this one does not: said once each, never silent.
   this->Unsupported =
-    deepshadow::UnsupportedSettings(this, input, impl.Drawn.FromCells(), property, volume->GetMatrix(),
+    deepshadow::UnsupportedSettings(this, input, impl.Drawn.FromCells(),
+      1 + static_cast<int>(impl.Drawn.GetOtherComponents().size()), property, volume->GetMatrix(),
       this->ShadowTechnique != nullptr);
   // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
   const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
@@ -400,16 +401,18 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     : vtkTextureObject::Linear;
   impl.Volume.GetTexture()->SetMinificationFilter(filter);
   impl.Volume.GetTexture()->SetMagnificationFilter(filter);
-  frame.Projection = adapter::MakeProjection(this, impl.Volume.GetRange());
+  // Several components are drawn composite (UnsupportedSettings says so for the rest).
+  const bool several = !impl.Drawn.GetOtherComponents().empty();
+  frame.Projection = several ? deepshadow::ProjectionSettings() : adapter::MakeProjection(this, impl.Volume.GetRange());
   const bool projection = frame.Projection.Mode != deepshadow::BlendMode::Composite;
-  frame.Context.IsoValues = adapter::MakeIsoValues(this, property);
+  frame.Context.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(this, property);
   const bool isosurface = !frame.Context.IsoValues.empty();
-  if (this->BlendMode == vtkVolumeMapper::ISOSURFACE_BLEND && !isosurface)
+  if (this->BlendMode == vtkVolumeMapper::ISOSURFACE_BLEND && !isosurface && !several)
   {
     ++this->RenderCount;
     return false; // no contour value: nothing to draw, as VTK's mapper (said by UnsupportedSettings)
   }
-  if (!this->UpdateOpacityFactors(window, property, input, frame))
+  if (!several && !this->UpdateOpacityFactors(window, property, input, frame))
   {
     return false;
   }
@@ -445,7 +448,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.Volume = impl.Volume.GetTexture();
   // A projection counts clear samples too: nothing is skipped for being transparent; an
   // isosurface's crossings lie in clear blocks as well.
-  context.Occupancy = !projection && !isosurface && this->EmptySpaceSkipping && impl.Occupancy.AnyEmptyBlock()
+  // The block map knows component 0's opacity only.
+  context.Occupancy = !projection && !isosurface && !several && this->EmptySpaceSkipping &&
+      impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()
     : nullptr;
   context.BlockSize = static_cast<float>(deepshadow::VolumeTexture::BlockSize);
@@ -470,6 +475,10 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.Surfaces = surfaces ? &impl.SurfacesGPU.GetTextures() : nullptr;
   context.CastingSurfaces = surfaces ? impl.Surfaces.get() : nullptr;
   context.SurfacesVersion = this->SurfaceUploads;
+  if (several && !this->UpdateComponents(window, property, step, unitScale, frame))
+  {
+    return false;
+  }
   return this->PrepareLightsAndShadows(frame);
 }
 

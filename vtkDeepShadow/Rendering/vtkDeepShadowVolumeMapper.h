@@ -10,9 +10,11 @@
  * masks, image sample distance, final colour window/level, ...) is said once per setting
  * (GetUnsupportedSettings()), never ignored in silence.
  *
- * Renders a single-component vtkImageData (point scalars of any numeric type; those wider
- * than 16-bit integers kept in single precision) with a vtkVolumeProperty: colour and
- * scalar-opacity transfer functions, scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
+ * Renders a vtkImageData (the point or cell array that the scalar mode and SelectScalarArray
+ * select, of any numeric type, those wider than 16-bit integers kept in single precision;
+ * 1 to 4 components, independent or dependent, combined as VTK's mapper combines them: Core/
+ * Components.h) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
+ * scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
  * gradient with the renderer's lights. Honours the image's spacing, origin and direction and
  * the vtkVolume's transform. Opaque geometry already drawn ends the rays (depth buffer).
  *
@@ -366,6 +368,13 @@ private:
    */
   bool UpdateOpacityFactors(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, vtkImageData* input,
     deepshadow::RayCastFrame& frame);
+  /**
+   * Components 1.. of a volume of several: their textures and tables (for the view's `step`),
+   * uploaded and rebuilt when they changed, into the frame's context; false (said) when the
+   * property cannot classify them (3 dependent components) or a component cannot be drawn.
+   */
+  bool UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step,
+    double unitScale, deepshadow::RayCastFrame& frame);
 #ifndef __VTK_WRAP__
   /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
   double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);

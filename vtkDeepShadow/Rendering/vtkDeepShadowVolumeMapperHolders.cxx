@@ -12,6 +12,7 @@
 #include "vtkImageData.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -201,4 +202,71 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
     (impl.Mask.GetTexture() ? impl.Mask.GetBytes() : 0) +
     (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
     (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
+}
+
+bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property,
+  double step, double unitScale, deepshadow::RayCastFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  const auto& others = impl.Drawn.GetOtherComponents();
+  deepshadow::ComponentSet set;
+  const std::string problem = adapter::MakeComponentSet(property, 1 + static_cast<int>(others.size()),
+    others.front()->GetPointData()->GetScalars()->GetDataType(), unitScale, set);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return false;
+  }
+  deepshadow::ShadowContext& context = frame.Context;
+  context.Mode = set.Mode;
+  context.Weights = set.Weights;
+  context.TextureScale = set.TextureScale;
+  context.ComponentsLitApart = set.LitApart(frame.Shade);
+  context.OtherComponents.clear();
+  const int filter = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION ? vtkTextureObject::Nearest
+                                                                                    : vtkTextureObject::Linear;
+  for (size_t c = 0; c < others.size(); ++c)
+  {
+    deepshadow::VolumeTexture& texture = impl.ComponentVolumes[c];
+    if (texture.NeedsUpdate(others[c], this->ReplaceNonFiniteScalars))
+    {
+      std::string warning;
+      if (!texture.Update(window, others[c], this->ReplaceNonFiniteScalars, warning))
+      {
+        this->ReportError("component " + std::to_string(c + 1) + ": " + texture.GetError());
+        return false;
+      }
+      this->LastPasses.emplace_back("component-upload");
+    }
+    texture.GetTexture()->SetMinificationFilter(filter);
+    texture.GetTexture()->SetMagnificationFilter(filter);
+    const deepshadow::TransferFunction& function = set.Transfers[c + 1];
+    // Its table: its function over its own range, for the view's step.
+    std::vector<double> key{ static_cast<double>(this->VolumeUploads), step,
+      static_cast<double>(this->TransferTableSize), texture.GetRange().x, texture.GetRange().y,
+      function.OpacityUnitDistance };
+    for (const deepshadow::PiecewiseLinear* f : { &function.Opacity, &function.Red, &function.Green, &function.Blue })
+    {
+      for (const auto& [x, y] : f->GetNodes())
+      {
+        key.insert(key.end(), { x, y });
+      }
+      key.push_back(-1.0);
+    }
+    deepshadow::TransferTableTexture& table = impl.ComponentTables[c];
+    if (table.NeedsUpdate(key))
+    {
+      table.Update(window, function, texture.GetRange(), this->TransferTableSize, step, std::move(key));
+      this->LastPasses.emplace_back("component-table");
+    }
+    deepshadow::ShadowContext::Component component;
+    component.Texture = texture.GetTexture();
+    component.ScalarMap = texture.GetScalarMap();
+    component.ShaderScalar = texture.GetShaderScalar();
+    component.Range = texture.GetRange();
+    component.Transfer = function;
+    context.OtherComponents.push_back(component);
+    frame.ComponentTransfers.push_back(table.GetTexture());
+  }
+  return true;
 }

@@ -19,6 +19,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ public:
   deepshadow::TransferTableTexture Transfer;
   deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
   deepshadow::VolumeTexture Mask;                   // a binary mask (Core/Mask.h)
+  // Components 1.. of a volume of several (Core/Components.h): a texture and a table each.
+  std::array<deepshadow::VolumeTexture, 3> ComponentVolumes;
+  std::array<deepshadow::TransferTableTexture, 3> ComponentTables;
   int MaskUploads = 0;
   deepshadow::OccupancyTexture Occupancy;
   deepshadow::BoundHierarchy Bound;
@@ -61,6 +65,11 @@ public:
     this->Volume.Release(window);
     this->Transfer.Release(window);
     this->GradientOpacity.Release(window);
+    for (size_t c = 0; c < this->ComponentVolumes.size(); ++c)
+    {
+      this->ComponentVolumes[c].Release(window);
+      this->ComponentTables[c].Release(window);
+    }
     this->Mask.Release(window);
     this->Occupancy.Release(window);
     this->Bound.Release(window);

@@ -93,6 +93,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     float upTo = t;
     //DeepShadow::Surfaces::TexelUpTo
     float scalar = sampleScalar(sampleIndex);
+    //DeepShadow::Components::TexelSample
     //DeepShadow::Isosurface::TexelSample
     //DeepShadow::OpacityScale::TexelSample
     //DeepShadow::GradientOpacity::TexelSample

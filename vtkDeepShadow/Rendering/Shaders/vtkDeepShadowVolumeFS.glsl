@@ -19,6 +19,7 @@ layout(location = 0) out vec4 fragColor;
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
+//DeepShadow::Components::ViewDec
 uniform mat4 u_clipToWorld;      // inverse view-projection
 uniform vec4 u_viewport;         // x, y, width, height in window pixels
 uniform float u_step;            // world distance between samples
@@ -105,6 +106,7 @@ void main()
     //DeepShadow::Isosurface::Impl
     //DeepShadow::Projection::Impl
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+    //DeepShadow::Components::Impl
     //DeepShadow::Mask::Impl
     //DeepShadow::GradientOpacity::Impl
     if (transfer.a <= 0.0)

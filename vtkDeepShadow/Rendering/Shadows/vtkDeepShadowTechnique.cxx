@@ -119,6 +119,10 @@ long long vtkDeepShadowTechnique::GetShadowBytes() const
   {
     bytes += impl.FeelerTable.GetBytes();
   }
+  for (int c = 0; c < impl.ComponentFeelerCount; ++c)
+  {
+    bytes += impl.ComponentFeelerTables[static_cast<size_t>(c)].GetBytes();
+  }
   if (this->Cached && impl.Cache)
   {
     bytes += static_cast<long long>(impl.CacheDims.x) * impl.CacheDims.y * impl.CacheDims.z *
@@ -246,8 +250,21 @@ void Internals::UpdateFeelerTable(
   if (impl.FeelerTable.NeedsUpdate(tableKey))
   {
     impl.FeelerTable.Update(
-      context.Window, context.Transfer, context.Range, context.TableSize, step, std::move(tableKey));
+      context.Window, context.Transfer, context.Range, context.TableSize, step, tableKey);
     self->LastPasses.emplace_back("feeler-table");
+  }
+  // Components 1..: each its own function over its own range (the key covers them all).
+  impl.ComponentFeelerCount = static_cast<int>(context.OtherComponents.size());
+  for (int c = 0; c < impl.ComponentFeelerCount; ++c)
+  {
+    const deepshadow::ShadowContext::Component& component = context.OtherComponents[static_cast<size_t>(c)];
+    deepshadow::TransferTableTexture& table = impl.ComponentFeelerTables[static_cast<size_t>(c)];
+    std::vector<double> key = tableKey;
+    key.insert(key.end(), { static_cast<double>(c), component.Range.x, component.Range.y });
+    if (table.NeedsUpdate(key))
+    {
+      table.Update(context.Window, component.Transfer, component.Range, context.TableSize, step, std::move(key));
+    }
   }
 }
 
@@ -435,6 +452,10 @@ std::string vtkDeepShadowTechnique::GetShaderFeatureSource(bool direct) const
 void vtkDeepShadowTechnique::ActivateFeelerTable()
 {
   this->Impl->FeelerTable.GetTexture()->Activate();
+  for (int c = 0; c < this->Impl->ComponentFeelerCount; ++c)
+  {
+    this->Impl->ComponentFeelerTables[static_cast<size_t>(c)].GetTexture()->Activate();
+  }
 }
 
 void vtkDeepShadowTechnique::DeactivateFeelerTable()
@@ -442,6 +463,13 @@ void vtkDeepShadowTechnique::DeactivateFeelerTable()
   if (this->Impl->FeelerTable.GetTexture())
   {
     this->Impl->FeelerTable.GetTexture()->Deactivate();
+  }
+  for (int c = 0; c < this->Impl->ComponentFeelerCount; ++c)
+  {
+    if (vtkTextureObject* table = this->Impl->ComponentFeelerTables[static_cast<size_t>(c)].GetTexture())
+    {
+      table->Deactivate();
+    }
   }
 }
 
@@ -451,6 +479,11 @@ void Internals::SetFeelerUniforms(const vtkDeepShadowTechnique* self,
   const double step = FeelerStep(self, context);
   const deepshadow::ShadowParameters parameters = self->GetParameters();
   sink.Set("u_feelerTable", self->Impl->FeelerTable.GetTexture()->GetTextureUnit());
+  for (int c = 0; c < self->Impl->ComponentFeelerCount; ++c)
+  {
+    sink.Set(("u_componentFeelerTable" + std::to_string(c + 1)).c_str(),
+      self->Impl->ComponentFeelerTables[static_cast<size_t>(c)].GetTexture()->GetTextureUnit());
+  }
   sink.Set("u_feelerStep", static_cast<float>(step));
   // Per-sample opacity thresholds are compared with the table's step-corrected opacity (an
   // isosurface's is uncorrected).
@@ -560,6 +593,10 @@ void vtkDeepShadowTechnique::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& impl = *this->Impl;
   impl.FeelerTable.Release(window);
+  for (auto& table : impl.ComponentFeelerTables)
+  {
+    table.Release(window);
+  }
   impl.ReleaseCache(window);
   impl.OtherBuild.Release();
   impl.Slots.Invalidate();

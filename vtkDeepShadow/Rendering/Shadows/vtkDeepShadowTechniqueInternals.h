@@ -18,6 +18,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <memory>
 #include <set>
 #include <string>
@@ -123,6 +124,9 @@ public:
   // The feeler's table: the casting transfer function, opacity corrected for the feeler step
   // (the same holder as the ray caster's table).
   deepshadow::TransferTableTexture FeelerTable;
+  // Components 1.. of a volume of several (their functions over their ranges, the same step).
+  std::array<deepshadow::TransferTableTexture, 3> ComponentFeelerTables;
+  int ComponentFeelerCount = 0; // how many of them are in use
   // Zero-opacity blocks of the volume's opacity may be skipped (not with a shadow property).
   bool SkipEmpty = true;
   deepshadow::ShadowSlots Slots;

@@ -73,9 +73,10 @@ vtkImageData* DrawnScalars::Update(vtkVolumeMapper* mapper, vtkImageData* input,
     return nullptr;
   }
   const bool cells = cellFlag == 1;
-  if (!cells && array == input->GetPointData()->GetScalars())
+  if (!cells && array == input->GetPointData()->GetScalars() && array->GetNumberOfComponents() == 1)
   {
     this->Cells = false;
+    this->Others.clear();
     return input; // drawn as it is
   }
   const bool same = input == this->Source && input->GetMTime() == this->SourceTime &&
@@ -109,11 +110,42 @@ bool DrawnScalars::Build(vtkImageData* input, vtkAbstractArray* array, bool cell
       ", not numbers that can be drawn";
     return false;
   }
-  if (!cells)
+  this->Others.clear();
+  const int components = values->GetNumberOfComponents();
+  if (!cells && components == 1)
   {
     this->Image->Initialize();
     this->Image->CopyStructure(input);
     this->Image->GetPointData()->SetScalars(values);
+    return true;
+  }
+  if (!cells)
+  {
+    if (components > MaxComponents)
+    {
+      error = "the volume's scalars have " + std::to_string(components) + " components; at most " +
+        std::to_string(MaxComponents) + " are drawn";
+      return false;
+    }
+    // One image per component, in the array's own type: each is a volume of its own to the
+    // textures and the twin (Core/Components.h combines them).
+    for (int c = 0; c < components; ++c)
+    {
+      vtkSmartPointer<vtkDataArray> single = vtk::TakeSmartPointer(values->NewInstance());
+      single->SetNumberOfComponents(1);
+      single->SetNumberOfTuples(values->GetNumberOfTuples());
+      single->CopyComponent(0, values, c);
+      single->SetName(values->GetName());
+      vtkImageData* image = this->Image;
+      if (c > 0)
+      {
+        this->Others.push_back(vtkSmartPointer<vtkImageData>::New());
+        image = this->Others.back();
+      }
+      image->Initialize();
+      image->CopyStructure(input);
+      image->GetPointData()->SetScalars(single);
+    }
     return true;
   }
   if (values->GetNumberOfComponents() != 1)

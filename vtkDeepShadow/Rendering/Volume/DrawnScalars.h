@@ -8,16 +8,21 @@
 //   texture clamps), over the box of the input's points. That field is piecewise trilinear
 //   between centres, so it is resampled exactly onto a point grid of half the spacing, 2n + 1
 //   points for n cells per axis, kept in single precision (8 times the cells' count).
+// - Point scalars of 2 to 4 components are drawn as that many volumes, one per component
+//   (copies in the array's type): the image drawn is component 0, GetOtherComponents() the
+//   rest (Core/Components.h says how they combine).
 #ifndef vtkDeepShadowDrawnScalars_h
 #define vtkDeepShadowDrawnScalars_h
 
+#include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 
 #include <string>
+#include <vector>
 
 class vtkAbstractArray;
-class vtkImageData;
 class vtkVolumeMapper;
 
 namespace deepshadow
@@ -36,6 +41,12 @@ public:
    */
   vtkImageData* Update(vtkVolumeMapper* mapper, vtkImageData* input, std::string& error);
 
+  /** Most components per point. */
+  static constexpr int MaxComponents = 4;
+
+  /** Components 1.. of the last image when the array has several (else empty). */
+  const std::vector<vtkSmartPointer<vtkImageData>>& GetOtherComponents() const { return this->Others; }
+
   /** Whether the last image was drawn from cell scalars. */
   bool FromCells() const { return this->Cells; }
   /** How many times an image was built here (a cell array resampled or a point array set). */
@@ -45,6 +56,7 @@ private:
   bool Build(vtkImageData* input, vtkAbstractArray* array, bool cells, std::string& error);
 
   vtkNew<vtkImageData> Image;
+  std::vector<vtkSmartPointer<vtkImageData>> Others;
   // What Image was built from.
   vtkImageData* Source = nullptr;
   vtkMTimeType SourceTime = 0;

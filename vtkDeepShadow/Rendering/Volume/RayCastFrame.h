@@ -7,6 +7,8 @@
 #include "Core/Projection.h"
 #include "Volume/ShadowContext.h"
 
+#include <vector>
+
 class vtkDeepShadowTechnique;
 class vtkRenderer;
 class vtkTextureObject;
@@ -35,6 +37,7 @@ struct RayCastFrame
   /** The technique whose structures are ready; null without one, or when it failed. */
   vtkDeepShadowTechnique* Technique = nullptr;
   vtkTextureObject* Transfer = nullptr; // the transfer table
+  std::vector<vtkTextureObject*> ComponentTransfers; // components 1..'s tables (several components)
 
   // The mapper's properties and the pass's state for this frame, as the draw uses them.
   bool Jitter = false;

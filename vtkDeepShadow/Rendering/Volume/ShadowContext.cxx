@@ -38,6 +38,23 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
     key.insert(key.end(), { this->Gradient.MaxMagnitude, this->Gradient.IndexScale.x,
                             this->Gradient.IndexScale.y, this->Gradient.IndexScale.z });
   }
+  key.push_back(static_cast<double>(this->OtherComponents.size()));
+  if (!this->OtherComponents.empty())
+  {
+    key.insert(key.end(), { static_cast<double>(this->Mode), this->Weights.x, this->Weights.y, this->Weights.z,
+                            this->Weights.w, this->TextureScale.x });
+    for (const Component& component : this->OtherComponents)
+    {
+      key.push_back(component.Transfer.OpacityUnitDistance);
+      add(component.Transfer.Opacity);
+      if (colors)
+      {
+        add(component.Transfer.Red);
+        add(component.Transfer.Green);
+        add(component.Transfer.Blue);
+      }
+    }
+  }
   return key;
 }
 
@@ -45,6 +62,11 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   std::map<std::string, ShaderFeature>& runtime, bool surfaces) const
 {
   enabled.insert("VolumeSampling");
+  if (!this->OtherComponents.empty())
+  {
+    runtime["Components"] = ComponentsShaderFeature(1 + static_cast<int>(this->OtherComponents.size()),
+      static_cast<int>(this->Mode), this->ComponentsLitApart);
+  }
   if (!this->IsoValues.empty())
   {
     enabled.insert("Isosurface");
@@ -89,9 +111,58 @@ glm::dvec2 ShadowContext::ShaderRange() const
   return this->Range * this->ShaderScalar.x + this->ShaderScalar.y;
 }
 
+glm::dvec2 ShadowContext::ComponentTableMap(int c) const
+{
+  if (c == 0)
+  {
+    return this->ShaderTableMap();
+  }
+  const Component& component = this->OtherComponents[static_cast<size_t>(c - 1)];
+  TransferTable table; // its table spans its range, TableSize texels
+  table.RangeMin = component.Range.x;
+  table.RangeMax = component.Range.y;
+  table.Size = this->TableSize;
+  glm::dvec2 map = table.CoordinateMap(); // data value -> coordinate
+  if (this->Mode == ComponentMode::RGBA && c == 3)
+  {
+    // Looked up at RGBAOpacityValue: range.x + value * scale * (range.y - range.x).
+    const double width = component.Range.y - component.Range.x;
+    map = { map.x * this->TextureScale[3] * width, map.x * component.Range.x + map.y };
+  }
+  // From the shaders' scalar: value = (s - ShaderScalar.y) / ShaderScalar.x.
+  const double scale = map.x / component.ShaderScalar.x;
+  return { scale, map.y - component.ShaderScalar.y * scale };
+}
+
+void ShadowContext::SetComponentUniforms(UniformSink& sink) const
+{
+  for (int c = 0; c <= static_cast<int>(this->OtherComponents.size()); ++c)
+  {
+    const std::string index = "[" + std::to_string(c) + "]";
+    const glm::dvec2 scalarMap = c == 0 ? this->ScalarMap : this->OtherComponents[static_cast<size_t>(c - 1)].ScalarMap;
+    // RGBA's colour: the texture value, from the shaders' scalar.
+    const glm::dvec2 shaderScalar =
+      c == 0 ? this->ShaderScalar : this->OtherComponents[static_cast<size_t>(c - 1)].ShaderScalar;
+    const double colorScale = this->TextureScale[c] / shaderScalar.x;
+    sink.Set(("u_componentScalarMap" + index).c_str(), glm::vec2(scalarMap));
+    sink.Set(("u_componentTableMap" + index).c_str(), glm::vec2(this->ComponentTableMap(c)));
+    sink.Set(("u_componentColorMap" + index).c_str(), glm::vec2(colorScale, -shaderScalar.y * colorScale));
+    if (c > 0)
+    {
+      sink.Set(("u_component" + std::to_string(c)).c_str(),
+        this->OtherComponents[static_cast<size_t>(c - 1)].Texture->GetTextureUnit());
+    }
+  }
+  sink.Set("u_componentWeight", glm::vec4(this->Weights));
+}
+
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
 {
   this->SetSamplingUniforms(sink);
+  if (!this->OtherComponents.empty())
+  {
+    this->SetComponentUniforms(sink);
+  }
   if (this->GradientOpacityTable)
   {
     this->SetGradientOpacityUniforms(sink);
@@ -175,6 +246,10 @@ void ShadowContext::SetSurfacesUniforms(UniformSink& sink) const
 void ShadowContext::ActivateVolumeTextures() const
 {
   this->Volume->Activate();
+  for (const Component& component : this->OtherComponents)
+  {
+    component.Texture->Activate();
+  }
   if (this->GradientOpacityTable)
   {
     this->GradientOpacityTable->Activate();
@@ -202,6 +277,10 @@ void ShadowContext::ActivateVolumeTextures() const
 void ShadowContext::DeactivateVolumeTextures() const
 {
   this->Volume->Deactivate();
+  for (const Component& component : this->OtherComponents)
+  {
+    component.Texture->Deactivate();
+  }
   if (this->GradientOpacityTable)
   {
     this->GradientOpacityTable->Deactivate();

@@ -7,6 +7,7 @@
 #include "GL/UniformSink.h"
 #include "Core/Light.h"
 #include "ShaderComposer.h"
+#include "Core/Components.h"
 #include "Core/GradientOpacity.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
@@ -113,6 +114,27 @@ struct ShadowContext
   glm::dvec2 MaskToData{ 1.0, 0.0 }; // texel -> the mask's data value
   int MaskVersion = 0;               // increments with every mask upload
 
+  /**
+   * A volume of several components (Core/Components.h, Features/Components.glsl), drawn and
+   * cast: components 1.. as the GPU holds them (component 0 is Volume, with ScalarMap,
+   * ShaderScalar, Range and Transfer), their mode and weights. Empty: one component.
+   */
+  struct Component
+  {
+    vtkTextureObject* Texture = nullptr;
+    glm::dvec2 ScalarMap{ 1.0, 0.0 };    // texel -> the shaders' scalar
+    glm::dvec2 ShaderScalar{ 1.0, 0.0 }; // data scalar -> the shaders' scalar
+    glm::dvec2 Range{ 0.0, 1.0 };        // finite data range
+    TransferFunction Transfer;           // its function (dependent: the volume's)
+  };
+  std::vector<Component> OtherComponents;
+  ComponentMode Mode = ComponentMode::Independent;
+  glm::dvec4 Weights{ 1.0 };
+  glm::dvec4 TextureScale{ 1.0 }; // RGBA: texture value per data value (ComponentSet)
+  bool ComponentsLitApart = false; // independent and shaded: each lit with its own gradient
+  /** The table coordinate map (shaders' scalar -> coordinate) of component `c` (0: ShaderTableMap). */
+  glm::dvec2 ComponentTableMap(int c) const;
+
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
 
   /**
@@ -136,6 +158,8 @@ struct ShadowContext
   void SetEmptySpaceUniforms(UniformSink& sink) const;
   void SetGradientOpacityUniforms(UniformSink& sink) const;
   void SetMaskUniforms(UniformSink& sink) const;
+  /** Feature Components' volume uniforms (textures, maps, ranges, weights). */
+  void SetComponentUniforms(UniformSink& sink) const;
   void SetBoundUniforms(UniformSink& sink) const;
   void SetSurfacesUniforms(UniformSink& sink) const;
   /** Binds (releases) the textures those features read. */

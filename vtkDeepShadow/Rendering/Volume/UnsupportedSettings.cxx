@@ -37,11 +37,28 @@ const char* BlendModeName(int mode)
 }
 
 std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume,
-  bool fromCells, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
+  bool fromCells, int components, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
 {
   std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
-  if (blend == vtkVolumeMapper::SLICE_BLEND)
+  if (components > 1)
+  {
+    // Several components (Core/Components.h) are drawn composite, without these.
+    if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+    {
+      said.push_back(std::string("several components are drawn with composite blending only: ") +
+        BlendModeName(blend) + " is drawn composite");
+    }
+    if (property && adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
+    {
+      said.push_back("gradient opacity is not drawn with several components: the volume is drawn without it");
+    }
+    if (mapper->GetMaskInput())
+    {
+      said.push_back("masks are not drawn with several components: the volume is drawn without the mask");
+    }
+  }
+  else if (blend == vtkVolumeMapper::SLICE_BLEND)
   {
     said.push_back(std::string("blend mode ") + BlendModeName(blend) +
       " is not supported: the volume is drawn with composite blending");
@@ -72,7 +89,8 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
     said.push_back("2D transfer functions (TF_2D) are not supported: the 1D functions are used");
   }
   // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
-  if (vtkImageData* mask = mapper->GetMaskInput())
+  vtkImageData* mask = mapper->GetMaskInput();
+  if (mask && components == 1)
   {
     if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
     {

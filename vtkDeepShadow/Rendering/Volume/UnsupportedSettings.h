@@ -21,9 +21,10 @@ namespace deepshadow
  * (`propMatrix`) scaled differently along its axes, whose opacity per dataset unit is
  * approximated; and, when a shadow technique is set (`shadowed`), that projection blend
  * modes have no shadows. `drawn` is the image drawn (DrawnScalars), `fromCells` whether
- * from cell scalars. */
+ * from cell scalars, `components` how many per voxel (several: drawn composite, without
+ * gradient opacity or a mask). */
 std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* drawn,
-  bool fromCells, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed);
+  bool fromCells, int components, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed);
 
 }
 #endif

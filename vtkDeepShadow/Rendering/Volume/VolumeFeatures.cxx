@@ -46,6 +46,35 @@ void UnbindSampling(const Frame& f)
   f.Transfer->Deactivate();
 }
 
+// Components 1..: their textures and the view's tables, and each component's material.
+void BindComponents(const Frame& f, UniformSink& sink)
+{
+  const ShadowContext& c = f.Context;
+  for (size_t i = 0; i < c.OtherComponents.size(); ++i)
+  {
+    c.OtherComponents[i].Texture->Activate();
+    f.ComponentTransfers[i]->Activate();
+    sink.Set(("u_componentTransfer" + std::to_string(i + 1)).c_str(), f.ComponentTransfers[i]->GetTextureUnit());
+  }
+  c.SetComponentUniforms(sink);
+  for (int i = 0; i <= static_cast<int>(c.OtherComponents.size()); ++i)
+  {
+    // Dependent components are lit with component 0's material (as VTK's).
+    const Material m = adapter::MakeMaterial(f.Property, c.Mode == ComponentMode::Independent ? i : 0);
+    sink.Set(("u_componentMaterial[" + std::to_string(i) + "]").c_str(),
+      glm::vec4(m.Ambient, m.Diffuse, m.Specular, m.SpecularPower));
+  }
+}
+
+void UnbindComponents(const Frame& f)
+{
+  for (size_t i = 0; i < f.Context.OtherComponents.size(); ++i)
+  {
+    f.Context.OtherComponents[i].Texture->Deactivate();
+    f.ComponentTransfers[i]->Deactivate();
+  }
+}
+
 // The projection's mode, the normalization of the shaders' scalar over the data's range, and
 // the average's scalar range in the shaders' scalar (clamped to what a float holds).
 void BindProjection(const Frame& f, UniformSink& sink)
@@ -99,6 +128,13 @@ const std::vector<VolumeFeature>& VolumeFeatures()
 {
   static const std::vector<VolumeFeature> features = {
     { "VolumeSampling", [](const Frame&) { return true; }, nullptr, BindSampling, UnbindSampling },
+    { "Components", [](const Frame& f) { return !f.Context.OtherComponents.empty(); },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Runtime["Components"] = ComponentsShaderFeature(1 + static_cast<int>(f.Context.OtherComponents.size()),
+          static_cast<int>(f.Context.Mode), f.Context.ComponentsLitApart);
+        features.Labels.emplace_back("Components");
+      },
+      BindComponents, UnbindComponents },
     { "GradientOpacity", [](const Frame& f) { return f.Context.GradientOpacityTable != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Context.GradientOpacityTable->Activate();

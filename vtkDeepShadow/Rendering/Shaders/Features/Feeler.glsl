@@ -8,6 +8,7 @@
 // coloured (feature FeelerColored), stopped once below u_feelerTermination (0: never).
 //@Dec
 //DeepShadow::FeelerColored::Dec
+//DeepShadow::Components::FeelerDec
 uniform sampler2D u_feelerTable;   // RGBA table; alpha = opacity corrected for u_feelerStep
 uniform float u_feelerStep;        // world units
 uniform float u_feelerThreshold;   // accumulated opacity, corrected opacity or normalized scalar
@@ -23,6 +24,7 @@ vec4 feelerSample(float scalar)
 {
   //DeepShadow::Isosurface::FeelerLookup
   vec4 rgba = texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+  //DeepShadow::Components::FeelerLookup
   //DeepShadow::OpacityScale::FeelerLookup
   return rgba;
 }
@@ -106,6 +108,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     vec3 sampleIndex = start + t * indexDirection;
     //DeepShadow::EmptySpace::FeelerSkip
     float scalar = sampleScalar(sampleIndex);
+    //DeepShadow::Components::FeelerSample
     //DeepShadow::Isosurface::FeelerSample
     //DeepShadow::OpacityScale::FeelerSample
     //DeepShadow::GradientOpacity::FeelerSample

@@ -1,4 +1,4 @@
 // Feature Isotropic: light scattered equally in all directions, for volumes that are not
 // shaded but receive shadows (the reference's diffuse term without the normal).
 //@Surface
-    contribution = u_material.y * u_lightDiffuse[i] * color;
+    contribution = material.y * u_lightDiffuse[i] * color;

@@ -21,6 +21,13 @@ uniform vec3 u_lightEye;                   // the eye, for it
 uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
+
+// The material of what is lit: the volume's, or the component's being lit.
+vec4 lightMaterial()
+{
+  //DeepShadow::Components::Material
+  return u_material;
+}
 //DeepShadow::Gradient::Dec
 //DeepShadow::ShadowGrid::Dec
 //DeepShadow::Shadow::Dec
@@ -28,7 +35,8 @@ uniform int u_twoSidedLighting;
 
 vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
 {
-  vec3 lit = u_material.x * color * u_ambientLight;
+  vec4 material = lightMaterial();
+  vec3 lit = material.x * color * u_ambientLight;
   //DeepShadow::ShadowTerm::Start
   //DeepShadow::Gradient::Normal
   //DeepShadow::MeshNormal::Normal
@@ -68,5 +76,11 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   //DeepShadow::ShadowTerm::Return
   return clamp(lit, 0.0, 1.0);
 }
+//DeepShadow::Components::LightingDec
 //@Impl
+#ifdef COMPONENTS_LIT_APART
+    color = lightComponents(componentColors, g_componentValues, index, rayOrigin + receiverT * rayDirection,
+      -rayDirection);
+#else
     color = lightSample(color, index, rayOrigin + receiverT * rayDirection, -rayDirection);
+#endif

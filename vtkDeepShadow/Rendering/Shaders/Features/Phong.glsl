@@ -13,7 +13,7 @@
       }
       nDotL = max(nDotL, 0.0);
       nDotH = max(nDotH, 0.0);
-      float specular = nDotH > 0.0 ? pow(nDotH, u_material.w) : 0.0;
-      contribution = u_material.y * nDotL * u_lightDiffuse[i] * color +
-        u_material.z * specular * u_lightSpecular[i];
+      float specular = nDotH > 0.0 ? pow(nDotH, material.w) : 0.0;
+      contribution = material.y * nDotL * u_lightDiffuse[i] * color +
+        material.z * specular * u_lightSpecular[i];
     }

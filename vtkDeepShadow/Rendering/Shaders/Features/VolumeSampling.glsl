@@ -13,16 +13,25 @@ float sampleScalar(vec3 index)
   return texture(u_volume, (index + 0.5) / u_dims).r * u_scalarMap.x + u_scalarMap.y;
 }
 
-// Half the scalar's central differences over +-u_gradientReach voxels, for shading and
-// gradient opacity (deepshadow::VolumeGrid::IndexGradient; 2 on a grid resampled from cells).
+//DeepShadow::Components::Dec
+
+// The value gradients are taken of: the scalar, or the component being lit.
+float gradientSample(vec3 index)
+{
+  //DeepShadow::Components::GradientSample
+  return sampleScalar(index);
+}
+
+// Half the central differences over +-u_gradientReach voxels, for shading and gradient
+// opacity (deepshadow::VolumeGrid::IndexGradient; 2 on a grid resampled from cells).
 uniform float u_gradientReach;
 vec3 indexGradient(vec3 index)
 {
   float r = u_gradientReach;
   vec3 g;
-  g.x = sampleScalar(index + vec3(r, 0.0, 0.0)) - sampleScalar(index - vec3(r, 0.0, 0.0));
-  g.y = sampleScalar(index + vec3(0.0, r, 0.0)) - sampleScalar(index - vec3(0.0, r, 0.0));
-  g.z = sampleScalar(index + vec3(0.0, 0.0, r)) - sampleScalar(index - vec3(0.0, 0.0, r));
+  g.x = gradientSample(index + vec3(r, 0.0, 0.0)) - gradientSample(index - vec3(r, 0.0, 0.0));
+  g.y = gradientSample(index + vec3(0.0, r, 0.0)) - gradientSample(index - vec3(0.0, r, 0.0));
+  g.z = gradientSample(index + vec3(0.0, 0.0, r)) - gradientSample(index - vec3(0.0, 0.0, r));
   return 0.5 * g;
 }
 

@@ -1,7 +1,8 @@
 // Bad input gets one clear error (once, not every frame), no crash, and no garbage: the
 // volume (or mesh) is not drawn and the picture shows only the background.
 //   Data: no input, an empty image, zero extent (N x N x 1), flat cell scalars, no scalars, a
-//   named array that is not there, three components, unsupported scalar types (int, double),
+//   named array that is not there, five components (2-4 are drawn: TestComponents), three
+//   dependent ones, unsupported scalar types (int, double),
 //   NaN and Inf samples (an error, or with ReplaceNonFiniteScalars a warning and a defined
 //   picture), a volume beyond the GL's 3D texture limit.
 //   Placement and settings (silent before issue 17): NaN spacing and origin, a zero or NaN
@@ -241,8 +242,11 @@ int TestBadInput(int, char*[])
       s.Mapper->SelectScalarArray("density");
     }), "no point array 'density'", false) && ok;
   }
-  ok = Expect("three components", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR, 3)),
-         "3 components", false) && ok;
+  ok = Expect("five components", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR, 5)),
+         "5 components; at most 4", false) && ok;
+  ok = Expect("three dependent components", RenderBad(Image(8, 8, 8, VTK_UNSIGNED_CHAR, 3), false,
+                [](Scene& s) { s.Property->SetIndependentComponents(0); }),
+         "3 dependent components", false) && ok;
   ok = Expect("bit scalars", RenderBad(Image(8, 8, 8, VTK_BIT)), "scalar type bit", false) && ok;
   {
     auto huge = Image(8, 8, 8, VTK_DOUBLE);
