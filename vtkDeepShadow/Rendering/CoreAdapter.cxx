@@ -1,9 +1,9 @@
+// VTK objects -> Core: inputs and their checks, placement, bounds, lights, camera. How a
+// volume looks (its property and blend mode) is in CoreAdapterAppearance.cxx.
 #include "CoreAdapter.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkContourValues.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -12,14 +12,12 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkVolumeMapper.h"
-#include "vtkVolumeProperty.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -36,8 +34,6 @@ namespace adapter
 {
 namespace
 {
-constexpr int DenseSamples = 4097;
-
 // Every numeric type VTK's mapper accepts. Unsigned char and (unsigned) short are uploaded
 // exactly; every other type is kept in single precision (24-bit mantissa: integers beyond
 // +-2^24 and doubles round to the nearest float), as a float texture normalized over the range.
@@ -63,75 +59,6 @@ bool IsSupportedType(int type)
     default:
       return false;
   }
-}
-
-PiecewiseLinear FromVTK(vtkPiecewiseFunction* function)
-{
-  const int size = function ? function->GetSize() : 0;
-  if (size == 0)
-  {
-    return PiecewiseLinear({ { 0.0, 0.0 } });
-  }
-  bool linear = true;
-  std::vector<std::pair<double, double>> nodes;
-  for (int i = 0; i < size; ++i)
-  {
-    double node[4];
-    function->GetNodeValue(i, node);
-    nodes.emplace_back(node[0], node[1]);
-    linear = linear && node[2] == 0.5 && node[3] == 0.0;
-  }
-  if (!linear && size > 1)
-  {
-    const double x0 = nodes.front().first, x1 = nodes.back().first;
-    std::vector<double> table(DenseSamples);
-    function->GetTable(x0, x1, DenseSamples, table.data());
-    nodes.clear();
-    for (int i = 0; i < DenseSamples; ++i)
-    {
-      nodes.emplace_back(x0 + (x1 - x0) * i / (DenseSamples - 1.0), table[i]);
-    }
-  }
-  return PiecewiseLinear(std::move(nodes), function->GetClamping() != 0);
-}
-
-void FromVTK(vtkColorTransferFunction* function, TransferFunction& tf)
-{
-  std::vector<std::pair<double, double>> r, g, b;
-  const int size = function ? function->GetSize() : 0;
-  bool linear = function && function->GetColorSpace() == VTK_CTF_RGB;
-  for (int i = 0; i < size; ++i)
-  {
-    double node[6];
-    function->GetNodeValue(i, node);
-    r.emplace_back(node[0], node[1]);
-    g.emplace_back(node[0], node[2]);
-    b.emplace_back(node[0], node[3]);
-    linear = linear && node[4] == 0.5 && node[5] == 0.0;
-  }
-  if (size == 0)
-  {
-    // VTK's default: a grey ramp is not assumed; an absent colour function is white.
-    r = g = b = { { 0.0, 1.0 } };
-  }
-  else if (!linear && size > 1)
-  {
-    r.clear(), g.clear(), b.clear();
-    const double x0 = function->GetRange()[0], x1 = function->GetRange()[1];
-    for (int i = 0; i < DenseSamples; ++i)
-    {
-      const double x = x0 + (x1 - x0) * i / (DenseSamples - 1.0);
-      double rgb[3];
-      function->GetColor(x, rgb);
-      r.emplace_back(x, rgb[0]);
-      g.emplace_back(x, rgb[1]);
-      b.emplace_back(x, rgb[2]);
-    }
-  }
-  const bool clamp = !function || function->GetClamping() != 0;
-  tf.Red = PiecewiseLinear(std::move(r), clamp);
-  tf.Green = PiecewiseLinear(std::move(g), clamp);
-  tf.Blue = PiecewiseLinear(std::move(b), clamp);
 }
 
 glm::dvec3 ToGlm3(const double v[3])
@@ -298,68 +225,6 @@ std::string CheckVolumePlacement(const glm::dmat4& indexToWorld, const glm::ivec
   return std::string();
 }
 
-std::string CheckVolumeProperty(vtkVolumeProperty* property)
-{
-  const double unit = property->GetScalarOpacityUnitDistance(0);
-  if (!(unit > 0.0) || !std::isfinite(unit))
-  {
-    std::ostringstream why;
-    why << "the volume property's scalar opacity unit distance is " << unit
-        << "; it must be positive and finite";
-    return why.str();
-  }
-  auto finite = [](const double* v, int n) {
-    for (int i = 0; i < n; ++i)
-    {
-      if (!std::isfinite(v[i]))
-      {
-        return false;
-      }
-    }
-    return true;
-  };
-  if (vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0))
-  {
-    for (int i = 0; i < opacity->GetSize(); ++i)
-    {
-      double node[4];
-      opacity->GetNodeValue(i, node);
-      if (!finite(node, 4))
-      {
-        return "the scalar opacity function's point " + std::to_string(i) + " is not finite";
-      }
-    }
-  }
-  if (property->GetColorChannels(0) == 1)
-  {
-    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
-    {
-      for (int i = 0; i < gray->GetSize(); ++i)
-      {
-        double node[4];
-        gray->GetNodeValue(i, node);
-        if (!finite(node, 4))
-        {
-          return "the grey transfer function's point " + std::to_string(i) + " is not finite";
-        }
-      }
-    }
-  }
-  else if (vtkColorTransferFunction* color = property->GetRGBTransferFunction(0))
-  {
-    for (int i = 0; i < color->GetSize(); ++i)
-    {
-      double node[6];
-      color->GetNodeValue(i, node);
-      if (!finite(node, 6))
-      {
-        return "the colour transfer function's point " + std::to_string(i) + " is not finite";
-      }
-    }
-  }
-  return std::string();
-}
-
 std::string CheckLights(const std::vector<Light>& lights)
 {
   for (size_t i = 0; i < lights.size(); ++i)
@@ -453,60 +318,6 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
     glm::ivec3(dims[0], dims[1], dims[2]), std::move(values), IndexToWorld(image, propMatrix));
 }
 
-ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dataRange)
-{
-  ProjectionSettings projection;
-  switch (mapper->GetBlendMode())
-  {
-    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
-      projection.Mode = BlendMode::Maximum;
-      break;
-    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
-      projection.Mode = BlendMode::Minimum;
-      break;
-    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
-      projection.Mode = BlendMode::Average;
-      break;
-    case vtkVolumeMapper::ADDITIVE_BLEND:
-      projection.Mode = BlendMode::Additive;
-      break;
-    default: // composite; isosurface and slice are said unsupported and drawn composite
-      break;
-  }
-  projection.RangeMin = dataRange.x;
-  projection.RangeMax = dataRange.y;
-  projection.AverageMin = mapper->GetAverageIPScalarRange()[0];
-  projection.AverageMax = mapper->GetAverageIPScalarRange()[1];
-  return projection;
-}
-
-std::optional<GradientOpacity> MakeGradientOpacity(
-  vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing)
-{
-  // HasGradientOpacity first: GetStoredGradientOpacity would create a default function in
-  // the user's property, and VTK's mapper, drawing the same property later, would then take
-  // gradient opacity as set (it changes its multi-component pictures).
-  if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND || !property ||
-    property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D || !property->HasGradientOpacity(0) ||
-    property->GetDisableGradientOpacity(0))
-  {
-    return std::nullopt;
-  }
-  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(0);
-  bool changes = false;
-  for (int i = 0; function && i < function->GetSize(); ++i)
-  {
-    double node[4];
-    function->GetNodeValue(i, node);
-    changes = changes || node[1] != 1.0;
-  }
-  if (!changes)
-  {
-    return std::nullopt;
-  }
-  return GradientOpacity::For(FromVTK(function), range, spacing);
-}
-
 vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume)
 {
   vtkImageData* mask = mapper->GetMaskInput();
@@ -518,33 +329,6 @@ vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume
   mask->GetDimensions(maskDims);
   volume->GetDimensions(dims);
   return std::equal(dims, dims + 3, maskDims) && mask->GetPointData()->GetScalars() ? mask : nullptr;
-}
-
-std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given)
-{
-  std::vector<double> values;
-  if (mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND && property)
-  {
-    vtkContourValues* contours = property->GetIsoSurfaceValues();
-    for (int i = 0; i < contours->GetNumberOfContours(); ++i)
-    {
-      const double value = contours->GetValue(i);
-      if (std::isfinite(value))
-      {
-        values.push_back(value);
-      }
-    }
-    std::sort(values.begin(), values.end());
-  }
-  if (given)
-  {
-    *given = static_cast<int>(values.size());
-  }
-  if (values.size() > static_cast<size_t>(MaxIsoValues))
-  {
-    values.resize(static_cast<size_t>(MaxIsoValues));
-  }
-  return values;
 }
 
 std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData*>& bounds,
@@ -632,22 +416,6 @@ double DatasetLengthScale(const vtkMatrix4x4* propMatrix, bool* anisotropic)
   return std::isfinite(scale) && scale > 0.0 ? scale : 1.0;
 }
 
-TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitScale, int component)
-{
-  TransferFunction tf;
-  tf.Opacity = FromVTK(property->GetScalarOpacity(component));
-  if (property->GetColorChannels(component) == 1)
-  {
-    tf.Red = tf.Green = tf.Blue = FromVTK(property->GetGrayTransferFunction(component));
-  }
-  else
-  {
-    FromVTK(property->GetRGBTransferFunction(component), tf);
-  }
-  tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(component) * unitScale;
-  return tf;
-}
-
 SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
 {
   SurfaceMaterial material;
@@ -660,60 +428,6 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
   material.Shading.Specular = property->GetSpecular();
   material.Shading.SpecularPower = property->GetSpecularPower();
   return material;
-}
-
-Material MakeMaterial(vtkVolumeProperty* property, int component)
-{
-  Material material;
-  material.Ambient = property->GetAmbient(component);
-  material.Diffuse = property->GetDiffuse(component);
-  material.Specular = property->GetSpecular(component);
-  material.SpecularPower = property->GetSpecularPower(component);
-  return material;
-}
-
-std::string MakeComponentSet(
-  vtkVolumeProperty* property, int count, int dataType, double unitScale, ComponentSet& set)
-{
-  const bool independent = property->GetIndependentComponents() != 0;
-  if (!independent && count != 2 && count != 4)
-  {
-    return std::to_string(count) + " dependent components are not drawn (VTK's mapper draws 2, luminance and "
-                                    "opacity, or 4, RGBA); set IndependentComponents on";
-  }
-  set.Mode = independent ? ComponentMode::Independent
-    : count == 2         ? ComponentMode::LuminanceAlpha
-                         : ComponentMode::RGBA;
-  set.Transfers.clear();
-  set.Materials.clear();
-  for (int i = 0; i < count; ++i)
-  {
-    // Dependent components share component 0's functions and material, over their own range.
-    const int source = independent ? i : 0;
-    set.Transfers.push_back(MakeTransferFunction(property, unitScale, source));
-    set.Materials.push_back(MakeMaterial(property, source));
-    set.Weights[i] = independent ? property->GetComponentWeight(i) : 1.0;
-    // What VTK's texture holds: 8- and 16-bit integers normalized by the type's largest.
-    switch (dataType)
-    {
-      case VTK_UNSIGNED_CHAR:
-        set.TextureScale[i] = 1.0 / VTK_UNSIGNED_CHAR_MAX;
-        break;
-      case VTK_CHAR:
-      case VTK_SIGNED_CHAR:
-        set.TextureScale[i] = 1.0 / VTK_SIGNED_CHAR_MAX;
-        break;
-      case VTK_UNSIGNED_SHORT:
-        set.TextureScale[i] = 1.0 / VTK_UNSIGNED_SHORT_MAX;
-        break;
-      case VTK_SHORT:
-        set.TextureScale[i] = 1.0 / VTK_SHORT_MAX;
-        break;
-      default:
-        set.TextureScale[i] = 1.0;
-    }
-  }
-  return std::string();
 }
 
 std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
