@@ -1,6 +1,7 @@
 """Compares PNGs written by the ParaView tests (system python3, VTK 9.1's PNG reader).
   compare.py diff A.png B.png MAX_RMSE MAX_FRACTION   difference within bounds (beyond 8/255)
   compare.py darker SHADOWED.png LIT.png FACTOR       the foreground's mean at most FACTOR of LIT's
+  compare.py drawn PICTURE.png FRACTION               at least FRACTION of its pixels differ from the corner's
 Prints the figures; exit 1 when the bound is not met."""
 import sys
 
@@ -20,6 +21,12 @@ def load(path):
 
 
 def main():
+    if sys.argv[1] == "drawn":
+        picture, fraction = load(sys.argv[2]), float(sys.argv[3])
+        drawn = float(numpy.mean(numpy.abs(picture - picture[0, 0]).max(axis=2) > 8.0 / 255.0))
+        ok = drawn >= fraction
+        print(f"{sys.argv[2]}: {100 * drawn:.1f}% of pixels drawn (>= {100 * fraction:.1f}%): {'ok' if ok else 'FAILED'}")
+        sys.exit(0 if ok else 1)
     mode, a, b = sys.argv[1:4]
     first, second = load(a), load(b)
     if mode == "diff":

@@ -45,6 +45,9 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       draw 1 "$out/none.png" "Shadowed Volume" none
       draw 1 "$out/dsm.png" "Shadowed Volume" dsm
       draw 1 "$out/dsm-all-lights.png" "Shadowed Volume" dsm 1
+      # The example users copy, as they run it.
+      DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" timeout -k 5 300 pvbatch "$source_dir/Examples/ParaView/shadowed_volume.py" \
+        "$out/example.png"
       ;;
     ranks)
       draw 1 "$out/none-1.png" "Shadowed Volume" none
@@ -65,6 +68,7 @@ case "$what" in
     # The key light's deep shadow darkens the volume; every light's more so.
     compare darker "$out/dsm.png" "$out/none.png" 0.97
     compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
+    compare drawn "$out/example.png" 0.05
     ;;
   ranks)
     # Unshadowed, two ranks' bricks composited by IceT match one rank.
