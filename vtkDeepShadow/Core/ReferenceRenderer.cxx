@@ -253,6 +253,9 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   const bool isosurface = !volume.IsoValues.empty();
   IsoCrossings crossings(isosurface ? &volume.IsoValues : nullptr);
   double previousT = t0; // an isosurface's receiver: the sample before its crossing
+  // Each light's shadow factor at the sample at hand, looked up once, when something needs it
+  // (held across samples so that the hot loop allocates nothing).
+  std::vector<std::optional<glm::dvec3>> factors;
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
@@ -327,8 +330,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (lit)
     {
       const glm::dvec3 position = ray.Origin + receiverT * ray.Direction;
-      // Each light's shadow factor, looked up once per sample, when something needs it.
-      std::vector<std::optional<glm::dvec3>> factors(scene.Lights.size());
+      factors.assign(scene.Lights.size(), std::nullopt);
       auto factorOf = [&](size_t l) {
         if (!factors[l])
         {
