@@ -14,7 +14,8 @@ export DEBIAN_FRONTEND=noninteractive
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 
-packages=(paraview xvfb openmpi-bin libopenmpi-dev python3-dev python3-numpy)
+packages=(paraview xvfb openmpi-bin libopenmpi-dev python3-dev python3-numpy
+  imagemagick) # import: the GUI test's screenshot of the whole screen
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

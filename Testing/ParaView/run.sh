@@ -2,7 +2,7 @@
 # The ParaView tests (ctest label "paraview"): pvbatch with the DeepShadow plugin, one MPI
 # rank and two, under a private Xvfb. Exit 77 (skipped) when the plugin is not built
 # (scripts/build-paraview-plugin.sh builds it; scripts/test.sh does so first).
-#   run.sh SOURCE_DIR OUT_DIR plugin|ranks
+#   run.sh SOURCE_DIR OUT_DIR plugin|ranks|gui
 set -euo pipefail
 source_dir=$1
 out=$2
@@ -53,6 +53,23 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       draw 1 "$out/none-1.png" "Shadowed Volume" none
       draw 2 "$out/none-2.png" "Shadowed Volume" none
       ;;
+    gui)
+      # The desktop application, in a home of its own (no welcome dialog, nothing left in
+      # the user's settings): it runs gui.py, then the whole screen is captured.
+      export HOME="$out/home" XDG_RUNTIME_DIR="$out/runtime"
+      mkdir -p "$HOME/.config/ParaView" "$XDG_RUNTIME_DIR"
+      chmod 700 "$XDG_RUNTIME_DIR"
+      printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' > "$HOME/.config/ParaView/ParaView5.11.0.ini"
+      rm -f "$out/gui-report.txt"
+      DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" DEEPSHADOW_GUI_REPORT="$out/gui-report.txt" \
+        timeout -k 5 120 paraview --script="$here/gui.py" > "$out/paraview.log" 2>&1 &
+      gui=$!
+      for _ in $(seq 600); do [ -s "$out/gui-report.txt" ] && break; sleep 0.1; done
+      sleep 3 # the first frame drawn
+      import -window root "$out/gui.png"
+      kill "$gui" 2>/dev/null || true
+      wait "$gui" 2>/dev/null || true
+      ;;
   esac
 ) 2>&1 | { grep -v '^0x' || true; } # a backtrace's addresses say nothing here
 
@@ -73,5 +90,12 @@ case "$what" in
   ranks)
     # Unshadowed, two ranks' bricks composited by IceT match one rank.
     compare diff "$out/none-2.png" "$out/none-1.png" 0.01 0.01
+    ;;
+  gui)
+    cat "$out/gui-report.txt" 2>/dev/null || true
+    grep -q "^representation 'Shadowed Volume'$" "$out/gui-report.txt" &&
+      grep -q "^technique 'dsm'$" "$out/gui-report.txt" ||
+      { echo "the GUI did not show a Shadowed Volume: FAILED"; exit 1; }
+    compare drawn "$out/gui.png" 0.3
     ;;
 esac

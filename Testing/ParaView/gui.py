@@ -1,0 +1,23 @@
+"""Run by the paraview GUI (--script): loads the DeepShadow plugin as Tools > Manage Plugins
+would, shows a Wavelet as a "Shadowed Volume" and writes what the application sees to the
+file named by DEEPSHADOW_GUI_REPORT: the representation and its shadow properties."""
+import os
+
+from paraview.simple import (ColorBy, GetOpacityTransferFunction, LoadPlugin, Render, ResetCamera,
+                             SetActiveSource, Show, Wavelet)
+
+LoadPlugin(os.environ["DEEPSHADOW_PARAVIEW_PLUGIN"], remote=False, ns=globals())
+wavelet = Wavelet()
+display = Show(wavelet)
+display.Representation = "Shadowed Volume"
+ColorBy(display, ("POINTS", "RTData"))
+GetOpacityTransferFunction("RTData").Points = [37, 0.0, 0.5, 0.0, 150, 0.0, 0.5, 0.0, 276, 0.8, 0.5, 0.0]
+display.Shade = 1
+display.ShadowTechnique = "dsm"
+SetActiveSource(wavelet)
+ResetCamera()
+Render()
+with open(os.environ["DEEPSHADOW_GUI_REPORT"], "w") as report:
+    report.write(f"representation {display.Representation}\n")
+    report.write(f"technique {display.ShadowTechnique}\n")
+    report.write(f"lights {display.ShadowLights}\n")
