@@ -52,6 +52,11 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
     ranks)
       draw 1 "$out/none-1.png" "Shadowed Volume" none
       draw 2 "$out/none-2.png" "Shadowed Volume" none
+      # Shadows across ranks are not exchanged yet: said, once.
+      draw 2 "$out/dsm-2.png" "Shadowed Volume" dsm > "$out/dsm-2.log" 2>&1
+      said=$(grep -c "each rank's piece casts shadows onto itself only" "$out/dsm-2.log" || true)
+      echo "two ranks with dsm: the pieces' shadows said $said time(s)"
+      [ "$said" = 1 ] || { echo "not said once: FAILED"; exit 1; }
       ;;
     gui)
       # The desktop application, in a home of its own (no welcome dialog, nothing left in

@@ -7,6 +7,7 @@
 
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
@@ -144,6 +145,16 @@ int vtkDeepShadowVolumeRepresentation::ProcessViewRequest(
   if (request == vtkPVView::REQUEST_RENDER())
   {
     this->ChooseShadowLights();
+    // Under MPI each rank draws its piece, and its shadow structures see that piece only.
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    if (!this->SaidPiecesAlone && controller && controller->GetNumberOfProcesses() > 1 &&
+      this->TechniqueName != "none" && controller->GetLocalProcessId() == 0)
+    {
+      this->SaidPiecesAlone = true;
+      vtkWarningMacro(<< "shadows across " << controller->GetNumberOfProcesses()
+                      << " ranks: each rank's piece casts shadows onto itself only (the other "
+                         "pieces' shadows are not exchanged yet)");
+    }
   }
   return this->Superclass::ProcessViewRequest(request, in, out);
 }

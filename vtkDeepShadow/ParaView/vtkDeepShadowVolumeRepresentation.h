@@ -73,6 +73,7 @@ private:
   void ChooseShadowLights();
 
   int ShadowLights = 0;
+  bool SaidPiecesAlone = false; // the pieces of an MPI run shadow themselves only: said once
   vtkRenderer* Renderer = nullptr; // the view's, while the representation is in one
   std::string TechniqueName = "dsm";
   std::string ParameterText;
