@@ -45,6 +45,9 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       draw 1 "$out/none.png" "Shadowed Volume" none
       draw 1 "$out/dsm.png" "Shadowed Volume" dsm
       draw 1 "$out/dsm-all-lights.png" "Shadowed Volume" dsm 1
+      # Cell data, as ParaView selects it (cell field data, by name).
+      draw 1 "$out/cells-volume.png" "Volume" none 0 cells
+      draw 1 "$out/cells-none.png" "Shadowed Volume" none 0 cells
       # The example users copy, as they run it.
       DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" timeout -k 5 300 pvbatch "$source_dir/Examples/ParaView/shadowed_volume.py" \
         "$out/example.png"
@@ -90,6 +93,7 @@ case "$what" in
     # The key light's deep shadow darkens the volume; every light's more so.
     compare darker "$out/dsm.png" "$out/none.png" 0.97
     compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
+    compare diff "$out/cells-none.png" "$out/cells-volume.png" 0.012 0.02
     compare drawn "$out/example.png" 0.05
     ;;
   ranks)

@@ -1,21 +1,24 @@
 """pvbatch: a Wavelet drawn by the DeepShadow plugin's "Shadowed Volume" representation (or
 ParaView's own "Volume"), shaded, saved to a PNG. Arguments: PLUGIN OUTPUT.png
-REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS]]. Under mpirun every rank holds a brick of it."""
+REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS [cells]]]: "cells" colours by the Wavelet's values
+as cell data. Under mpirun every rank holds a brick of it."""
 import sys
 
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetOpacityTransferFunction,
-                             LoadPlugin, ResetCamera, SaveScreenshot, Show, Wavelet)
+                             LoadPlugin, PointDatatoCellData, ResetCamera, SaveScreenshot, Show, Wavelet)
 
 plugin, output, representation = sys.argv[1:4]
 LoadPlugin(plugin, remote=False, ns=globals())
 wavelet = Wavelet()
 wavelet.WholeExtent = [-24, 24, -24, 24, -24, 24]
+cells = len(sys.argv) > 6 and sys.argv[6] == "cells"
+source = PointDatatoCellData(Input=wavelet) if cells else wavelet
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [240, 240]
 view.OrientationAxesVisibility = 0
-display = Show(wavelet, view)
+display = Show(source, view)
 display.Representation = representation
-ColorBy(display, ("POINTS", "RTData"))
+ColorBy(display, ("CELLS" if cells else "POINTS", "RTData"))
 display.Shade = 1
 # Clear below 150, denser towards the peak: a lobed ball that shadows itself.
 GetOpacityTransferFunction("RTData").Points = [37, 0.0, 0.5, 0.0, 150, 0.0, 0.5, 0.0, 276, 0.8, 0.5, 0.0]
