@@ -7,6 +7,9 @@ Loads the DeepShadow plugin (DEEPSHADOW_PARAVIEW_PLUGIN, or the build tree's), r
 volume (a file ParaView has a reader for: .vti, .mha, .vtk, ...; none: a Wavelet), shows it as a
 "Shadowed Volume" with a deep shadow map cast by the view's key light, and saves a
 screenshot. Under `mpirun -np N pvbatch` each rank draws its piece (shadows per piece).
+
+shadowed_volume.pvsm beside it is the same scene as a ParaView state: load the plugin first
+(Tools > Manage Plugins, or LoadPlugin), then File > Load State (or LoadState in a script).
 """
 import os
 import sys

@@ -48,9 +48,11 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       # Cell data, as ParaView selects it (cell field data, by name).
       draw 1 "$out/cells-volume.png" "Volume" none 0 cells
       draw 1 "$out/cells-none.png" "Shadowed Volume" none 0 cells
-      # The example users copy, as they run it.
+      # The example users copy, as they run it, and the example state file.
       DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" timeout -k 5 300 pvbatch "$source_dir/Examples/ParaView/shadowed_volume.py" \
         "$out/example.png"
+      timeout -k 5 300 pvbatch "$here/load_state.py" "$plugin" "$source_dir/Examples/ParaView/shadowed_volume.pvsm" \
+        "$out/state.png" | tee "$out/state.log"
       ;;
     ranks)
       draw 1 "$out/none-1.png" "Shadowed Volume" none
@@ -95,6 +97,9 @@ case "$what" in
     compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
     compare diff "$out/cells-none.png" "$out/cells-volume.png" 0.012 0.02
     compare drawn "$out/example.png" 0.05
+    grep -q "representation 'Shadowed Volume', technique 'dsm'" "$out/state.log" ||
+      { echo "the state file did not restore a Shadowed Volume: FAILED"; exit 1; }
+    compare drawn "$out/state.png" 0.05
     ;;
   ranks)
     # Unshadowed, two ranks' bricks composited by IceT match one rank.
