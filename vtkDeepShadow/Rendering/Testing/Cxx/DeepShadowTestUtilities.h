@@ -622,6 +622,27 @@ struct ShadowScene
     return ok;
   }
 
+  /**
+   * Whether a deep shadow map darkens the floor under the ball (FloorUnderBall, summed over
+   * the channels) below 0.8 of its unshadowed brightness; prints both as "`what`: ...". The
+   * mapper is left with the deep shadow map.
+   */
+  bool DeepShadowDarkensFloor(const std::string& what)
+  {
+    auto brightness = [this] {
+      this->Window->Render();
+      const glm::dvec3 floor = FloorUnderBall(Grab(this->Window));
+      return floor.x + floor.y + floor.z;
+    };
+    this->Mapper->SetShadowTechnique(nullptr);
+    const double lit = brightness();
+    this->Mapper->SetShadowTechnique(vtkDeepShadowTechniqueFactory::New("dsm"));
+    const double shadowed = brightness();
+    std::printf("%s: floor under the ball %.3f without shadows, %.3f with the deep shadow map\n", what.c_str(),
+      lit, shadowed);
+    return Check((what + ": a deep shadow on the floor").c_str(), shadowed < 0.8 * lit);
+  }
+
   /** Mean colour of the floor in the ball's shadow (left of centre, lower quarter). */
   static glm::dvec3 FloorUnderBall(const Image& image)
   {
