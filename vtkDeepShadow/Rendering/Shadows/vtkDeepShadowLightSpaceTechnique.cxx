@@ -3,10 +3,13 @@
 #include "GL/ComputeProgram.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Volume/ShadowContext.h"
+#include "LightSpaceBricks.h"
 #include "ShadowSlots.h"
+#include "vtkDeepShadowBrickTotalsCS.h"
 #include "vtkDeepShadowLightSpace.h"
 #include "vtkDeepShadowLightSpaceCS.h"
 
+#include "vtkDeepShadowBrickExchange.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkTextureUnitManager.h"
@@ -30,9 +33,24 @@ public:
   std::vector<std::vector<deepshadow::ShadowMapFace>> Faces; // per slot
   deepshadow::ComputeProgram Build;
   unsigned int Deferred = 0; // the build's deferred texels: a count, then one uint each
+  // Other processes' bricks of the volume (vtkDeepShadowBrickExchange), and the pass that
+  // reads this brick's total transmittance per texel into Totals (RGBA32F, one layer per face).
+  deepshadow::LightSpaceBricks Bricks;
+  deepshadow::ComputeProgram TotalsPass;
+  unsigned int Totals = 0;
+  int TotalsLayers = 0;
+  std::string BrickProblem; // said once while it lasts
 
   void Release()
   {
+    if (this->Totals)
+    {
+      glDeleteTextures(1, &this->Totals);
+      this->Totals = 0;
+      this->TotalsLayers = 0;
+    }
+    this->TotalsPass.Release();
+    this->Bricks.Release();
     if (this->Texture)
     {
       glDeleteTextures(1, &this->Texture);
@@ -99,8 +117,21 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
       " exceeds this GL's texture limit of " + std::to_string(maxSize);
     return false;
   }
-  const deepshadow::CasterBounds bounds =
+  deepshadow::CasterBounds bounds =
     deepshadow::CasterBoundsOf(context.IndexToWorld, context.Dims, context.CastingSurfaces);
+  // With other bricks, every brick's faces see the union of their boxes (collective).
+  std::string problem;
+  const bool exchanging = maps.Bricks.BeginFrame(
+    bounds, self->MapSize, slots.Count(), self->GetParameters().IsColored() ? 3 : 1, problem);
+  if (problem != maps.BrickProblem && !problem.empty())
+  {
+    vtkWarningWithObjectMacro(self, << "shadows are not shared between bricks: " << problem);
+  }
+  maps.BrickProblem = problem;
+  if (maps.Bricks.UnionChanged())
+  {
+    slots.Invalidate();
+  }
   maps.Faces.resize(static_cast<size_t>(slots.Count()));
   int facesPerLight = 1;
   for (int slot = 0; slot < slots.Count(); ++slot)
@@ -112,9 +143,11 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   const int layersPerFace = this->GetLayersPerFace(context);
   const bool sameShape = maps.Texture && maps.Size == self->MapSize && maps.Format == format &&
     maps.LayersPerFace == layersPerFace;
-  // Grow only: fewer shadow-casting lights keep the others' maps.
-  const int slabs = std::max(sameShape ? maps.Slabs : 1, slots.Count());
-  facesPerLight = std::max(facesPerLight, sameShape ? maps.FacesPerLight : 1);
+  // Grow only: fewer shadow-casting lights keep the others' maps (not between bricks, whose
+  // layers must agree whatever each brick drew before).
+  const bool keep = sameShape && !exchanging;
+  const int slabs = std::max(keep ? maps.Slabs : 1, slots.Count());
+  facesPerLight = std::max(facesPerLight, keep ? maps.FacesPerLight : 1);
   const long long layers = static_cast<long long>(slabs) * facesPerLight * layersPerFace;
   if (layers > maxLayers)
   {
@@ -258,9 +291,92 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   return true;
 }
 
+bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::ShadowContext& context,
+  const deepshadow::ShadowSlots& slots, const std::set<int>& rebuilt, std::vector<double>& cacheKey)
+{
+  vtkDeepShadowLightSpaceTechnique* self = this->Self;
+  Maps& maps = *self->LightMaps;
+  if (!maps.Bricks.Exchanging())
+  {
+    return true;
+  }
+  const int layers = slots.Count() * maps.FacesPerLight;
+  const int channels = self->GetParameters().IsColored() ? 3 : 1;
+  if (!rebuilt.empty() || !maps.Totals || maps.TotalsLayers != layers)
+  {
+    // This brick's total per texel: the technique's own lookup beyond the texel ray's end.
+    const std::string lookup = "//@Dec\n" + std::string(vtkDeepShadowLightSpace) + self->GetMapLookupSource();
+    if (!Internals::BeginBuildPass(self, maps.TotalsPass, vtkDeepShadowBrickTotalsCS, context, "Lookup", lookup))
+    {
+      return false;
+    }
+    if (!maps.Totals || maps.TotalsLayers != layers)
+    {
+      if (maps.Totals)
+      {
+        glDeleteTextures(1, &maps.Totals);
+      }
+      glGenTextures(1, &maps.Totals);
+      vtkTextureUnitManager* units = context.Window->GetTextureUnitManager();
+      const int unit = units->Allocate();
+      context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Totals);
+      glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, self->MapSize, self->MapSize, layers);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      units->Free(unit);
+      maps.TotalsLayers = layers;
+    }
+    deepshadow::UniformSink sink(&maps.TotalsPass);
+    this->BindLookup(sink, context);
+    maps.TotalsPass.Set("u_slots", slots.Count());
+    glBindImageTexture(0, maps.Totals, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    maps.TotalsPass.Dispatch(glm::ivec3(self->MapSize, self->MapSize, layers), glm::ivec3(8, 8, 1));
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    self->UnbindLookup();
+    Internals::EndBuildPass(self, context);
+    self->LastPasses.emplace_back("light-space-totals");
+    maps.Bricks.ReadTotals(context.Window, maps.Totals, self->MapSize, layers, channels);
+  }
+  std::vector<deepshadow::Light> slotLights;
+  for (int slot = 0; slot < slots.Count(); ++slot)
+  {
+    slotLights.push_back(context.Lights[static_cast<size_t>(slots.Light(slot))]);
+  }
+  std::string problem;
+  if (!maps.Bricks.Exchange(context.Window, slotLights, maps.FacesPerLight, problem))
+  {
+    self->LastError = problem;
+    return false;
+  }
+  if (maps.Bricks.Overlapping() && maps.BrickProblem.empty())
+  {
+    maps.BrickProblem = "bricks overlap (ghost cells?): an overlapping brick casts no shadow on this one";
+    vtkWarningWithObjectMacro(self, << maps.BrickProblem);
+  }
+  cacheKey.push_back(maps.Bricks.GetVersion());
+  return true;
+}
+
 std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
 {
-  return vtkDeepShadowLightSpace + this->GetMapLookupSource();
+  // Between bricks, LightSpace.glsl multiplies the bricks in front into every lookup.
+  const std::string upstream =
+    this->LightMaps->Bricks.Exchanging() ? "//@Dec\n#define LIGHT_SPACE_UPSTREAM\n" : "";
+  return upstream + vtkDeepShadowLightSpace + this->GetMapLookupSource();
+}
+
+void vtkDeepShadowLightSpaceTechnique::SetBrickExchange(vtkDeepShadowBrickExchange* exchange)
+{
+  if (exchange != this->LightMaps->Bricks.GetExchange())
+  {
+    this->LightMaps->Bricks.SetExchange(exchange);
+    this->Modified();
+  }
+}
+
+vtkDeepShadowBrickExchange* vtkDeepShadowLightSpaceTechnique::GetBrickExchange()
+{
+  return this->LightMaps->Bricks.GetExchange();
 }
 
 void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
@@ -297,6 +413,10 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   sink.Set("u_shadowSize", static_cast<float>(self->MapSize));
   sink.Set("u_shadowFacesPerLight", maps.FacesPerLight);
   sink.Set("u_shadowLayersPerFace", maps.LayersPerFace);
+  if (maps.Bricks.Exchanging())
+  {
+    maps.Bricks.BindLookup(sink, context.Window);
+  }
   this->SetMapLookupUniforms(sink, context);
 }
 
@@ -310,6 +430,7 @@ void vtkDeepShadowLightSpaceTechnique::UnbindLookup()
     maps.Window->GetTextureUnitManager()->Free(maps.Unit);
     maps.Unit = -1;
   }
+  maps.Bricks.UnbindLookup();
 }
 
 void vtkDeepShadowLightSpaceTechnique::ReleaseGraphicsResources(vtkWindow* window)
@@ -322,4 +443,5 @@ void vtkDeepShadowLightSpaceTechnique::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MapSize: " << this->MapSize << "\n";
+  os << indent << "BrickExchange: " << this->LightMaps->Bricks.GetExchange() << "\n";
 }

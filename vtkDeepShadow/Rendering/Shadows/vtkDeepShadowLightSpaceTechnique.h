@@ -20,6 +20,8 @@
 
 #include <memory> // For std::unique_ptr
 
+class vtkDeepShadowBrickExchange;
+
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowLightSpaceTechnique : public vtkDeepShadowTechnique
 {
 public:
@@ -33,6 +35,16 @@ public:
    */
   void SetMapSize(int size);
   vtkGetMacro(MapSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The bricks of one volume drawn by several processes (see vtkDeepShadowBrickExchange):
+   * with an exchange of more than one brick, this brick's lookups are multiplied by the
+   * transmittance of the bricks between it and each light. None by default.
+   */
+  void SetBrickExchange(vtkDeepShadowBrickExchange* exchange);
+  vtkDeepShadowBrickExchange* GetBrickExchange();
   ///@}
 
   /** Adds the map size to the shared parameters. */

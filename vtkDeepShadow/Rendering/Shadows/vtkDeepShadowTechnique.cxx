@@ -217,6 +217,11 @@ bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext&
     }
   }
 
+  if (!impl.TechniqueHooks->ExchangeStructures(context, impl.Slots, rebuilt, key))
+  {
+    return false;
+  }
+
   if (self->Cached)
   {
     if (!PrepareCache(self, context, key, drawnOpacityKey, rebuilt))

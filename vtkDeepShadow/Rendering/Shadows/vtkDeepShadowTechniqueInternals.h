@@ -51,6 +51,16 @@ public:
   {
     return true;
   }
+  /**
+   * After the builds of a frame, whether or not a slot was rebuilt (`rebuilt`): what the
+   * structures take from outside the process (vtkDeepShadowBrickExchange). Appends to
+   * `cacheKey` whatever the lookup now depends on.
+   */
+  virtual bool ExchangeStructures(deepshadow::ShadowContext&, const deepshadow::ShadowSlots&,
+    const std::set<int>& /*rebuilt*/, std::vector<double>& /*cacheKey*/)
+  {
+    return true;
+  }
   /** Binds what the lookup reads and sets its uniforms (ray caster or cache pass). */
   virtual void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) = 0;
 };
@@ -71,6 +81,8 @@ public:
   bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;
   bool BuildStructures(deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots,
     const std::vector<int>& stale) override;
+  bool ExchangeStructures(deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots,
+    const std::set<int>& rebuilt, std::vector<double>& cacheKey) override;
   void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
 private:

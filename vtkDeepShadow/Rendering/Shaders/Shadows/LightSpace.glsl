@@ -101,6 +101,24 @@ vec2 lightSpaceReceiverSlope(int slot, vec3 d, vec3 forward, vec3 right, vec3 up
   return length2 > steepest * steepest ? slope * (steepest / sqrt(length2)) : slope;
 }
 
+#ifdef LIGHT_SPACE_UPSTREAM
+// The bricks of this volume that lie between this one and the light, drawn by other
+// processes (vtkDeepShadowBrickExchange): their total transmittance per texel, one layer per
+// face (slot * u_shadowFacesPerLight + face), bilinear as the maps are. LightSpaceBricks and
+// deepshadow::UpstreamTransmittance (Core/Shadows/Bricks.h) fill it.
+uniform sampler2DArray u_shadowUpstream;
+
+vec3 lightSpaceUpstream(int layer, vec2 xy)
+{
+  ivec2 i0;
+  vec4 w = lightSpaceBilinear(xy, i0);
+  return w.x * texelFetch(u_shadowUpstream, ivec3(lightSpaceClamp(i0), layer), 0).rgb +
+    w.y * texelFetch(u_shadowUpstream, ivec3(lightSpaceClamp(i0 + ivec2(1, 0)), layer), 0).rgb +
+    w.z * texelFetch(u_shadowUpstream, ivec3(lightSpaceClamp(i0 + ivec2(0, 1)), layer), 0).rgb +
+    w.w * texelFetch(u_shadowUpstream, ivec3(lightSpaceClamp(i0 + ivec2(1, 1)), layer), 0).rgb;
+}
+#endif
+
 // receiverNormal: a mesh point's unit normal, or zero for a volume sample.
 vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance, vec3 receiverNormal)
 {
@@ -138,5 +156,9 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
   vec2 slope = receiverNormal != vec3(0.0)
     ? lightSpaceReceiverSlope(slot, d, forward, right, up, at, receiverNormal)
     : vec2(0.0);
-  return mapVisibility((slot * u_shadowFacesPerLight + face) * u_shadowLayersPerFace, at.xy, at.z, slope);
+  vec3 visibility = mapVisibility((slot * u_shadowFacesPerLight + face) * u_shadowLayersPerFace, at.xy, at.z, slope);
+#ifdef LIGHT_SPACE_UPSTREAM
+  visibility *= lightSpaceUpstream(slot * u_shadowFacesPerLight + face, at.xy);
+#endif
+  return visibility;
 }

@@ -1,0 +1,247 @@
+#include "LightSpaceBricks.h"
+
+#include "GL/UniformSink.h"
+#include "vtkDeepShadowBrickExchange.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+
+namespace deepshadow
+{
+namespace
+{
+double NowMilliseconds()
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// What each brick sends at the start of a frame: its box, then the map's shape.
+constexpr size_t BoxValues = 6;
+constexpr size_t ShapeValues = 3;
+
+// Texel rays and boxes are in world units: boxes that share a face agree on it to float
+// precision of their coordinates.
+double SharedFaceTolerance(const BrickBox& all)
+{
+  return 1e-5 * std::max(1.0, glm::length(all.Max - all.Min));
+}
+}
+
+LightSpaceBricks::~LightSpaceBricks() = default;
+
+void LightSpaceBricks::SetExchange(vtkDeepShadowBrickExchange* exchange)
+{
+  this->Exchanger = exchange;
+}
+
+vtkDeepShadowBrickExchange* LightSpaceBricks::GetExchange() const
+{
+  return this->Exchanger;
+}
+
+bool LightSpaceBricks::BeginFrame(
+  CasterBounds& bounds, int mapSize, int lights, int channels, std::string& problem)
+{
+  this->UnionMoved = false;
+  const bool wasActive = this->Active;
+  this->Active = false;
+  if (!this->Exchanger || this->Exchanger->GetNumberOfBricks() <= 1)
+  {
+    this->UnionMoved = wasActive; // back to the brick's own faces
+    return false;
+  }
+  this->Exchanger->BeginFrame();
+  BrickBox local;
+  for (const glm::dvec3& corner : bounds.Corners)
+  {
+    local = local.Union(BrickBox{ corner, corner });
+  }
+  if (bounds.Corners.empty())
+  {
+    local = BrickBox{ bounds.Centre - bounds.Radius, bounds.Centre + bounds.Radius };
+  }
+  std::vector<float> mine{ static_cast<float>(local.Min.x), static_cast<float>(local.Min.y),
+    static_cast<float>(local.Min.z), static_cast<float>(local.Max.x), static_cast<float>(local.Max.y),
+    static_cast<float>(local.Max.z), static_cast<float>(mapSize), static_cast<float>(lights),
+    static_cast<float>(channels) };
+  std::vector<float> all;
+  const double start = NowMilliseconds();
+  const bool gathered = this->Exchanger->AllGather(mine, all);
+  this->Exchanger->Account(static_cast<long long>(all.size() * sizeof(float)), NowMilliseconds() - start);
+  const size_t bricks = static_cast<size_t>(this->Exchanger->GetNumberOfBricks());
+  if (!gathered || all.size() != bricks * mine.size())
+  {
+    problem = "the bricks' boxes could not be gathered";
+    return false;
+  }
+  this->Boxes.assign(bricks, BrickBox{});
+  BrickBox everything;
+  for (size_t b = 0; b < bricks; ++b)
+  {
+    const float* v = all.data() + b * mine.size();
+    if (!std::equal(v + BoxValues, v + BoxValues + ShapeValues, mine.data() + BoxValues))
+    {
+      problem = "the bricks disagree on the map size, the shadow-casting lights or colour (brick " +
+        std::to_string(b) + ")";
+      return false;
+    }
+    this->Boxes[b] = BrickBox{ glm::dvec3(v[0], v[1], v[2]), glm::dvec3(v[3], v[4], v[5]) };
+    everything = everything.Union(this->Boxes[b]);
+  }
+  if (!everything.IsValid())
+  {
+    return false;
+  }
+  this->LocalBrick = this->Exchanger->GetLocalBrick();
+  this->UnionMoved = !wasActive || everything.Min != this->LastUnion.Min || everything.Max != this->LastUnion.Max;
+  this->LastUnion = everything;
+  bounds.Centre = 0.5 * (everything.Min + everything.Max);
+  bounds.Radius = 0.5 * glm::length(everything.Max - everything.Min);
+  bounds.Corners.clear();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    bounds.Corners.emplace_back(corner & 1 ? everything.Max.x : everything.Min.x,
+      corner & 2 ? everything.Max.y : everything.Min.y, corner & 4 ? everything.Max.z : everything.Min.z);
+  }
+  this->Active = true;
+  return true;
+}
+
+void LightSpaceBricks::ReadTotals(
+  vtkOpenGLRenderWindow* window, unsigned int totals, int size, int layers, int channels)
+{
+  std::vector<float> rgba(static_cast<size_t>(size) * size * layers * 4);
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  const int unit = units->Allocate();
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, totals);
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  units->Free(unit);
+  this->Size = size;
+  this->Layers = layers;
+  this->Channels = channels;
+  this->Totals.resize(static_cast<size_t>(size) * size * layers * channels);
+  for (size_t texel = 0; texel < rgba.size() / 4; ++texel)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      this->Totals[texel * channels + c] = rgba[texel * 4 + c];
+    }
+  }
+}
+
+bool LightSpaceBricks::Exchange(vtkOpenGLRenderWindow* window, const std::vector<Light>& slotLights,
+  int facesPerLight, std::string& problem)
+{
+  std::vector<float> all;
+  const double start = NowMilliseconds();
+  const bool gathered = this->Exchanger->AllGather(this->Totals, all);
+  this->Exchanger->Account(static_cast<long long>(all.size() * sizeof(float)), NowMilliseconds() - start);
+  const size_t bricks = this->Boxes.size();
+  if (!gathered || all.size() != bricks * this->Totals.size())
+  {
+    problem = "the bricks' light-space totals could not be gathered";
+    return false;
+  }
+  // Per light (slot): its faces' texels of every brick, then their product in front of ours.
+  const size_t perFace = static_cast<size_t>(this->Size) * this->Size * this->Channels;
+  const size_t perSlot = perFace * facesPerLight;
+  const double tolerance = SharedFaceTolerance(this->LastUnion);
+  std::vector<float> upstream(this->Totals.size(), 1.0f);
+  this->Overlap = false;
+  for (size_t slot = 0; slot < slotLights.size() && (slot + 1) * perSlot <= this->Totals.size(); ++slot)
+  {
+    std::vector<float> light(bricks * perSlot);
+    for (size_t b = 0; b < bricks; ++b)
+    {
+      const float* from = all.data() + b * this->Totals.size() + slot * perSlot;
+      std::copy(from, from + perSlot, light.begin() + static_cast<std::ptrdiff_t>(b * perSlot));
+    }
+    bool overlapping = false;
+    const std::vector<float> product =
+      UpstreamTransmittance(light, perSlot, this->LocalBrick, this->Boxes, slotLights[slot], tolerance, overlapping);
+    std::copy(product.begin(), product.end(), upstream.begin() + static_cast<std::ptrdiff_t>(slot * perSlot));
+    this->Overlap = this->Overlap || overlapping;
+  }
+  if (upstream == this->Upstream && this->Texture && this->TextureSize == this->Size &&
+    this->TextureLayers == this->Layers)
+  {
+    return true;
+  }
+  this->Upstream = std::move(upstream);
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  const int unit = units->Allocate();
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+  if (!this->Texture || this->TextureSize != this->Size || this->TextureLayers != this->Layers)
+  {
+    if (this->Texture)
+    {
+      glDeleteTextures(1, &this->Texture);
+    }
+    glGenTextures(1, &this->Texture);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, this->Size, this->Size, this->Layers);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    this->TextureSize = this->Size;
+    this->TextureLayers = this->Layers;
+  }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  std::vector<float> rgba(this->Upstream.size() / this->Channels * 4, 1.0f);
+  for (size_t texel = 0; texel < rgba.size() / 4; ++texel)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[texel * 4 + c] = this->Upstream[texel * this->Channels + std::min(c, this->Channels - 1)];
+    }
+  }
+  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, this->Size, this->Size, this->Layers, GL_RGBA,
+    GL_FLOAT, rgba.data());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  units->Free(unit);
+  this->Version += 1.0;
+  return true;
+}
+
+void LightSpaceBricks::BindLookup(UniformSink& sink, vtkOpenGLRenderWindow* window)
+{
+  this->Window = window;
+  this->Unit = window->GetTextureUnitManager()->Allocate();
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + this->Unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  sink.Set("u_shadowUpstream", this->Unit);
+}
+
+void LightSpaceBricks::UnbindLookup()
+{
+  if (this->Unit >= 0)
+  {
+    this->Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + this->Unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    this->Window->GetTextureUnitManager()->Free(this->Unit);
+    this->Unit = -1;
+  }
+}
+
+void LightSpaceBricks::Release()
+{
+  if (this->Texture)
+  {
+    glDeleteTextures(1, &this->Texture);
+    this->Texture = 0;
+  }
+  this->TextureSize = this->TextureLayers = 0;
+  this->Upstream.clear();
+  this->Totals.clear();
+}
+
+}
