@@ -11,6 +11,7 @@
 #include "vtkDeepShadowSurfaceFS.h"
 #include "vtkDeepShadowSurfaceVS.h"
 #include "vtkDeepShadowTechniqueInternals.h"
+#include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -34,6 +35,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 #include <glm/matrix.hpp>
@@ -483,9 +485,63 @@ void vtkDeepShadowPolyDataMapper::Internals::DrawTriangles(vtkOpenGLRenderWindow
   this->VertexArray->Release();
 }
 
+namespace
+{
+// Without a pass: a frame of the mesh's own, for the duration of one render, whose shadow
+// source is the shadowing volume, prepared now as vtkDeepShadowPass prepares its volumes.
+class ShadowingVolumeFrame
+{
+public:
+  ShadowingVolumeFrame(const deepshadow::PassFrame*& slot, vtkVolume* volume, vtkRenderer* renderer)
+  {
+    vtkDeepShadowVolumeMapper* mapper = volume ? vtkDeepShadowVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
+    if (slot || !mapper || !mapper->GetShadowTechnique() || !volume->GetVisibility())
+    {
+      return;
+    }
+    this->Mapper = mapper;
+    this->Slot = &slot;
+    mapper->SetPassFrame(&this->Frame);
+    this->Frame.Source = mapper->PrepareShadows(renderer, volume);
+    this->Frame.SourceTechnique = this->Frame.Source ? mapper->GetShadowTechnique() : nullptr;
+    slot = &this->Frame;
+  }
+  ~ShadowingVolumeFrame()
+  {
+    if (this->Mapper)
+    {
+      this->Mapper->SetPassFrame(nullptr);
+      *this->Slot = nullptr;
+    }
+  }
+  ShadowingVolumeFrame(const ShadowingVolumeFrame&) = delete;
+  void operator=(const ShadowingVolumeFrame&) = delete;
+
+private:
+  deepshadow::PassFrame Frame;
+  vtkDeepShadowVolumeMapper* Mapper = nullptr;
+  const deepshadow::PassFrame** Slot = nullptr;
+};
+}
+
+void vtkDeepShadowPolyDataMapper::SetShadowingVolume(vtkVolume* volume)
+{
+  if (volume != this->ShadowingVolume)
+  {
+    this->ShadowingVolume = volume;
+    this->Modified();
+  }
+}
+
+vtkVolume* vtkDeepShadowPolyDataMapper::GetShadowingVolume()
+{
+  return this->ShadowingVolume;
+}
+
 void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
+  const ShadowingVolumeFrame own(impl.Frame, this->ReceiveShadows ? this->ShadowingVolume.GetPointer() : nullptr, renderer);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
   {
@@ -566,6 +622,7 @@ void vtkDeepShadowPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CastShadows: " << this->CastShadows << "\n";
   os << indent << "ReceiveShadows: " << this->ReceiveShadows << "\n";
+  os << indent << "ShadowingVolume: " << this->ShadowingVolume.GetPointer() << "\n";
   os << indent << "ShadowBias: " << this->ShadowBias << " (0 = automatic)\n";
   os << indent << "OutputMode: " << (this->OutputMode == OutputShadowTerm ? "ShadowTerm" : "Color") << "\n";
   os << indent << "GeometryUploads: " << this->GeometryUploads << "\n";

@@ -17,7 +17,8 @@
  *   light: deepshadow::ReceiverOffset), so a mesh that casts does not shadow itself (acne).
  * - when translucent in a scene with a volume, it is peeled into layers that the volume
  *   composites at their depths along each view ray (vtkDeepShadowPass::SetTranslucentLayers).
- * Without the pass, the mesh is lit without shadows.
+ * Without the pass (in a renderer whose passes are another's, as in ParaView's views), the
+ * mesh is lit without shadows, or receives those of one volume (SetShadowingVolume).
  *
  * Bad input: no input or no triangles draws nothing (with a warning); non-finite points and
  * cells whose point ids lie outside the points are an error (one vtkErrorMacro per change,
@@ -29,6 +30,7 @@
 
 #include "vtkDeepShadowRenderingModule.h" // For export macro
 #include "vtkPolyDataMapper.h"
+#include "vtkWeakPointer.h" // For ShadowingVolume
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
@@ -41,6 +43,7 @@ struct PeelStep;
 struct SurfaceMesh;
 }
 class vtkPolyData;
+class vtkVolume;
 
 class VTKDEEPSHADOWRENDERING_EXPORT vtkDeepShadowPolyDataMapper : public vtkPolyDataMapper
 {
@@ -57,6 +60,18 @@ public:
   vtkSetMacro(ReceiveShadows, bool);
   vtkGetMacro(ReceiveShadows, bool);
   vtkBooleanMacro(ReceiveShadows, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Without a vtkDeepShadowPass: the volume (drawn by a vtkDeepShadowVolumeMapper with a
+   * technique) whose shadows the mesh receives. The mesh's render brings that volume's shadow
+   * structures up to date itself, as the pass would (the volume's own render then finds
+   * nothing to rebuild); the mesh casts nothing into them this way. Under the pass, which
+   * gathers every volume, it is not used. None by default (held weakly).
+   */
+  void SetShadowingVolume(vtkVolume* volume);
+  vtkVolume* GetShadowingVolume();
   ///@}
 
   ///@{
@@ -132,6 +147,7 @@ protected:
 
   bool CastShadows = true;
   bool ReceiveShadows = true;
+  vtkWeakPointer<vtkVolume> ShadowingVolume;
   double ShadowBias = 0.0;
   int OutputMode = OutputColor;
   int GeometryUploads = 0;
