@@ -2,6 +2,9 @@
   compare.py diff A.png B.png MAX_RMSE MAX_FRACTION   difference within bounds (beyond 8/255)
   compare.py darker SHADOWED.png LIT.png FACTOR       the foreground's mean at most FACTOR of LIT's
   compare.py drawn PICTURE.png FRACTION               at least FRACTION of its pixels differ from the corner's
+  compare.py darker-in X0 Y0 X1 Y1 SHADOWED.png LIT.png FACTOR
+                                                      the same in a box (fractions of the width and height,
+                                                      from the top left), every pixel of it
 Prints the figures; exit 1 when the bound is not met."""
 import sys
 
@@ -21,6 +24,17 @@ def load(path):
 
 
 def main():
+    if sys.argv[1] == "darker-in":
+        x0, y0, x1, y1 = (float(v) for v in sys.argv[2:6])
+        a, b, factor = sys.argv[6], sys.argv[7], float(sys.argv[8])
+        first, second = load(a)[::-1], load(b)[::-1]  # rows from the top
+        height, width, _ = first.shape
+        box = (slice(int(y0 * height), int(y1 * height)), slice(int(x0 * width), int(x1 * width)))
+        shadowed, lit = float(first[box].mean()), float(second[box].mean())
+        ok = shadowed <= factor * lit
+        print(f"{a}: box {x0}-{x1} x {y0}-{y1} mean {shadowed:.4f} against {lit:.4f} (<= {factor} of it): "
+              f"{'ok' if ok else 'FAILED'}")
+        sys.exit(0 if ok else 1)
     if sys.argv[1] == "drawn":
         picture, fraction = load(sys.argv[2]), float(sys.argv[3])
         drawn = float(numpy.mean(numpy.abs(picture - picture[0, 0]).max(axis=2) > 8.0 / 255.0))

@@ -14,6 +14,7 @@ ColorBy(display, ("POINTS", "RTData"))
 GetOpacityTransferFunction("RTData").Points = [37, 0.0, 0.5, 0.0, 150, 0.0, 0.5, 0.0, 276, 0.8, 0.5, 0.0]
 display.Shade = 1
 display.ShadowTechnique = "dsm"
+display.ShadowGround = "-Y"  # below, in ParaView's default view (+Y up)
 SetActiveSource(wavelet)
 ResetCamera()
 Render()
@@ -21,3 +22,4 @@ with open(os.environ["DEEPSHADOW_GUI_REPORT"], "w") as report:
     report.write(f"representation {display.Representation}\n")
     report.write(f"technique {display.ShadowTechnique}\n")
     report.write(f"lights {display.ShadowLights}\n")
+    report.write(f"ground {display.ShadowGround}\n")

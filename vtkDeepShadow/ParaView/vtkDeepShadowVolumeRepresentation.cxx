@@ -1,28 +1,82 @@
 #include "vtkDeepShadowVolumeRepresentation.h"
 
 #include "Core/ShadowTechniques.h"
+#include "vtkDeepShadowBrickExchange.h"
+#include "vtkDeepShadowLightSpaceTechnique.h"
+#include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCommunicator.h"
+#include "vtkDataSet.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMultiProcessController.h"
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLODVolume.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkDeepShadowVolumeRepresentation);
+
+namespace
+{
+// The bricks of an MPI run: one per rank of ParaView's global controller.
+class vtkDeepShadowMPIBrickExchange : public vtkDeepShadowBrickExchange
+{
+public:
+  static vtkDeepShadowMPIBrickExchange* New();
+  vtkTypeMacro(vtkDeepShadowMPIBrickExchange, vtkDeepShadowBrickExchange);
+
+  int GetNumberOfBricks() override
+  {
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    return controller ? controller->GetNumberOfProcesses() : 1;
+  }
+  int GetLocalBrick() override
+  {
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    return controller ? controller->GetLocalProcessId() : 0;
+  }
+  bool AllGather(const std::vector<float>& local, std::vector<float>& all) override
+  {
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    if (!controller)
+    {
+      return false;
+    }
+    all.resize(local.size() * static_cast<size_t>(controller->GetNumberOfProcesses()));
+    return controller->AllGather(local.data(), all.data(), static_cast<vtkIdType>(local.size())) != 0;
+  }
+};
+vtkStandardNewMacro(vtkDeepShadowMPIBrickExchange);
+}
 
 vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
 {
   // The superclass keeps its mapper in VolumeMapper and drives it with vtkVolumeMapper's API
   // only (input, array selection, blend mode, cropping): ours takes its place.
   this->VolumeMapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
+  this->Exchange = vtkSmartPointer<vtkDeepShadowMPIBrickExchange>::New();
+  this->Ground = vtkSmartPointer<vtkActor>::New();
+  vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
+  groundMapper->CastShadowsOff();
+  groundMapper->SetShadowingVolume(this->Actor);
+  this->Ground->SetMapper(groundMapper);
+  this->Ground->SetVisibility(false);
+  this->Ground->PickableOff();
   this->ApplyTechnique();
 }
 
@@ -129,34 +183,157 @@ bool vtkDeepShadowVolumeRepresentation::AddToView(vtkView* view)
   if (auto* renderView = vtkPVRenderView::SafeDownCast(view))
   {
     this->Renderer = renderView->GetRenderer();
+    this->Renderer->AddActor(this->Ground);
   }
   return this->Superclass::AddToView(view);
 }
 
 bool vtkDeepShadowVolumeRepresentation::RemoveFromView(vtkView* view)
 {
+  // A view being destroyed is no render view any more (its renderer is gone already).
+  if (auto* renderView = vtkPVRenderView::SafeDownCast(view))
+  {
+    renderView->GetRenderer()->RemoveActor(this->Ground);
+  }
   this->Renderer = nullptr;
   return this->Superclass::RemoveFromView(view);
+}
+
+void vtkDeepShadowVolumeRepresentation::UpdateGround()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool ranks = controller && controller->GetNumberOfProcesses() > 1;
+  auto* image = vtkImageData::SafeDownCast(this->Cache);
+  const bool wanted = this->ShadowGround > 0 && this->GetVisibility() && image;
+  if (wanted && ranks && !this->SaidGroundAlone && controller->GetLocalProcessId() == 0)
+  {
+    vtkWarningMacro(<< "the shadow ground is not drawn under MPI: a rank's lookups see its own brick and "
+                       "those in front of it, not every brick between the light and the ground");
+  }
+  this->SaidGroundAlone = this->SaidGroundAlone || (wanted && ranks);
+  this->Ground->SetVisibility(wanted && !ranks);
+  if (!this->Ground->GetVisibility())
+  {
+    return;
+  }
+  // The volume's whole box (every rank's piece together), from its extent and placement.
+  double box[6];
+  const double* origin = image->GetOrigin();
+  const double* spacing = image->GetSpacing();
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] = origin[a] + spacing[a] * this->WholeExtent[2 * a];
+    box[2 * a + 1] = origin[a] + spacing[a] * this->WholeExtent[2 * a + 1];
+  }
+  const int axis = (this->ShadowGround - 1) / 2;
+  const bool high = (this->ShadowGround - 1) % 2 == 1;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double extent = box[2 * axis + 1] - box[2 * axis];
+  const double level = high ? box[2 * axis + 1] + 0.05 * extent : box[2 * axis] - 0.05 * extent;
+  const double du = 0.5 * (box[2 * u + 1] - box[2 * u]), dv = 0.5 * (box[2 * v + 1] - box[2 * v]);
+  vtkNew<vtkPoints> points;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    double p[3];
+    p[axis] = level;
+    p[u] = corner & 1 ? box[2 * u + 1] + du : box[2 * u] - du;
+    p[v] = corner & 2 ? box[2 * v + 1] + dv : box[2 * v] - dv;
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType ids[4] = { 0, 1, 3, 2 };
+  quad->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> plane;
+  plane->SetPoints(points);
+  plane->SetPolys(quad);
+  auto* mapper = vtkDeepShadowPolyDataMapper::SafeDownCast(this->Ground->GetMapper());
+  vtkPolyData* drawn = vtkPolyData::SafeDownCast(mapper->GetInput());
+  double was[6] = { 0, -1, 0, -1, 0, -1 };
+  if (drawn)
+  {
+    drawn->GetBounds(was);
+  }
+  double now[6];
+  plane->GetBounds(now);
+  if (!drawn || !std::equal(now, now + 6, was)) // the same plane keeps its upload
+  {
+    mapper->SetInputData(plane);
+  }
+  this->Ground->GetProperty()->SetColor(this->ShadowGroundColor);
 }
 
 int vtkDeepShadowVolumeRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request, vtkInformation* in, vtkInformation* out)
 {
+  if (request == vtkPVView::REQUEST_UPDATE())
+  {
+    this->CountPieces();
+  }
   if (request == vtkPVView::REQUEST_RENDER())
   {
     this->ChooseShadowLights();
-    // Under MPI each rank draws its piece, and its shadow structures see that piece only.
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    if (!this->SaidPiecesAlone && controller && controller->GetNumberOfProcesses() > 1 &&
-      this->TechniqueName != "none" && controller->GetLocalProcessId() == 0)
-    {
-      this->SaidPiecesAlone = true;
-      vtkWarningMacro(<< "shadows across " << controller->GetNumberOfProcesses()
-                      << " ranks: each rank's piece casts shadows onto itself only (the other "
-                         "pieces' shadows are not exchanged yet)");
-    }
+    this->ShareShadowsAcrossRanks();
+    this->UpdateGround();
   }
   return this->Superclass::ProcessViewRequest(request, in, out);
+}
+
+void vtkDeepShadowVolumeRepresentation::CountPieces()
+{
+  // Every rank takes part in a view's update, so this is where the ranks agree on whether
+  // every one of them holds a piece: the exchange is collective inside the mapper's render,
+  // which a rank without a piece never reaches.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
+  {
+    this->RanksWithoutPiece = 0;
+    return;
+  }
+  vtkDataSet* piece = vtkDataSet::SafeDownCast(this->Cache);
+  const int mine = piece && piece->GetNumberOfPoints() > 0 ? 0 : 1;
+  int without = 0;
+  controller->AllReduce(&mine, &without, 1, vtkCommunicator::SUM_OP);
+  this->RanksWithoutPiece = without;
+}
+
+void vtkDeepShadowVolumeRepresentation::ShareShadowsAcrossRanks()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper);
+  vtkDeepShadowTechnique* technique = mapper->GetShadowTechnique();
+  auto* lightSpace = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique);
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  std::string alone; // why the pieces shadow themselves only
+  if (ranks > 1 && technique && !lightSpace)
+  {
+    alone = "the technique '" + this->TechniqueName +
+      "' is not exchanged between ranks (the light-space ones are: shadowmap, dsm, dsm-color, dsm3, "
+      "cssm and their -cached variants)";
+  }
+  else if (ranks > 1 && technique && this->RanksWithoutPiece > 0)
+  {
+    alone = std::to_string(this->RanksWithoutPiece) + " of " + std::to_string(ranks) + " ranks hold no piece";
+  }
+  if (lightSpace)
+  {
+    lightSpace->SetBrickExchange(ranks > 1 && alone.empty() ? this->Exchange.Get() : nullptr);
+  }
+  if (!alone.empty() && alone != this->SaidAlone && controller->GetLocalProcessId() == 0)
+  {
+    vtkWarningMacro(<< "shadows across " << ranks << " ranks: each rank's piece casts shadows onto itself only: "
+                    << alone);
+  }
+  this->SaidAlone = alone;
+}
+
+double vtkDeepShadowVolumeRepresentation::GetShadowExchangeBytes()
+{
+  return static_cast<double>(this->Exchange->GetLastBytes());
+}
+
+double vtkDeepShadowVolumeRepresentation::GetShadowExchangeMilliseconds()
+{
+  return this->Exchange->GetLastMilliseconds();
 }
 
 void vtkDeepShadowVolumeRepresentation::ChooseShadowLights()
@@ -192,4 +369,5 @@ void vtkDeepShadowVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowTechnique: " << this->TechniqueName << "\n";
   os << indent << "ShadowParameters: " << this->ParameterText << "\n";
   os << indent << "ShadowLights: " << (this->ShadowLights ? "all" : "the brightest") << "\n";
+  os << indent << "ShadowGround: " << this->ShadowGround << "\n";
 }

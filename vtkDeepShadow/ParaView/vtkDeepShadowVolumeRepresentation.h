@@ -14,9 +14,12 @@
 
 #include "vtkDeepShadowParaViewModule.h" // For export macro
 #include "vtkImageVolumeRepresentation.h"
+#include "vtkSmartPointer.h" // For ivars
 
 #include <string> // For ivars
 
+class vtkActor;
+class vtkDeepShadowBrickExchange;
 class vtkRenderer;
 
 class VTKDEEPSHADOWPARAVIEW_EXPORT vtkDeepShadowVolumeRepresentation : public vtkImageVolumeRepresentation
@@ -51,6 +54,32 @@ public:
   vtkSetClampMacro(ShadowLights, int, 0, 1);
   vtkGetMacro(ShadowLights, int);
 
+  ///@{
+  /**
+   * A ground plane that receives the volume's shadow (a shadow is read on a ground): 0, none
+   * (the default); 1 to 6, on the side -X, +X, -Y, +Y, -Z or +Z of the volume's box, a
+   * twentieth of the box beyond it and half the box wider on every side. ParaView's own
+   * surfaces are drawn by its mappers and receive no shadow; this plane is drawn by
+   * vtkDeepShadowPolyDataMapper with the volume as its shadowing volume, in the colour of
+   * ShadowGroundColor. Under MPI it is not drawn (said once): a rank's lookups see its own
+   * brick and those in front of it, not the bricks between it and a receiver beyond them.
+   */
+  vtkSetClampMacro(ShadowGround, int, 0, 6);
+  vtkGetMacro(ShadowGround, int);
+  vtkSetVector3Macro(ShadowGroundColor, double);
+  vtkGetVector3Macro(ShadowGroundColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Under MPI (mpirun -np N pvbatch), what this rank's light-space technique gathered from the
+   * others at the last frame (vtkDeepShadowBrickExchange): bytes received, and milliseconds.
+   * 0 on one rank, or when the pieces shadow themselves only (said once: a technique that is
+   * not exchanged, or a rank without a piece).
+   */
+  double GetShadowExchangeBytes();
+  double GetShadowExchangeMilliseconds();
+  ///@}
   /** The error of the last technique or parameters set, "" when they were applied. */
   const char* GetShadowError() const { return this->Error.c_str(); }
 
@@ -72,8 +101,20 @@ private:
   /** Sets the lights' ShadowAttenuation as ShadowLights says (only values that change). */
   void ChooseShadowLights();
 
+  /** Places the ground plane (ShadowGround) beside the volume's whole box, or hides it. */
+  void UpdateGround();
+  /** Collective (every rank updates): how many ranks hold no piece of the volume. */
+  void CountPieces();
+  /** Gives a light-space technique the ranks' exchange, or says why the pieces cannot share. */
+  void ShareShadowsAcrossRanks();
   int ShadowLights = 0;
-  bool SaidPiecesAlone = false; // the pieces of an MPI run shadow themselves only: said once
+  int ShadowGround = 0;
+  double ShadowGroundColor[3] = { 0.85, 0.85, 0.8 };
+  vtkSmartPointer<vtkActor> Ground; // drawn by a vtkDeepShadowPolyDataMapper
+  bool SaidGroundAlone = false;
+  int RanksWithoutPiece = 0;
+  vtkSmartPointer<vtkDeepShadowBrickExchange> Exchange; // the ranks' bricks (MPI)
+  std::string SaidAlone; // why the pieces of an MPI run shadow themselves only: said once
   vtkRenderer* Renderer = nullptr; // the view's, while the representation is in one
   std::string TechniqueName = "dsm";
   std::string ParameterText;
