@@ -12,19 +12,27 @@ vec3 dsmValue(vec4 node)
 vec3 dsmTexel(int layer, ivec2 texel, float depth)
 {
   texel = lightSpaceClamp(texel);
-  // first = how many nodes lie at or before depth.
+  // first = how many nodes lie at or before depth. The search reads the two nodes that
+  // bracket depth on its way: the last node found at or before it is node first - 1, and the
+  // last found beyond it is node first (each such probe moves the search's right end to
+  // itself, and the search ends where its ends meet), so neither is fetched again.
   int first = 0;
   int remaining = u_shadowLayersPerFace;
+  vec4 a = vec4(0.0);
+  vec4 b = vec4(0.0);
   while (remaining > 0)
   {
     int halfCount = remaining / 2;
-    if (texelFetch(u_shadowMap, ivec3(texel, layer + first + halfCount), 0).r <= depth)
+    vec4 node = texelFetch(u_shadowMap, ivec3(texel, layer + first + halfCount), 0);
+    if (node.r <= depth)
     {
+      a = node;
       first += halfCount + 1;
       remaining -= halfCount + 1;
     }
     else
     {
+      b = node;
       remaining = halfCount;
     }
   }
@@ -32,12 +40,10 @@ vec3 dsmTexel(int layer, ivec2 texel, float depth)
   {
     return vec3(1.0);
   }
-  vec4 a = texelFetch(u_shadowMap, ivec3(texel, layer + first - 1), 0);
   if (first == u_shadowLayersPerFace)
   {
     return dsmValue(a);
   }
-  vec4 b = texelFetch(u_shadowMap, ivec3(texel, layer + first), 0);
   return mix(dsmValue(a), dsmValue(b), (depth - a.r) / (b.r - a.r));
 }
 
