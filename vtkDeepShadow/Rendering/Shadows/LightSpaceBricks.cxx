@@ -50,12 +50,13 @@ vtkDeepShadowBrickExchange* LightSpaceBricks::GetExchange() const
 bool LightSpaceBricks::BeginFrame(
   CasterBounds& bounds, int mapSize, int lights, int channels, std::string& problem)
 {
-  this->UnionMoved = false;
+  // Until this frame is known to exchange: back to the brick's own faces, a change if it
+  // exchanged before.
   const bool wasActive = this->Active;
+  this->UnionMoved = wasActive;
   this->Active = false;
   if (!this->Exchanger || this->Exchanger->GetNumberOfBricks() <= 1)
   {
-    this->UnionMoved = wasActive; // back to the brick's own faces
     return false;
   }
   this->Exchanger->BeginFrame();

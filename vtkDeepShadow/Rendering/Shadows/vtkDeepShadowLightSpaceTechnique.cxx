@@ -40,6 +40,7 @@ public:
   unsigned int Totals = 0;
   int TotalsLayers = 0;
   std::string BrickProblem; // said once while it lasts
+  bool SaidOverlap = false;  // the same
 
   void Release()
   {
@@ -348,11 +349,11 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
     self->LastError = problem;
     return false;
   }
-  if (maps.Bricks.Overlapping() && maps.BrickProblem.empty())
+  if (maps.Bricks.Overlapping() && !maps.SaidOverlap)
   {
-    maps.BrickProblem = "bricks overlap (ghost cells?): an overlapping brick casts no shadow on this one";
-    vtkWarningWithObjectMacro(self, << maps.BrickProblem);
+    vtkWarningWithObjectMacro(self, << "bricks overlap (ghost cells?): an overlapping brick casts no shadow on this one");
   }
+  maps.SaidOverlap = maps.Bricks.Overlapping();
   cacheKey.push_back(maps.Bricks.GetVersion());
   return true;
 }
