@@ -26,6 +26,7 @@
 #include "vtkRenderer.h"
 
 #include <algorithm>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -342,20 +343,28 @@ void vtkDeepShadowVolumeRepresentation::ChooseShadowLights()
   {
     return;
   }
+  // The lights that are on, brightest first (stable: equal intensities keep their order).
+  std::vector<vtkLight*> lit;
   vtkLightCollection* lights = this->Renderer->GetLights();
-  vtkLight* brightest = nullptr;
   lights->InitTraversal();
   while (vtkLight* light = lights->GetNextItem())
   {
-    if (light->GetSwitch() && (!brightest || light->GetIntensity() > brightest->GetIntensity()))
+    if (light->GetSwitch())
     {
-      brightest = light;
+      lit.push_back(light);
     }
   }
+  std::stable_sort(lit.begin(), lit.end(),
+    [](vtkLight* a, vtkLight* b) { return a->GetIntensity() > b->GetIntensity(); });
+  // The key light alone, or the brightest four: the mapper shadows at most four, and
+  // ParaView's light kit has five (choosing here keeps the technique from warning each frame).
+  const size_t casting = std::min<size_t>(this->ShadowLights == 1 ? 4 : 1, lit.size());
   lights->InitTraversal();
   while (vtkLight* light = lights->GetNextItem())
   {
-    const double attenuation = this->ShadowLights == 1 || light == brightest ? 1.0 : 0.0;
+    const bool casts = std::find(lit.begin(), lit.begin() + static_cast<std::ptrdiff_t>(casting), light) !=
+      lit.begin() + static_cast<std::ptrdiff_t>(casting);
+    const double attenuation = casts ? 1.0 : 0.0;
     if (light->GetShadowAttenuation() != attenuation) // a change would rebuild the shadows
     {
       light->SetShadowAttenuation(attenuation);

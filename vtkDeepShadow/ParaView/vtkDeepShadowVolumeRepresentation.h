@@ -48,8 +48,8 @@ public:
 
   /**
    * Which of the view's lights cast shadows: 0, the brightest one (ParaView's key light, the
-   * default; its other lights are fill, head and back lights); 1, every light (the mapper
-   * shadows at most four). Set on the lights' vtkLight::ShadowAttenuation at each render.
+   * default; its other lights are fill, head and back lights); 1, the four brightest (the
+   * mapper shadows at most four; ParaView's light kit has five). Set on the lights' vtkLight::ShadowAttenuation at each render.
    */
   vtkSetClampMacro(ShadowLights, int, 0, 1);
   vtkGetMacro(ShadowLights, int);
