@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace deepshadow
 {
@@ -102,54 +103,34 @@ std::string CheckVolumeProperty(vtkVolumeProperty* property)
         << "; it must be positive and finite";
     return why.str();
   }
-  auto finite = [](const double* v, int n) {
-    for (int i = 0; i < n; ++i)
+  // The first point of a piecewise or colour function (Values numbers a point) that is not
+  // finite, or -1.
+  auto firstNonFinite = [](auto* function, auto values) {
+    double node[decltype(values)::value];
+    for (int i = 0; function && i < function->GetSize(); ++i)
     {
-      if (!std::isfinite(v[i]))
+      function->GetNodeValue(i, node);
+      if (!std::all_of(node, node + decltype(values)::value, [](double v) { return std::isfinite(v); }))
       {
-        return false;
+        return i;
       }
     }
-    return true;
+    return -1;
   };
-  if (vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0))
+  using PiecewisePoint = std::integral_constant<int, 4>;
+  using ColorPoint = std::integral_constant<int, 6>;
+  const bool gray = property->GetColorChannels(0) == 1;
+  const int opacityBad = firstNonFinite(property->GetScalarOpacity(0), PiecewisePoint());
+  const int colorBad = gray ? firstNonFinite(property->GetGrayTransferFunction(0), PiecewisePoint())
+                            : firstNonFinite(property->GetRGBTransferFunction(0), ColorPoint());
+  if (opacityBad >= 0)
   {
-    for (int i = 0; i < opacity->GetSize(); ++i)
-    {
-      double node[4];
-      opacity->GetNodeValue(i, node);
-      if (!finite(node, 4))
-      {
-        return "the scalar opacity function's point " + std::to_string(i) + " is not finite";
-      }
-    }
+    return "the scalar opacity function's point " + std::to_string(opacityBad) + " is not finite";
   }
-  if (property->GetColorChannels(0) == 1)
+  if (colorBad >= 0)
   {
-    if (vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0))
-    {
-      for (int i = 0; i < gray->GetSize(); ++i)
-      {
-        double node[4];
-        gray->GetNodeValue(i, node);
-        if (!finite(node, 4))
-        {
-          return "the grey transfer function's point " + std::to_string(i) + " is not finite";
-        }
-      }
-    }
-  }
-  else if (vtkColorTransferFunction* color = property->GetRGBTransferFunction(0))
-  {
-    for (int i = 0; i < color->GetSize(); ++i)
-    {
-      double node[6];
-      color->GetNodeValue(i, node);
-      if (!finite(node, 6))
-      {
-        return "the colour transfer function's point " + std::to_string(i) + " is not finite";
-      }
-    }
+    return std::string(gray ? "the grey" : "the colour") + " transfer function's point " +
+      std::to_string(colorBad) + " is not finite";
   }
   return std::string();
 }

@@ -304,6 +304,20 @@ int TestBadInput(int, char*[])
   auto valid = [] { return Image(8, 8, 8, VTK_UNSIGNED_CHAR); };
   ok = Expect("NaN opacity point", RenderBad(valid(), false,
          [&](Scene& s) { s.Opacity->AddPoint(nan, 0.5); }), "opacity function", false) && ok;
+  ok = Expect("NaN colour point", RenderBad(valid(), false,
+         [&](Scene& s) {
+           vtkNew<vtkColorTransferFunction> color;
+           color->AddRGBPoint(0.0, 1.0, 1.0, 1.0);
+           color->AddRGBPoint(nan, 0.5, 0.5, 0.5);
+           s.Property->SetColor(color);
+         }), "colour transfer function", false) && ok;
+  ok = Expect("NaN grey point", RenderBad(valid(), false,
+         [&](Scene& s) {
+           vtkNew<vtkPiecewiseFunction> gray;
+           gray->AddPoint(0.0, 1.0);
+           gray->AddPoint(nan, 0.5);
+           s.Property->SetColor(gray);
+         }), "grey transfer function", false) && ok;
   ok = Expect("opacity unit distance 0", RenderBad(valid(), false,
          [](Scene& s) { s.Property->SetScalarOpacityUnitDistance(0.0); }), "unit distance", false) && ok;
   ok = Expect("opacity unit distance NaN", RenderBad(valid(), false,
