@@ -13,4 +13,4 @@ if [ "${1:-}" = "--full" ]; then
 fi
 "$root/build/bin/deepshadow" report "${quick[@]}" --out "$root/out/report" "$@"
 "$root/build/bin/deepshadow" report "${quick[@]}" \
-  --scenes hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke --out "$root/out/report-hybrid" "$@"
+  --scenes hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke,hybrid-sparse --out "$root/out/report-hybrid" "$@"

@@ -237,7 +237,7 @@ awk -F, 'NR > 1 { s[NR] = $1; t[NR] = $13; e[NR] = $18; p[NR] = $22 }
 expect 2 "report without --out" -- "$tool" report --quick
 expect 2 "report of an unknown scene" -- "$tool" report --scenes teapot --out report2
 expect 0 "scenes" -- "$tool" scenes
-[ "$(grep -c '^[a-z]' out.txt)" -eq 13 ] || fail "expected 6 scenes, 3 bounded and 4 hybrid ones"
+[ "$(grep -c '^[a-z]' out.txt)" -eq 15 ] || fail "expected 7 scenes, 3 bounded and 5 hybrid ones"
 
 # Polyhedral bounds: bounded scenes, meshes from files combined by --csg, and bad bounds.
 cube_obj() { # cube_obj FILE LO HI [FACES]: an OBJ cube, outward; FACES < 6 leaves it open

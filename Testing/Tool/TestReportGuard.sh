@@ -9,7 +9,7 @@ tool=$1
 work=$2
 rm -rf "$work"
 mkdir -p "$work"
-scenes=box,bucky,rods,clouds,spheres,head,hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke
+scenes=box,bucky,rods,clouds,spheres,head,sparse,hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke,hybrid-sparse
 techniques=rays,rays-cached,rays-color,dsm,dsm-cached,dsm-color,dsm3,dsm3-cached,cssm,cssm-cached
 if ! "$tool" report --out "$work" --size 64x64 --error-size 64x64 --frames 0 --scenes "$scenes" \
   --techniques "$techniques" 2> "$work/progress.txt"; then
@@ -18,8 +18,8 @@ fi
 csv="$work/results.csv"
 column=$(head -1 "$csv" | tr ',' '\n' | grep -n '^worse_than_none$' | cut -d: -f1)
 rows=$(($(wc -l < "$csv") - 1))
-if [ -z "$column" ] || [ "$rows" -ne 110 ]; then
-  echo "FAILED: expected 110 rows with a worse_than_none column, got $rows"; exit 1
+if [ -z "$column" ] || [ "$rows" -ne 132 ]; then
+  echo "FAILED: expected 132 rows with a worse_than_none column, got $rows"; exit 1
 fi
 defects=$(awk -F, -v c="$column" 'NR > 1 && $c == 1 { print $1 ": " $4 " RMSE " $18 }' "$csv")
 if [ -n "$defects" ]; then

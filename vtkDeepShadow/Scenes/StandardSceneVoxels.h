@@ -144,6 +144,8 @@ struct SceneSpec
   // Views as azimuth/elevation in degrees: azimuth 0 looks from -y, positive turns towards +x.
   double CameraAzimuth, CameraElevation;
   double LightAzimuth, LightElevation;
+  // The sphere the camera frames (world x, y, z, radius); radius 0: the whole volume.
+  double Focus[4];
 };
 
 //------------------------------------------------------------------------------
@@ -198,6 +200,7 @@ void GenerateBucky(const Grid& g, unsigned char* out);
 void GenerateRods(const Grid& g, unsigned char* out);
 void GenerateSpheres(const Grid& g, unsigned char* out);
 void GenerateClouds(const Grid& g, unsigned char* out);
+void GenerateSparse(const Grid& g, unsigned char* out);
 void GenerateHead(const Grid& g, short* out);
 
 }

@@ -2,6 +2,8 @@
 
 #include "vtkDeepShadowBoundedScene.h"
 
+#include "StandardSceneSparse.h"
+
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
@@ -154,7 +156,7 @@ vtkSmartPointer<vtkPolyData> Cylinder(const CupPlace& cup, int sides)
 
 std::vector<std::string> vtkDeepShadowHybridScene::GetSceneNames()
 {
-  return { "hybrid-ground", "hybrid-glass", "hybrid-rod", "hybrid-smoke" };
+  return { "hybrid-ground", "hybrid-glass", "hybrid-rod", "hybrid-smoke", "hybrid-sparse" };
 }
 
 bool vtkDeepShadowHybridScene::IsSceneName(const std::string& name)
@@ -181,6 +183,10 @@ std::string vtkDeepShadowHybridScene::GetSceneDescription(const std::string& nam
   {
     return "the head beside a smoking cup of coffee (the smoke a second volume), over a ground";
   }
+  if (name == "hybrid-sparse")
+  {
+    return "the sparse scene over a ground, with an opaque box and a translucent blue prism among its objects";
+  }
   return std::string();
 }
 
@@ -197,6 +203,10 @@ std::string vtkDeepShadowHybridScene::GetVolumeSceneName(const std::string& name
   if (name == "hybrid-rod" || name == "hybrid-smoke")
   {
     return "head";
+  }
+  if (name == "hybrid-sparse")
+  {
+    return "sparse";
   }
   return std::string();
 }
@@ -254,6 +264,36 @@ std::vector<vtkDeepShadowHybridScene::Mesh> vtkDeepShadowHybridScene::MakeMeshes
     tool.PolyData = vtkDeepShadowBoundedScene::MakeBox(rod);
     tool.Color = { { 0.75, 0.75, 0.8 } };
     meshes.push_back(tool);
+  }
+  else if (name == "hybrid-sparse")
+  {
+    // Standing on the ground, in the cells the sparse scene leaves free: an opaque box and a
+    // tall translucent blue prism (glass).
+    namespace sparse = deepshadow::scenes::sparse;
+    const double ground = side > 0.0 ? b[2 * axis] - 0.04 * size : b[2 * axis + 1] + 0.04 * size;
+    const double centre[2] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]) };
+    const auto standing = [&](double x, double y, double halfWidth, double height) {
+      const double box[6] = { centre[0] + x - halfWidth, centre[0] + x + halfWidth, centre[1] + y - halfWidth,
+        centre[1] + y + halfWidth, std::min(ground, ground + side * height), std::max(ground, ground + side * height) };
+      return vtkDeepShadowBoundedScene::MakeBox(box);
+    };
+    Mesh box;
+    box.PolyData = standing(sparse::CellX(sparse::MeshCells[0][0]), sparse::CellY(sparse::MeshCells[0][1]), 10.0, 16.0);
+    box.Color = { { 0.8, 0.75, 0.6 } };
+    meshes.push_back(box);
+    CupPlace prism;
+    prism.Up = axis;
+    prism.Side = side;
+    prism.Base[0] = centre[0] + sparse::CellX(sparse::MeshCells[1][0]);
+    prism.Base[1] = centre[1] + sparse::CellY(sparse::MeshCells[1][1]);
+    prism.Base[2] = ground;
+    prism.Radius = 8.0;
+    prism.Height = 36.0;
+    Mesh tower;
+    tower.PolyData = Cylinder(prism, 8);
+    tower.Color = { { 0.3, 0.5, 1.0 } };
+    tower.Opacity = 0.5;
+    meshes.push_back(tower);
   }
   else if (name == "hybrid-smoke")
   {

@@ -16,6 +16,9 @@
  *                    coffee beside the head, over a ground. The smoke is a second volume
  *                    (MakeSmoke) rising from the cup on the light's side, so that its shadow
  *                    falls over the head; the head shadows the cup, the cup the ground.
+ * - "hybrid-sparse": the sparse scene's 19 objects over a ground, with an opaque box and a
+ *                    translucent blue octagonal prism standing in two of its free cells: 22
+ *                    objects.
  */
 #ifndef vtkDeepShadowHybridScene_h
 #define vtkDeepShadowHybridScene_h
@@ -39,7 +42,7 @@ public:
   vtkTypeMacro(vtkDeepShadowHybridScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** hybrid-ground, hybrid-glass, hybrid-rod, hybrid-smoke. */
+  /** hybrid-ground, hybrid-glass, hybrid-rod, hybrid-smoke, hybrid-sparse. */
   static std::vector<std::string> GetSceneNames();
   static bool IsSceneName(const std::string& name);
   static std::string GetSceneDescription(const std::string& name);

@@ -10,6 +10,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolumeProperty.h"
 
+#include "StandardSceneSparse.h"
 #include "StandardSceneVoxels.h"
 
 #include <algorithm>
@@ -28,17 +29,21 @@ namespace
 {
 const SceneSpec Specs[] = {
   { "box", "64^3 uchar: a cube that gets more opaque towards its centre (DSM from 3D textures)",
-    { 64, 64, 64 }, { 2.0, 2.0, 2.0 }, VTK_UNSIGNED_CHAR, 0.0, 35.0, 25.0, -55.0, 50.0 },
+    { 64, 64, 64 }, { 2.0, 2.0, 2.0 }, VTK_UNSIGNED_CHAR, 0.0, 35.0, 25.0, -55.0, 50.0, { 0.0, 0.0, 0.0, 0.0 } },
   { "bucky", "32^3 uchar: C60 buckyball, 60 Gaussian carbon atoms with faint bonds", { 32, 32, 32 },
-    { 4.0, 4.0, 4.0 }, VTK_UNSIGNED_CHAR, 0.0, 35.0, 25.0, -55.0, 50.0 },
+    { 4.0, 4.0, 4.0 }, VTK_UNSIGNED_CHAR, 0.0, 35.0, 25.0, -55.0, 50.0, { 0.0, 0.0, 0.0, 0.0 } },
   { "rods", "64^3 uchar: thin opaque rods crossing along x, y and z (thin occluders)",
-    { 64, 64, 64 }, { 2.0, 2.0, 2.0 }, VTK_UNSIGNED_CHAR, 0.0, 30.0, 22.0, -60.0, 45.0 },
+    { 64, 64, 64 }, { 2.0, 2.0, 2.0 }, VTK_UNSIGNED_CHAR, 0.0, 30.0, 22.0, -60.0, 45.0, { 0.0, 0.0, 0.0, 0.0 } },
   { "clouds", "512x512x32 uchar: fractal value-noise cloud puffs in a flat slab", { 512, 512, 32 },
-    { 0.45, 0.45, 0.45 }, VTK_UNSIGNED_CHAR, 0.0, 25.0, 38.0, -40.0, 40.0 },
+    { 0.45, 0.45, 0.45 }, VTK_UNSIGNED_CHAR, 0.0, 25.0, 38.0, -40.0, 40.0, { 0.0, 0.0, 0.0, 0.0 } },
   { "spheres", "128^3 uchar: seven translucent spheres of different sizes and values (CSSM)",
-    { 128, 128, 128 }, { 1.0, 1.0, 1.0 }, VTK_UNSIGNED_CHAR, 0.0, 30.0, 20.0, -45.0, 55.0 },
+    { 128, 128, 128 }, { 1.0, 1.0, 1.0 }, VTK_UNSIGNED_CHAR, 0.0, 30.0, 20.0, -45.0, 55.0, { 0.0, 0.0, 0.0, 0.0 } },
   { "head", "256x256x160 short: CT-like head phantom in Hounsfield units, 0.9x0.9x1.5 mm",
-    { 256, 256, 160 }, { 0.9, 0.9, 1.5 }, VTK_SHORT, -1000.0, 35.0, 12.0, -15.0, 50.0 },
+    { 256, 256, 160 }, { 0.9, 0.9, 1.5 }, VTK_SHORT, -1000.0, 35.0, 12.0, -15.0, 50.0, { 0.0, 0.0, 0.0, 0.0 } },
+  { "sparse", "256x256x48 uchar: 19 small objects far apart in a wide flat slab, the camera close to one (clustered DSM)",
+    { 256, 256, 48 }, { 1.0, 1.0, 1.0 }, VTK_UNSIGNED_CHAR, 0.0, 45.0, 12.0, scenes::sparse::LightAzimuth,
+    scenes::sparse::LightElevation,
+    { scenes::sparse::Focus[0], scenes::sparse::Focus[1], scenes::sparse::Focus[2], scenes::sparse::FocusRadius } },
 };
 
 const SceneSpec* FindSpec(const std::string& name)
@@ -120,6 +125,25 @@ void BuildProperty(const std::string& name, vtkColorTransferFunction* color,
     const double bands[][4] = { { 30.0, 0.95, 0.95, 0.2 }, { 60.0, 0.2, 0.85, 0.3 },
       { 100.0, 0.2, 0.8, 0.9 }, { 140.0, 0.25, 0.35, 1.0 }, { 170.0, 0.7, 0.3, 0.95 },
       { 200.0, 1.0, 0.3, 0.25 }, { 240.0, 1.0, 0.6, 0.1 } };
+    for (const auto& b : bands)
+    {
+      color->AddRGBPoint(b[0] - 12.0, b[1], b[2], b[3]);
+      color->AddRGBPoint(b[0] + 12.0, b[1], b[2], b[3]);
+    }
+  }
+  else if (name == "sparse")
+  {
+    // Green and cyan objects translucent, blue half, purple, red and orange ones opaque.
+    property->SetAmbient(0.3);
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(25.0, 0.0);
+    opacity->AddPoint(45.0, 0.05);
+    opacity->AddPoint(110.0, 0.1);
+    opacity->AddPoint(155.0, 0.55);
+    opacity->AddPoint(255.0, 0.9);
+    const double bands[][4] = { { 60.0, 0.3, 0.85, 0.35 }, { 100.0, 0.25, 0.8, 0.9 },
+      { 140.0, 0.3, 0.4, 1.0 }, { 170.0, 0.7, 0.35, 0.9 }, { 200.0, 0.95, 0.3, 0.25 },
+      { 240.0, 1.0, 0.65, 0.15 } };
     for (const auto& b : bands)
     {
       color->AddRGBPoint(b[0] - 12.0, b[1], b[2], b[3]);
@@ -305,6 +329,10 @@ vtkImageData* vtkDeepShadowStandardScene::GetVolume()
     {
       scenes::GenerateClouds(g, out);
     }
+    else if (this->Scene == "sparse")
+    {
+      scenes::GenerateSparse(g, out);
+    }
     else
     {
       scenes::GenerateSpheres(g, out);
@@ -365,9 +393,20 @@ void vtkDeepShadowStandardScene::ApplyCamera(vtkCamera* camera)
   const double trueUp[3] = { dir[1] * right[2] - dir[2] * right[1],
     dir[2] * right[0] - dir[0] * right[2], dir[0] * right[1] - dir[1] * right[0] };
 
-  // Smallest distance at which every corner of the bounds lies inside the 30-degree view cone
-  // (square viewport), with a 12 % margin.
+  // A scene with a focus: that sphere in the 30-degree view cone with a 12 % margin.
   const double tanHalf = std::tan(15.0 * 3.14159265358979323846 / 180.0) / 1.12;
+  if (spec.Focus[3] > 0.0)
+  {
+    const double distance = spec.Focus[3] / std::sin(std::atan(tanHalf));
+    camera->SetFocalPoint(spec.Focus[0], spec.Focus[1], spec.Focus[2]);
+    camera->SetPosition(spec.Focus[0] + distance * dir[0], spec.Focus[1] + distance * dir[1],
+      spec.Focus[2] + distance * dir[2]);
+    camera->SetViewUp(trueUp);
+    camera->SetViewAngle(30.0);
+    return;
+  }
+  // Otherwise the smallest distance at which every corner of the bounds lies inside that cone
+  // (square viewport).
   double distance = 0.0;
   for (int corner = 0; corner < 8; ++corner)
   {

@@ -12,6 +12,9 @@
  * - "clouds":  512x512x32 uchar, fBm value-noise cloud puffs in a flat slab.
  * - "spheres": 128^3 uchar, translucent spheres of different sizes and scalar values (CSSM).
  * - "head":    256x256x160 short, a CT-like head phantom in Hounsfield units, anisotropic spacing.
+ * - "sparse":  256x256x48 uchar, 19 small objects (balls, shells, molecules, rings, cubes,
+ *              crosses) far apart in a wide flat slab, the camera close to one of them near a
+ *              corner, far from the centre of the light's view (clustered deep shadow maps).
  *
  * Generation is deterministic: integer hashes for randomness, only correctly rounded IEEE
  * operations (no libm transcendental functions, no <random> distributions), compiled without
@@ -45,7 +48,7 @@ public:
   vtkTypeMacro(vtkDeepShadowStandardScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** The scene names, in a fixed order: box, bucky, rods, clouds, spheres, head. */
+  /** The scene names, in a fixed order: box, bucky, rods, clouds, spheres, head, sparse. */
   static std::vector<std::string> GetSceneNames();
 
   /** One line describing the scene; "" if the name is unknown. */
@@ -101,7 +104,8 @@ public:
 
   /**
    * Sets a 3/4 view of the volume: focal point at its centre, view angle 30 degrees, view-up,
-   * and a distance at which the whole bounding sphere is in view with some margin. The caller
+   * and a distance at which the whole bounding box is in view with some margin. "sparse" is
+   * seen from close to one of its objects instead (the rest recedes behind it). The caller
    * resets the clipping range.
    */
   void ApplyCamera(vtkCamera* camera);

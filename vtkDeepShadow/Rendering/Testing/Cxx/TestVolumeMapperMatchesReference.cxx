@@ -27,7 +27,8 @@ int TestVolumeMapperMatchesReference(int argc, char* argv[])
 {
   // Voxels per axis kept small so the CPU reference stays quick.
   const std::map<std::string, double> scales = { { "box", 0.75 }, { "bucky", 1.0 },
-    { "rods", 0.75 }, { "clouds", 0.2 }, { "spheres", 0.4 }, { "head", 0.25 } };
+    { "rods", 0.75 }, { "clouds", 0.2 }, { "spheres", 0.4 }, { "head", 0.25 },
+    { "sparse", 0.5 } };
   vtkNew<vtkDeepShadowRenderWindow> window;
   window->SetSize(160, 160);
   bool ok = true;

@@ -7,6 +7,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNew.h"
@@ -60,6 +61,7 @@ const std::map<std::string, Expected>& ExpectedScenes()
     { "clouds", { { 512, 512, 32 }, VTK_UNSIGNED_CHAR } },
     { "spheres", { { 128, 128, 128 }, VTK_UNSIGNED_CHAR } },
     { "head", { { 256, 256, 160 }, VTK_SHORT } },
+    { "sparse", { { 256, 256, 48 }, VTK_UNSIGNED_CHAR } },
   };
   return scenes;
 }
@@ -156,7 +158,7 @@ void ExpectSameImage(vtkImageData* expected, vtkImageData* actual)
 //------------------------------------------------------------------------------
 TEST(StandardScene, NamesAndDescriptions)
 {
-  const std::vector<std::string> expected = { "box", "bucky", "rods", "clouds", "spheres", "head" };
+  const std::vector<std::string> expected = { "box", "bucky", "rods", "clouds", "spheres", "head", "sparse" };
   EXPECT_EQ(vtkDeepShadowStandardScene::GetSceneNames(), expected);
   for (const std::string& name : expected)
   {
@@ -285,7 +287,7 @@ TEST_P(EachScene, TransferFunctionSkipsTheBackground)
   EXPECT_GT(maxOpacity, 0.0);
 }
 
-TEST_P(EachScene, CameraSeesTheWholeVolumeAndLightIsOffAxis)
+TEST_P(EachScene, CameraFramesTheSceneAndLightIsOffAxis)
 {
   vtkNew<vtkDeepShadowStandardScene> scene;
   scene->SetScene(GetParam());
@@ -298,21 +300,46 @@ TEST_P(EachScene, CameraSeesTheWholeVolumeAndLightIsOffAxis)
   scene->GetVolume()->GetBounds(bounds);
   const double tanHalf = std::tan(15.0 * Pi / 180.0);
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  int cornersInView = 0;
   for (int corner = 0; corner < 8; ++corner)
   {
     const double p[4] = { bounds[(corner & 1) ? 1 : 0], bounds[(corner & 2) ? 3 : 2],
       bounds[(corner & 4) ? 5 : 4], 1.0 };
     double e[4];
     view->MultiplyPoint(p, e);
-    ASSERT_LT(e[2], 0.0) << "corner behind the camera";
-    EXPECT_LT(std::fabs(e[0] / e[2]), tanHalf) << "corner " << corner << " out of view";
-    EXPECT_LT(std::fabs(e[1] / e[2]), tanHalf) << "corner " << corner << " out of view";
+    cornersInView += e[2] < 0.0 && std::fabs(e[0] / e[2]) < tanHalf && std::fabs(e[1] / e[2]) < tanHalf;
+  }
+  const double* focal = camera->GetFocalPoint();
+  const double* pos = camera->GetPosition();
+  if (GetParam() == "sparse")
+  {
+    // Close to one object: the focal point on a visible sample, the camera outside the volume
+    // but nearer than a third of its diagonal, most of the volume out of view.
+    const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+      std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+    EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(pos, focal)), diagonal / 3.0);
+    bool inside = true;
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_GT(focal[a], bounds[2 * a]);
+      EXPECT_LT(focal[a], bounds[2 * a + 1]);
+      inside = inside && pos[a] > bounds[2 * a] && pos[a] < bounds[2 * a + 1];
+    }
+    EXPECT_FALSE(inside) << "the camera inside the volume";
+    EXPECT_LT(cornersInView, 8);
+    double pcoords[3];
+    int ijk[3];
+    ASSERT_EQ(scene->GetVolume()->ComputeStructuredCoordinates(focal, ijk, pcoords), 1);
+    const double value = scene->GetVolume()->GetScalarComponentAsDouble(ijk[0], ijk[1], ijk[2], 0);
+    EXPECT_GT(scene->GetVolumeProperty()->GetScalarOpacity()->GetValue(value), 0.05) << value;
+  }
+  else
+  {
+    EXPECT_EQ(cornersInView, 8) << "the whole volume in view";
   }
 
   double light[3], toCamera[3];
   scene->GetLightDirection(light);
-  const double* pos = camera->GetPosition();
-  const double* focal = camera->GetFocalPoint();
   double n = 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -330,7 +357,7 @@ TEST_P(EachScene, CameraSeesTheWholeVolumeAndLightIsOffAxis)
 }
 
 INSTANTIATE_TEST_SUITE_P(StandardScene, EachScene,
-  ::testing::Values("box", "bucky", "rods", "clouds", "spheres", "head"),
+  ::testing::Values("box", "bucky", "rods", "clouds", "spheres", "head", "sparse"),
   [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 //------------------------------------------------------------------------------
