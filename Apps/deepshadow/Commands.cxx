@@ -1,6 +1,7 @@
 #include "Commands.h"
 
 #include "Look.h"
+#include "Measure.h"
 
 #include "Json.h"
 #include "Outputs.h"
@@ -97,6 +98,8 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
     .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
     .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0)
+    .Set("clusters", ClusterCount(setup.Technique))
+    .Set("cluster_texels", ClusterTexels(setup.Technique))
     .Set("shadow_builds", shadowBuilds)
     .Set("first_frame_passes", firstPasses)
     .Set("passes", passes) // of the last timed frame

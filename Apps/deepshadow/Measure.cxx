@@ -4,6 +4,7 @@
 
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
+#include "vtkDeepShadowLightSpaceTechnique.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowRayTechnique.h"
@@ -25,6 +26,25 @@ namespace deepshadow
 {
 namespace tool
 {
+
+int ClusterCount(vtkDeepShadowTechnique* technique)
+{
+  int count = 0;
+  if (auto* maps = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique))
+  {
+    for (const int faces : maps->GetClusterCounts())
+    {
+      count += faces;
+    }
+  }
+  return count;
+}
+
+long long ClusterTexels(vtkDeepShadowTechnique* technique)
+{
+  auto* maps = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique);
+  return maps ? static_cast<long long>(ClusterCount(technique)) * maps->GetMapSize() * maps->GetMapSize() : 0LL;
+}
 
 SceneBench::SceneBench(const Options& options, const std::string& name)
   : Settings(options)
@@ -154,6 +174,8 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     m.TexelsOverflowed = dsm->GetTexelsOverflowed();
     m.EpsilonMax = dsm->GetEpsilonMax();
   }
+  m.Clusters = ClusterCount(technique);
+  m.ClusterTexels = ClusterTexels(technique);
   this->Use(nullptr, nullptr);
   return m;
 }

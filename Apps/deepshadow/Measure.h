@@ -50,7 +50,14 @@ struct Measurement
   int NodesMax = 0;
   long long TexelsOverflowed = 0;
   double EpsilonMax = 0.0;
+  // Light-space techniques: clustered faces over all shadowed lights, and their texels.
+  int Clusters = 0;
+  long long ClusterTexels = 0;
 };
+
+/** Clustered faces of a light-space technique (0 for others or unclustered) and their texels. */
+int ClusterCount(vtkDeepShadowTechnique* technique);
+long long ClusterTexels(vtkDeepShadowTechnique* technique);
 
 /** The ground truth of a scene's start view at the error size. */
 struct GroundTruth

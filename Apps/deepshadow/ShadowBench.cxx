@@ -104,7 +104,9 @@ int RunShadowBench(const Options& options)
         .Set("dsm_nodes_avg", m.NodesAverage)
         .Set("dsm_nodes_max", m.NodesMax)
         .Set("dsm_texels_overflowed", m.TexelsOverflowed)
-        .Set("dsm_epsilon_max", m.EpsilonMax);
+        .Set("dsm_epsilon_max", m.EpsilonMax)
+        .Set("clusters", m.Clusters)
+        .Set("cluster_texels", m.ClusterTexels);
       rows.push_back(row);
     }
   }

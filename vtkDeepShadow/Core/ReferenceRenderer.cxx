@@ -136,6 +136,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   caster.Mask = volume.Mask.get();
+  caster.Eye = scene.View.Unproject(0.5 * scene.View.GetWidth(), 0.5 * scene.View.GetHeight(), 0.0);
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);

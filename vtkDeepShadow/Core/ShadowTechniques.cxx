@@ -116,6 +116,13 @@ std::vector<ShadowParameterInfo> MakeParameters()
   list.push_back(Field(Numeric("shadow-map-size", Type::Integer, 1, 65536, "N",
                          "texels per side"),
     &ShadowParameters::MapSize));
+  list.push_back(Field(Numeric("clusters", Type::Integer, 0, 8, "M",
+                         "clustered maps per light, fitted to groups of objects (0: one map)"),
+    &ShadowParameters::Clusters));
+  list.push_back(Field(Numeric("cluster-distance", Type::Number, 0.0, 2.0, "D",
+                         "clusters: objects farther apart (light space, in face half-widths) "
+                         "get maps of their own"),
+    &ShadowParameters::ClusterDistance));
   list.push_back(Field(Numeric("epsilon", Type::Number, 0.0, 1.0, "E",
                          "bound on the compressed visibility's error"),
     &ShadowParameters::Epsilon));
@@ -242,6 +249,23 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     };
     list.push_back(dsm);
   }
+  // Clustered deep shadow maps (paper 000, section 4): at most 4 maps of 256^2 per light, the
+  // memory of one 512^2 map, each fitted to a cluster of the volume's objects.
+  auto clustered = LightSpaceMap(Technique("dsm-clustered", "", ShadowKind::DeepShadowMap,
+    { "epsilon", "layers", "clusters", "cluster-distance" },
+    { { "", true }, { ":clusters=2" }, { ":clusters=8", true }, { ":cluster-distance=0.1" },
+      { ":cluster-distance=0.5" }, { ":shadow-map-size=512" } }));
+  clustered.Clustered = true;
+  clustered.Defaults = [](ShadowParameters& p) {
+    MapDefaults(p);
+    p.Clusters = 4;
+    p.MapSize = 256;
+  };
+  clustered.MakeShadow = MakeTwin<DeepShadowMap>;
+  clustered.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
+    return 8 * static_cast<std::uint64_t>(p.Layers) * static_cast<std::uint64_t>(std::max(1, p.Clusters));
+  };
+  list.push_back(clustered);
 
   auto levels = LightSpaceMap(Technique("dsm3", "opacity levels", ShadowKind::OpacityLevels,
     { "opacity-levels" }, { { "", true }, { ":shadow-map-size=256" }, { "-cached" } }));
@@ -465,7 +489,8 @@ const ShadowTechniqueInfo& ShadowTechniqueOf(const ShadowParameters& parameters)
     {
       continue;
     }
-    if (technique.Opaque == parameters.Opaque && technique.Colored == parameters.Colored)
+    if (technique.Opaque == parameters.Opaque && technique.Colored == parameters.Colored &&
+      technique.Clustered == (parameters.Clusters > 0))
     {
       return technique;
     }

@@ -67,6 +67,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
   ShadowKind Kind = ShadowKind::None;
   bool Opaque = false;
   bool Colored = false;
+  bool Clustered = false; // its maps are clustered (ShadowParameters::Clusters > 0)
   /** A hard shadow (lit or not, by the threshold), not a translucent one. */
   bool Binary = false;
   /** Parameter keys it reads besides the shared ones (SharedShadowParameterKeys()). */

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,6 +93,12 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   bool Cached = false;
   int VolumeSize = 128;     // cached: shadow nodes along the longest axis (at most the data's)
   int MapSize = 512;        // light-space maps: texels per side
+  /**
+   * Light-space maps: at most this many clustered faces per light, each fitted to a cluster
+   * of the volume's objects (Core/Shadows/Clusters.h); 0: one face over the whole box.
+   */
+  int Clusters = 0;
+  double ClusterDistance = 0.25; // clustering's d0, in half-widths of the unclustered face
 
   // Rays.
   bool Opaque = false;      // binary: blocked at the first occluder (see ThresholdMode)
@@ -163,6 +170,13 @@ struct CastSample
   glm::dvec4 Values{ 0.0 }; // every component's value (Components.h), when there are several
 };
 
+/** A box in a volume's continuous index space, corners included. */
+struct IndexBox
+{
+  glm::dvec3 Lo{ 0.0 };
+  glm::dvec3 Hi{ 0.0 };
+};
+
 /** The volume that casts shadows, as the techniques read it. */
 struct ShadowCaster
 {
@@ -194,6 +208,16 @@ struct ShadowCaster
   const VolumeGrid* Mask = nullptr;
   /** Several components (Components.h): their colours and opacities replace Transfer's. */
   const ComponentLookup* Components = nullptr;
+  /**
+   * Optional: the part of index space a light-space face's rays march (a cluster's box,
+   * Core/Shadows/Clusters.h); null: all of it.
+   */
+  const IndexBox* Clip = nullptr;
+  /**
+   * Optional: the centre of the camera's near plane (world). Clustered light-space maps give
+   * objects that look larger from there clusters of their own (Core/Shadows/Clusters.h).
+   */
+  std::optional<glm::dvec3> Eye;
 
   /**
    * The sample at continuous voxel index `index` of a light ray whose crossings `crossings`

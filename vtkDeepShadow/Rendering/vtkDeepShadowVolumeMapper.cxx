@@ -439,6 +439,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   frame.Property = property;
   renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X0, &frame.Y0);
   frame.View = adapter::MakeCamera(renderer);
+  frame.Context.Eye = frame.View.Unproject(0.5 * frame.View.GetWidth(), 0.5 * frame.View.GetHeight(), 0.0);
   frame.Shade = !projection && property->GetShade(0) != 0;
   frame.ShadowTerm = !projection && this->OutputMode == OutputShadowTerm;
   frame.Lit = frame.Shade || (!projection && this->ShadowTechnique) || frame.ShadowTerm;
@@ -453,6 +454,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
       impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()
     : nullptr;
+  context.EmptyBlocks = context.Occupancy ? &impl.Occupancy.GetMap() : nullptr;
   context.BlockSize = static_cast<float>(deepshadow::VolumeTexture::BlockSize);
   context.Dims = impl.Volume.GetDims();
   context.Range = impl.Volume.GetRange();

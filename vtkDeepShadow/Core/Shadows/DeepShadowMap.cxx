@@ -269,7 +269,7 @@ DeepShadowMap::DeepShadowMap(const ShadowParameters& parameters, const ShadowCas
   long nodesTotal = 0;
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
     const VisibilitySamples samples =
-      SampleVisibility(caster, origin, direction, step, parameters.Colored, parameters.Epsilon);
+      SampleVisibility(this->FaceCaster(f), origin, direction, step, parameters.Colored, parameters.Epsilon);
     if (samples.Depths.empty())
     {
       return; // the ray misses the volume: V' = 1

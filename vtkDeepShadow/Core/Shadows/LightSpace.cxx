@@ -1,4 +1,5 @@
 #include "Core/Shadows/LightSpace.h"
+#include "Core/Shadows/Clusters.h"
 
 #include "Core/Bound/BoundRegion.h"
 #include "Core/Camera.h"
@@ -8,6 +9,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -243,9 +245,15 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
     return true;
   };
   const VolumeGrid& grid = *caster.Grid;
+  glm::dvec3 lo(0.0), hi(grid.GetDims() - 1);
+  if (caster.Clip)
+  {
+    lo = glm::max(lo, caster.Clip->Lo);
+    hi = glm::min(hi, caster.Clip->Hi);
+  }
   double tEnter = 0.0, tExit = 0.0;
-  if (!IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), glm::dvec3(0.0),
-        glm::dvec3(grid.GetDims() - 1), tEnter, tExit))
+  if (glm::any(glm::greaterThan(lo, hi)) ||
+    !IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), lo, hi, tEnter, tExit))
   {
     surfacesUpTo(std::numeric_limits<double>::infinity());
     return;
@@ -305,8 +313,38 @@ LightSpaceShadow::LightSpaceShadow(
   , Size(std::max(1, parameters.MapSize))
   , Step(step)
 {
-  this->Faces = ShadowMapFaces(
-    light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
+  // Clusters need empty blocks to find objects in (as the GPU, whose block map exists then).
+  const EmptySpaceMap* empty = caster.Empty;
+  if (parameters.Clusters > 0 && empty &&
+    std::find(empty->Occupied.begin(), empty->Occupied.end(), uint8_t(0)) != empty->Occupied.end())
+  {
+    ClusteredFaces clustered = ClusterFaces(light, caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(),
+      *empty, caster.Surfaces, parameters.Clusters, parameters.ClusterDistance, caster.Eye ? &*caster.Eye : nullptr);
+    this->Faces = std::move(clustered.Faces);
+    this->Clips = std::move(clustered.Clips);
+    this->FaceStarts = std::move(clustered.Starts);
+    this->FaceEmpty = std::move(clustered.Occupied);
+    this->FaceSurfaces = std::move(clustered.CastsSurfaces);
+  }
+  if (this->Faces.empty())
+  {
+    this->Faces = ShadowMapFaces(
+      light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
+  }
+  // A clustered face marches its box, and of it only its own blocks and crossings.
+  for (size_t f = 0; f < this->Clips.size(); ++f)
+  {
+    ShadowCaster own = caster;
+    own.Clip = &this->Clips[f];
+    own.Empty = &this->FaceEmpty[f];
+    own.Surfaces = this->FaceSurfaces[f] ? caster.Surfaces : nullptr;
+    this->FaceCasters.push_back(own);
+  }
+}
+
+const ShadowCaster& LightSpaceShadow::FaceCaster(int face) const
+{
+  return this->Clips.empty() ? this->Caster : this->FaceCasters[static_cast<size_t>(face)];
 }
 
 void LightSpaceShadow::ForEachTexel(int threads,
@@ -344,6 +382,21 @@ bool LightSpaceShadow::Locate(int face, const glm::dvec3& p, MapPoint& point) co
 
 glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
 {
+  if (this->IsClustered())
+  {
+    // What every cluster casts along the light's ray: a cluster whose face does not see p,
+    // or that lies beyond p, casts nothing there.
+    glm::dvec3 visibility(1.0);
+    for (int face = 0; face < static_cast<int>(this->Faces.size()); ++face)
+    {
+      MapPoint point;
+      if (this->Locate(face, p, point) && InsideFace(point, this->Size) && point.Depth >= this->FaceStarts[face])
+      {
+        visibility *= this->MapVisibility(point);
+      }
+    }
+    return visibility;
+  }
   MapPoint point;
   if (!this->Locate(ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin), p, point))
   {
@@ -354,10 +407,32 @@ glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
 
 glm::dvec3 LightSpaceShadow::SurfaceVisibility(const glm::dvec3& p, const glm::dvec3& normal) const
 {
+  if (this->IsClustered())
+  {
+    glm::dvec3 visibility(1.0);
+    for (int face = 0; face < static_cast<int>(this->Faces.size()); ++face)
+    {
+      MapPoint point;
+      if (this->LocateSurface(face, p, normal, point) && InsideFace(point, this->Size))
+      {
+        visibility *= this->MapVisibility(point);
+      }
+    }
+    return visibility;
+  }
   MapPoint point;
-  if (!this->Locate(ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin), p, point))
+  if (!this->LocateSurface(ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin), p, normal, point))
   {
     return glm::dvec3(1.0);
+  }
+  return this->MapVisibility(point);
+}
+
+bool LightSpaceShadow::LocateSurface(int faceIndex, const glm::dvec3& p, const glm::dvec3& normal, MapPoint& point) const
+{
+  if (!this->Locate(faceIndex, p, point))
+  {
+    return false;
   }
   // Two steps of a texel's width along the receiver's plane, located on the same face: the
   // plane's depth changes linearly across the map (locally, for a perspective face).
@@ -385,7 +460,7 @@ glm::dvec3 LightSpaceShadow::SurfaceVisibility(const glm::dvec3& p, const glm::d
       }
     }
   }
-  return this->MapVisibility(point);
+  return true;
 }
 
 glm::dvec3 LightSpaceShadow::Bilinear(

@@ -142,6 +142,15 @@ inline double ClampTexelPosition(double position, int size)
 }
 
 /**
+ * Whether a point lies within its face's texels (u and v in [-1, 1]): a cluster's face casts
+ * nothing outside them.
+ */
+inline bool InsideFace(const MapPoint& point, int size)
+{
+  return point.X >= -0.5 && point.X <= size - 0.5 && point.Y >= -0.5 && point.Y <= size - 0.5;
+}
+
+/**
  * The steepest receiver plane a lookup follows, in depth per texel width: 80 degrees from
  * the light (beyond, the plane extends too far to stand for the surface, and its diffuse
  * light is below cos 80 = 0.17 anyway).
@@ -162,12 +171,17 @@ public:
   glm::dvec3 SurfaceVisibility(const glm::dvec3& p, const glm::dvec3& normal) const final;
   const std::vector<ShadowMapFace>& GetFaces() const { return this->Faces; }
   int GetSize() const { return this->Size; }
+  /** Whether the faces are clusters (ShadowParameters::Clusters; Core/Shadows/Clusters.h). */
+  bool IsClustered() const { return !this->Clips.empty(); }
 
 protected:
   LightSpaceShadow(const ShadowParameters& parameters, const ShadowCaster& caster,
     const Light& light, double step);
 
-  /** Calls build(face, x, y, origin, direction) for every texel of every face, in parallel. */
+  /**
+   * Calls build(face, x, y, origin, direction) for every texel of every face, in parallel. A
+   * face's rays march FaceCaster(face): the caster, clipped to the face's cluster.
+   */
   void ForEachTexel(int threads,
     const std::function<void(int, int, int, const glm::dvec3&, const glm::dvec3&)>& build) const;
 
@@ -181,6 +195,8 @@ protected:
   glm::dvec3 Bilinear(const MapPoint& point,
     const std::function<glm::dvec3(size_t texel, double depth)>& value) const;
 
+  const ShadowCaster& FaceCaster(int face) const;
+
   /** Index of texel (x, y) of a face, clamped to the face's edge. */
   size_t Texel(int face, int x, int y) const;
   size_t TexelCount() const;
@@ -188,6 +204,8 @@ protected:
 private:
   /** p on face `face`: its texel position and depth; false if it is behind the face. */
   bool Locate(int face, const glm::dvec3& p, MapPoint& point) const;
+  /** The same for a point of a receiving surface of that normal, with its plane's slope. */
+  bool LocateSurface(int face, const glm::dvec3& p, const glm::dvec3& normal, MapPoint& point) const;
 
 protected:
   ShadowParameters Parameters;
@@ -195,6 +213,13 @@ protected:
   int Size;
   double Step;
   std::vector<ShadowMapFace> Faces;
+  // Clustered (Core/Shadows/Clusters.h): each face's box, blocks, whether the casting
+  // surfaces are its, and Caster clipped to them.
+  std::vector<IndexBox> Clips;
+  std::vector<double> FaceStarts;
+  std::vector<EmptySpaceMap> FaceEmpty;
+  std::vector<bool> FaceSurfaces;
+  std::vector<ShadowCaster> FaceCasters;
 };
 
 }

@@ -153,7 +153,7 @@ OpacityLevelsShadow::OpacityLevelsShadow(const ShadowParameters& parameters,
     // Like feelers, stop below 1/512 of what volume and meshes let through together.
     auto more = [&] { return volume * steps.Transmittance() > ShadowTerminationTransmittance; };
     MarchTexelRay(
-      caster, origin, direction, step, caster.Empty,
+      this->FaceCaster(f), origin, direction, step, this->FaceCaster(f).Empty,
       [&](long, double t, const CastSample& scalar, bool skipped) {
         if (samples.Depths.empty())
         {

@@ -82,12 +82,13 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
 {
   this->Depths.assign(this->TexelCount(), NoHit);
   // Zero-opacity blocks hold no occluder, unless the threshold is on the scalar.
-  const EmptySpaceMap* empty = parameters.Mode == ThresholdMode::Scalar ? nullptr : caster.Empty;
+  const bool skipEmpty = parameters.Mode != ThresholdMode::Scalar;
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
+    const EmptySpaceMap* empty = skipEmpty ? this->FaceCaster(f).Empty : nullptr;
     float& depth = this->Depths[this->Texel(f, x, y)];
     OccluderTest occluder(caster, parameters, step);
     MarchTexelRay(
-      caster, origin, direction, step, empty,
+      this->FaceCaster(f), origin, direction, step, empty,
       [&](long, double t, const CastSample& scalar, bool skipped) {
         if (!skipped && occluder.Sample(scalar))
         {

@@ -91,7 +91,7 @@ StochasticShadowMap::StochasticShadowMap(const ShadowParameters& parameters,
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
     for (int photon = 0; photon < this->Photons; ++photon)
     {
-      this->Stops[this->Texel(f, x, y) * this->Photons + photon] = TraceStochasticPhoton(caster,
+      this->Stops[this->Texel(f, x, y) * this->Photons + photon] = TraceStochasticPhoton(this->FaceCaster(f),
         origin, direction, step, static_cast<uint32_t>(x), static_cast<uint32_t>(y),
         static_cast<uint32_t>(f * this->Photons + photon), parameters.Seed);
     }

@@ -47,6 +47,31 @@ void deferTexel()
   u_deferred.texels[atomicAdd(u_deferred.count, 1u)] = uint(g_texel.x) | (uint(g_texel.y) << 16);
 }
 //DeepShadow::Build::Dec
+#ifdef LIGHT_SPACE_CLIP
+// A clustered face (deepshadow::ClusteredFaces) marches its cluster's box, and of it only its
+// cluster's blocks (label u_clipLabel; 0: an unclustered face, every occupied block) and,
+// if they are its, the casting surfaces' crossings.
+uniform vec3 u_clipLo;
+uniform vec3 u_clipHi;
+uniform int u_clipLabel;
+uniform int u_clipSurfaces;
+uniform sampler3D u_clusterLabels; // per block: 0, or 1 + its cluster (R8, nearest)
+
+bool lightSpaceOwnBlock(ivec3 block)
+{
+  if (u_clipLabel == 0)
+  {
+    return texelFetch(u_occupancy, block, 0).r != 0.0;
+  }
+  return int(round(texelFetch(u_clusterLabels, block, 0).r * 255.0)) == u_clipLabel;
+}
+
+// The ray's interval in the volume's box within the cluster's box.
+vec2 lightSpaceClip(vec3 indexOrigin, vec3 indexDirection)
+{
+  return boxIntervalOf(indexOrigin, indexDirection, max(u_clipLo, vec3(0.0)), min(u_clipHi, u_dims - 1.0));
+}
+#endif
 //DeepShadow::Surfaces::Visit
 
 void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
@@ -141,6 +166,10 @@ void main()
   }
   vec3 indexOrigin = (u_worldToIndex * vec4(origin, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(direction, 0.0)).xyz;
+#ifdef LIGHT_SPACE_CLIP
+  vec2 inside = lightSpaceClip(indexOrigin, indexDirection);
+#else
   vec2 inside = boxInterval(indexOrigin, indexDirection);
+#endif
   buildTexel(indexOrigin, indexDirection, max(inside.x, 0.0), inside.y);
 }

@@ -86,7 +86,7 @@ deepshadow::ShadowParameters vtkDeepShadowDeepShadowMapTechnique::GetParameters(
   deepshadow::ShadowParameters parameters;
   this->FillParameters(parameters);
   parameters.Kind = deepshadow::ShadowKind::DeepShadowMap;
-  parameters.MapSize = this->MapSize;
+  this->FillMapParameters(parameters);
   parameters.Epsilon = this->Epsilon;
   parameters.Layers = this->Layers;
   parameters.Colored = this->Colored;

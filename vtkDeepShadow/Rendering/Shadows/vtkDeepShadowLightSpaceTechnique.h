@@ -19,6 +19,7 @@
 #include "vtkDeepShadowTechnique.h"
 
 #include <memory> // For std::unique_ptr
+#include <vector> // For cluster counts
 
 class vtkDeepShadowBrickExchange;
 
@@ -36,6 +37,33 @@ public:
   void SetMapSize(int size);
   vtkGetMacro(MapSize, int);
   ///@}
+
+  ///@{
+  /**
+   * Clustered maps (paper 000, section 4): at most this many faces per light, each fitted to
+   * a cluster of the volume's objects (groups of non-empty blocks; the casting meshes' box is
+   * one more), instead of one face over the whole box (0, the default; [0, 8], warned). A
+   * lookup multiplies what every cluster casts along the light's ray. Sparse volumes get
+   * their texels where the objects are. Needs empty blocks (empty-space skipping on, a
+   * composite or MIP blend of one component, no separate shadow property); without them, and
+   * for a positional light inside the casters' bounding sphere, one face (or cube) as before.
+   */
+  void SetClusters(int clusters);
+  vtkGetMacro(Clusters, int);
+  ///@}
+
+  ///@{
+  /**
+   * Clustering's distance threshold d0: objects whose light-space extents differ by more
+   * than this (in half-widths of the unclustered face) get clusters of their own while
+   * Clusters allows (default 0.25; [0, 2], warned).
+   */
+  void SetClusterDistance(double distance);
+  vtkGetMacro(ClusterDistance, double);
+  ///@}
+
+  /** Clustered faces per shadowed light in the last frame (0 when not clustered). */
+  std::vector<int> GetClusterCounts() const;
 
   ///@{
   /**
@@ -80,7 +108,12 @@ protected:
   std::string GetLookupSource() const override;
   void UnbindLookup() override;
 
+  /** The light-space fields of GetParameters(): map size and clustering. */
+  void FillMapParameters(deepshadow::ShadowParameters& parameters) const;
+
   int MapSize = 512;
+  int Clusters = 0;
+  double ClusterDistance = 0.25;
 
 private:
   vtkDeepShadowLightSpaceTechnique(const vtkDeepShadowLightSpaceTechnique&) = delete;

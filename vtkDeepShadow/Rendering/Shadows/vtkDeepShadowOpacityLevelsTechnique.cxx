@@ -77,7 +77,7 @@ deepshadow::ShadowParameters vtkDeepShadowOpacityLevelsTechnique::GetParameters(
   deepshadow::ShadowParameters parameters;
   this->FillParameters(parameters);
   parameters.Kind = deepshadow::ShadowKind::OpacityLevels;
-  parameters.MapSize = this->MapSize;
+  this->FillMapParameters(parameters);
   parameters.Levels = { { this->Levels[0], this->Levels[1], this->Levels[2] } };
   return parameters;
 }

@@ -55,7 +55,7 @@ deepshadow::ShadowParameters vtkDeepShadowShadowMapTechnique::GetParameters() co
   deepshadow::ShadowParameters parameters;
   this->FillParameters(parameters);
   parameters.Kind = deepshadow::ShadowKind::ShadowMap;
-  parameters.MapSize = this->MapSize;
+  this->FillMapParameters(parameters);
   parameters.Bias = this->Bias;
   parameters.Filter = static_cast<deepshadow::ShadowFilter>(this->Filter);
   return parameters;

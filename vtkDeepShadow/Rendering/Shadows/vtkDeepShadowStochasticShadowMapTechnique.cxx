@@ -76,7 +76,7 @@ deepshadow::ShadowParameters vtkDeepShadowStochasticShadowMapTechnique::GetParam
   deepshadow::ShadowParameters parameters;
   this->FillParameters(parameters);
   parameters.Kind = deepshadow::ShadowKind::Stochastic;
-  parameters.MapSize = this->MapSize;
+  this->FillMapParameters(parameters);
   parameters.Offsets = this->Offsets;
   parameters.Seed = this->Seed;
   parameters.Photons = this->Photons;

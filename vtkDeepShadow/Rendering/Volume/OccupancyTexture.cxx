@@ -17,6 +17,8 @@ void OccupancyTexture::Update(vtkOpenGLRenderWindow* window, const BlockRanges& 
   this->Blocks = static_cast<long long>(blocks.Min.size());
   this->EmptyBlocks = std::count(occupancy.begin(), occupancy.end(), uint8_t(0));
   this->EmptyFraction = occupancy.empty() ? 0.0 : double(this->EmptyBlocks) / occupancy.size();
+  this->Map.Blocks = blocks;
+  this->Map.Occupied = occupancy;
   for (uint8_t& v : occupancy)
   {
     v = v ? 255 : 0;

@@ -36,6 +36,8 @@ public:
   double GetEmptyFraction() const { return this->EmptyFraction; }
   /** Bytes on the GPU: one a block. */
   long long GetBytes() const { return this->Blocks; }
+  /** The same map on the CPU (clustered light-space maps find the volume's objects in it). */
+  const EmptySpaceMap& GetMap() const { return this->Map; }
 
 private:
   vtkSmartPointer<vtkTextureObject> Texture;
@@ -44,6 +46,7 @@ private:
   long long Blocks = 0;
   long long EmptyBlocks = 0;
   double EmptyFraction = 0.0;
+  EmptySpaceMap Map;
 };
 
 }

@@ -8,6 +8,7 @@
 #include "Core/Light.h"
 #include "ShaderComposer.h"
 #include "Core/Components.h"
+#include "Core/EmptySpace.h"
 #include "Core/GradientOpacity.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
@@ -58,6 +59,7 @@ struct ShadowContext
   // The volume as the GPU holds it.
   vtkTextureObject* Volume = nullptr;
   vtkTextureObject* Occupancy = nullptr; // null when no block is empty
+  const EmptySpaceMap* EmptyBlocks = nullptr; // the same on the CPU (with Occupancy)
   float BlockSize = 8.0f;
   glm::ivec3 Dims{ 0 };
   glm::dvec2 Range{ 0.0, 1.0 };     // finite scalar range
@@ -136,6 +138,8 @@ struct ShadowContext
   glm::dvec2 ComponentTableMap(int c) const;
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
+  /** The centre of the camera's near plane (world): clustered maps weigh objects by it. */
+  glm::dvec3 Eye{ 0.0 };
 
   /**
    * The content of Transfer (opacity, and colours if asked), IsoValues, the gradient opacity

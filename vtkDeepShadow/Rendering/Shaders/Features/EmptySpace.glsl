@@ -55,7 +55,11 @@ bool emptyAround(vec3 index, vec3 reach)
     if (skip == 0 && u_feelerSkipEmpty != 0)
     {
       vec3 block = floor(sampleIndex / u_blockSize);
+#ifdef LIGHT_SPACE_CLIP
+      if (!lightSpaceOwnBlock(ivec3(block))) // a clustered face's: another cluster's block too
+#else
       if (texelFetch(u_occupancy, ivec3(block), 0).r == 0.0)
+#endif
       {
         skip = stepsToLeaveBlock(sampleIndex, indexStep, block);
       }

@@ -59,7 +59,12 @@ bool surfaceAboveThreshold(int surface)
   }
 //@TexelInit
   int surfaceCrossed;
+#ifdef LIGHT_SPACE_CLIP
+  // A clustered face whose cluster the surfaces are not in meets none of them.
+  float surfaceNext = u_clipSurfaces == 0 ? HierarchyNever : surfaceNextHit(indexOrigin, indexDirection, 0.0, surfaceCrossed);
+#else
   float surfaceNext = surfaceNextHit(indexOrigin, indexDirection, 0.0, surfaceCrossed);
+#endif
 //@TexelUpTo
   // The crossings up to `upTo` come first (deepshadow::MarchTexelRay).
   for (; surfaceNext < HierarchyNever && surfaceNext <= upTo;

@@ -35,23 +35,28 @@ vec3 indexGradient(vec3 index)
   return 0.5 * g;
 }
 
-// Parametric interval of the ray index + t * direction inside the box [0, Dims - 1]
-// (deepshadow::IntersectBox); empty when !(entry < exit).
-vec2 boxInterval(vec3 index, vec3 direction)
+// Parametric interval of the ray index + t * direction inside the box [lo, hi] (boxInterval:
+// [0, Dims - 1]; deepshadow::IntersectBox); empty when !(entry < exit).
+vec2 boxIntervalOf(vec3 index, vec3 direction, vec3 lo, vec3 hi)
 {
   vec3 inverseDirection = 1.0 / direction;
-  vec3 tA = (vec3(0.0) - index) * inverseDirection;
-  vec3 tB = (u_dims - 1.0 - index) * inverseDirection;
+  vec3 tA = (lo - index) * inverseDirection;
+  vec3 tB = (hi - index) * inverseDirection;
   vec3 tLow = min(tA, tB);
   vec3 tHigh = max(tA, tB);
   // An axis the direction is parallel to (1/0: a point on its face gives 0 * inf = NaN)
   // constrains nothing inside its slab and empties the interval outside, as
   // deepshadow::IntersectBox does. mix() with a bvec selects, so no NaN leaks through.
   bvec3 parallel = equal(direction, vec3(0.0));
-  bvec3 inside = bvec3(vec3(greaterThanEqual(index, vec3(0.0))) * vec3(lessThanEqual(index, u_dims - 1.0)));
+  bvec3 inside = bvec3(vec3(greaterThanEqual(index, lo)) * vec3(lessThanEqual(index, hi)));
   tLow = mix(tLow, mix(vec3(3.0e38), vec3(-3.0e38), inside), parallel);
   tHigh = mix(tHigh, mix(vec3(-3.0e38), vec3(3.0e38), inside), parallel);
   return vec2(max(max(tLow.x, tLow.y), tLow.z), min(min(tHigh.x, tHigh.y), tHigh.z));
+}
+
+vec2 boxInterval(vec3 index, vec3 direction)
+{
+  return boxIntervalOf(index, direction, vec3(0.0), u_dims - 1.0);
 }
 
 float boxExit(vec3 index, vec3 direction)
