@@ -9,11 +9,12 @@ BACKGROUND = (0.08, 0.09, 0.12)
 
 
 class RodsScene:
-    """The rods scene (rods shadow each other) with its key light, at `size` pixels."""
+    """The rods scene (rods shadow each other) with its key light, at `size` pixels; another
+    standard scene by `name`."""
 
-    def __init__(self, size=160, technique=None):
+    def __init__(self, size=160, technique=None, name="rods"):
         self.scene = vtkDeepShadowStandardScene()
-        self.scene.SetScene("rods")
+        self.scene.SetScene(name)
         self.scene.SetResolutionScale(0.5)
         self.mapper = vtkDeepShadowVolumeMapper()
         self.mapper.SetInputData(self.scene.GetVolume())

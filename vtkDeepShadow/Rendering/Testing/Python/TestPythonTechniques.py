@@ -36,7 +36,7 @@ class TestPythonTechniques(Testing.vtkTest):
     def testEveryTechniqueIsWrapped(self):
         # Every registry name is made by one of the wrapped classes (eight kinds, five classes).
         for name in ("rays", "rays-opaque", "rays-color", "shadowmap", "dsm", "dsm-color",
-                     "dsm3", "cssm", "dsm-cached"):
+                     "dsm-clustered", "dsm3", "cssm", "dsm-cached"):
             technique = vtkDeepShadowTechnique.NewFromName(name)
             self.assertIsNotNone(technique, name)
             self.assertEqual(technique.GetName(), name)
@@ -45,6 +45,25 @@ class TestPythonTechniques(Testing.vtkTest):
         for name in ABSTRACT:
             with self.assertRaises(TypeError):
                 getattr(vtkdeepshadow, name)()
+
+    def testClusteredMapsOnASparseScene(self):
+        # dsm-clustered: several fitted maps for the sparse scene's far-apart objects, a
+        # darker picture than none; with Clusters 0 the same class draws one map.
+        unshadowed = RodsScene(name="sparse")
+        lit = luminance(unshadowed.render())
+        mask = foreground(unshadowed.render())
+        technique = vtkDeepShadowTechnique.NewFromName("dsm-clustered")
+        self.assertEqual((technique.GetClusters(), technique.GetMapSize()), (4, 256))
+        scene = RodsScene(technique=technique, name="sparse")
+        shadowed = luminance(scene.render())
+        self.assertEqual(scene.mapper.GetLastError(), "")
+        counts = technique.GetClusterCounts()
+        self.assertEqual(len(counts), 1)
+        self.assertTrue(2 <= counts[0] <= 4, counts)
+        self.assertLess(shadowed[mask].mean(), 0.95 * lit[mask].mean())
+        technique.SetClusters(0)
+        scene.render()
+        self.assertEqual(tuple(technique.GetClusterCounts()), (0,))
 
     def testSetGetAndObservers(self):
         for cls in TECHNIQUE_CLASSES:
