@@ -60,6 +60,18 @@ const SceneSpec* FindSpec(const std::string& name)
 
 //------------------------------------------------------------------------------
 // Recommended transfer functions.
+
+// One flat colour band of +-12 around each value (value, r, g, b): a colour per object.
+template <size_t N>
+void AddColorBands(vtkColorTransferFunction* color, const double (&bands)[N][4])
+{
+  for (const auto& b : bands)
+  {
+    color->AddRGBPoint(b[0] - 12.0, b[1], b[2], b[3]);
+    color->AddRGBPoint(b[0] + 12.0, b[1], b[2], b[3]);
+  }
+}
+
 void BuildProperty(const std::string& name, vtkColorTransferFunction* color,
   vtkPiecewiseFunction* opacity, vtkVolumeProperty* property)
 {
@@ -125,11 +137,7 @@ void BuildProperty(const std::string& name, vtkColorTransferFunction* color,
     const double bands[][4] = { { 30.0, 0.95, 0.95, 0.2 }, { 60.0, 0.2, 0.85, 0.3 },
       { 100.0, 0.2, 0.8, 0.9 }, { 140.0, 0.25, 0.35, 1.0 }, { 170.0, 0.7, 0.3, 0.95 },
       { 200.0, 1.0, 0.3, 0.25 }, { 240.0, 1.0, 0.6, 0.1 } };
-    for (const auto& b : bands)
-    {
-      color->AddRGBPoint(b[0] - 12.0, b[1], b[2], b[3]);
-      color->AddRGBPoint(b[0] + 12.0, b[1], b[2], b[3]);
-    }
+    AddColorBands(color, bands);
   }
   else if (name == "sparse")
   {
@@ -144,11 +152,7 @@ void BuildProperty(const std::string& name, vtkColorTransferFunction* color,
     const double bands[][4] = { { 60.0, 0.3, 0.85, 0.35 }, { 100.0, 0.25, 0.8, 0.9 },
       { 140.0, 0.3, 0.4, 1.0 }, { 170.0, 0.7, 0.35, 0.9 }, { 200.0, 0.95, 0.3, 0.25 },
       { 240.0, 1.0, 0.65, 0.15 } };
-    for (const auto& b : bands)
-    {
-      color->AddRGBPoint(b[0] - 12.0, b[1], b[2], b[3]);
-      color->AddRGBPoint(b[0] + 12.0, b[1], b[2], b[3]);
-    }
+    AddColorBands(color, bands);
   }
   else if (name == "head")
   {

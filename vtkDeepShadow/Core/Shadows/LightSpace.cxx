@@ -318,13 +318,14 @@ LightSpaceShadow::LightSpaceShadow(
   if (parameters.Clusters > 0 && empty &&
     std::find(empty->Occupied.begin(), empty->Occupied.end(), uint8_t(0)) != empty->Occupied.end())
   {
-    ClusteredFaces clustered = ClusterFaces(light, caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(),
-      *empty, caster.Surfaces, parameters.Clusters, parameters.ClusterDistance, caster.Eye ? &*caster.Eye : nullptr);
-    this->Faces = std::move(clustered.Faces);
-    this->Clips = std::move(clustered.Clips);
-    this->FaceStarts = std::move(clustered.Starts);
-    this->FaceEmpty = std::move(clustered.Occupied);
-    this->FaceSurfaces = std::move(clustered.CastsSurfaces);
+    auto clustered = std::make_unique<ClusteredFaces>(ClusterFaces(light, caster.Grid->GetIndexToWorld(),
+      caster.Grid->GetDims(), *empty, caster.Surfaces, parameters.Clusters, parameters.ClusterDistance,
+      caster.Eye ? &*caster.Eye : nullptr));
+    if (!clustered->Faces.empty())
+    {
+      this->Faces = clustered->Faces;
+      this->Clustered = std::move(clustered);
+    }
   }
   if (this->Faces.empty())
   {
@@ -332,19 +333,21 @@ LightSpaceShadow::LightSpaceShadow(
       light, CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces));
   }
   // A clustered face marches its box, and of it only its own blocks and crossings.
-  for (size_t f = 0; f < this->Clips.size(); ++f)
+  for (size_t f = 0; this->Clustered && f < this->Faces.size(); ++f)
   {
     ShadowCaster own = caster;
-    own.Clip = &this->Clips[f];
-    own.Empty = &this->FaceEmpty[f];
-    own.Surfaces = this->FaceSurfaces[f] ? caster.Surfaces : nullptr;
+    own.Clip = &this->Clustered->Clips[f];
+    own.Empty = &this->Clustered->Occupied[f];
+    own.Surfaces = this->Clustered->CastsSurfaces[f] ? caster.Surfaces : nullptr;
     this->FaceCasters.push_back(own);
   }
 }
 
+LightSpaceShadow::~LightSpaceShadow() = default;
+
 const ShadowCaster& LightSpaceShadow::FaceCaster(int face) const
 {
-  return this->Clips.empty() ? this->Caster : this->FaceCasters[static_cast<size_t>(face)];
+  return this->Clustered ? this->FaceCasters[static_cast<size_t>(face)] : this->Caster;
 }
 
 void LightSpaceShadow::ForEachTexel(int threads,
@@ -390,7 +393,7 @@ glm::dvec3 LightSpaceShadow::Visibility(const glm::dvec3& p) const
     for (int face = 0; face < static_cast<int>(this->Faces.size()); ++face)
     {
       MapPoint point;
-      if (this->Locate(face, p, point) && InsideFace(point, this->Size) && point.Depth >= this->FaceStarts[face])
+      if (this->Locate(face, p, point) && InsideFace(point, this->Size) && point.Depth >= this->Clustered->Starts[face])
       {
         visibility *= this->MapVisibility(point);
       }

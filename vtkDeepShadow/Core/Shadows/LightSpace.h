@@ -24,10 +24,12 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace deepshadow
 {
+struct ClusteredFaces;
 
 /** One face of a light-space map: a projection whose texels cast rays into the scene. */
 struct VTKDEEPSHADOWCORE_EXPORT ShadowMapFace
@@ -172,7 +174,8 @@ public:
   const std::vector<ShadowMapFace>& GetFaces() const { return this->Faces; }
   int GetSize() const { return this->Size; }
   /** Whether the faces are clusters (ShadowParameters::Clusters; Core/Shadows/Clusters.h). */
-  bool IsClustered() const { return !this->Clips.empty(); }
+  bool IsClustered() const { return this->Clustered != nullptr; }
+  ~LightSpaceShadow() override;
 
 protected:
   LightSpaceShadow(const ShadowParameters& parameters, const ShadowCaster& caster,
@@ -213,12 +216,8 @@ protected:
   int Size;
   double Step;
   std::vector<ShadowMapFace> Faces;
-  // Clustered (Core/Shadows/Clusters.h): each face's box, blocks, whether the casting
-  // surfaces are its, and Caster clipped to them.
-  std::vector<IndexBox> Clips;
-  std::vector<double> FaceStarts;
-  std::vector<EmptySpaceMap> FaceEmpty;
-  std::vector<bool> FaceSurfaces;
+  // Clustered (Core/Shadows/Clusters.h): what each face marches, and Caster clipped to it.
+  std::unique_ptr<ClusteredFaces> Clustered;
   std::vector<ShadowCaster> FaceCasters;
 };
 

@@ -25,6 +25,38 @@ std::unique_ptr<Body> Shapes(const glm::ivec3& dims, const glm::dvec3& origin,
     [inside](const glm::dvec3& p) { return inside(p) ? 1.0f : 0.0f; });
 }
 
+// Two balls of one opacity in a grid of unit spacing (Path: through both), the caster
+// skipping the grid's empty blocks.
+struct TwoBalls
+{
+  std::unique_ptr<Body> Volume;
+  std::unique_ptr<EmptySpaceMap> Empty;
+};
+
+TwoBalls MakeTwoBalls(const glm::dvec3& a, const glm::dvec3& b, double radius, double opacity,
+  const glm::ivec3& dims, const glm::dvec3& origin)
+{
+  TwoBalls balls;
+  balls.Volume = std::make_unique<Body>(dims, origin, opacity, glm::dvec3(0.0),
+    [=](const glm::dvec3& p) { return std::max(BallField(p, a, radius), BallField(p, b, radius)); });
+  balls.Volume->Path = [=](const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow) {
+    return SphereChord(a, radius + grow, p, d, maxS) + SphereChord(b, radius + grow, p, d, maxS);
+  };
+  balls.Empty = std::make_unique<EmptySpaceMap>(*balls.Volume->Grid, balls.Volume->Transfer.Opacity);
+  balls.Volume->Caster.Empty = balls.Empty.get();
+  return balls;
+}
+
+// Deep shadow maps of 128^2, at most `clusters` per light (0: one map).
+ShadowParameters ClusteredMaps(int clusters, double distance)
+{
+  ShadowParameters parameters = Technique("dsm");
+  parameters.Clusters = clusters;
+  parameters.ClusterDistance = distance;
+  parameters.MapSize = 128;
+  return parameters;
+}
+
 int ClusterCount(const std::vector<int>& cluster)
 {
   return static_cast<int>(std::set<int>(cluster.begin(), cluster.end()).size());
@@ -90,19 +122,11 @@ TEST(Clusters, ShadowsOfTwoClustersMultiplyAlongTheLight)
   // them), lit from above: below both, Beer-Lambert through both chords.
   const glm::dvec3 a(0.0, 0.0, 20.0), b(4.0, 0.0, -20.0);
   const double radius = 8.0, opacity = 0.08;
-  auto body = std::make_unique<Body>(glm::ivec3(41, 41, 65), glm::dvec3(-20.0, -20.0, -32.0), opacity, glm::dvec3(0.0),
-    [&](const glm::dvec3& p) { return std::max(BallField(p, a, radius), BallField(p, b, radius)); });
-  body->Path = [&](const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow) {
-    return SphereChord(a, radius + grow, p, d, maxS) + SphereChord(b, radius + grow, p, d, maxS);
-  };
-  const EmptySpaceMap empty(*body->Grid, body->Transfer.Opacity);
-  body->Caster.Empty = &empty;
+  const TwoBalls balls = MakeTwoBalls(a, b, radius, opacity, glm::ivec3(41, 41, 65), glm::dvec3(-20.0, -20.0, -32.0));
+  Body* body = balls.Volume.get();
   const Light light = Directional({ 0.0, 0.0, 1.0 });
 
-  ShadowParameters parameters = Technique("dsm");
-  parameters.Clusters = 2;
-  parameters.ClusterDistance = 0.0;
-  parameters.MapSize = 128;
+  ShadowParameters parameters = ClusteredMaps(2, 0.0);
   const auto clustered = MakeLightShadow(parameters, body->Caster, light, ViewStep);
   const auto* faces = dynamic_cast<const LightSpaceShadow*>(clustered.get());
   ASSERT_NE(faces, nullptr);
@@ -158,11 +182,7 @@ TEST(Clusters, ASampleInsideAnotherClustersBoxCountsOnce)
   ASSERT_EQ(OccupiedObjects(empty, body->Grid->GetDims()).Boxes.size(), 2u);
   body->Caster.Empty = &empty;
   const Light light = Directional({ 0.0, 0.0, 1.0 });
-  ShadowParameters parameters = Technique("dsm");
-  parameters.Clusters = 2;
-  parameters.ClusterDistance = 0.0;
-  parameters.MapSize = 128;
-  const auto clustered = MakeLightShadow(parameters, body->Caster, light, ViewStep);
+  const auto clustered = MakeLightShadow(ClusteredMaps(2, 0.0), body->Caster, light, ViewStep);
   ASSERT_EQ(dynamic_cast<const LightSpaceShadow&>(*clustered).GetFaces().size(), 2u);
   const auto truth = MakeLightShadow(ShadowParameters::GroundTruth(false, 1.0), body->Caster, light, ViewStep);
   // Under the cube (8.5 units of it), and under the ring.
@@ -178,19 +198,11 @@ TEST(Clusters, APointLightAmongObjectsNeedsFewerThanSixMaps)
 {
   // Two balls on either side of a point light between them: one unclustered map would be a
   // cube of six faces; clustered, one perspective face per ball.
-  const glm::dvec3 a(-40.0, 0.0, 0.0), b(40.0, 0.0, 0.0);
-  const double radius = 7.0, opacity = 0.08;
-  auto body = std::make_unique<Body>(glm::ivec3(113, 33, 33), glm::dvec3(-56.0, -16.0, -16.0), opacity, glm::dvec3(0.0),
-    [&](const glm::dvec3& p) { return std::max(BallField(p, a, radius), BallField(p, b, radius)); });
-  body->Path = [&](const glm::dvec3& p, const glm::dvec3& d, double maxS, double grow) {
-    return SphereChord(a, radius + grow, p, d, maxS) + SphereChord(b, radius + grow, p, d, maxS);
-  };
-  const EmptySpaceMap empty(*body->Grid, body->Transfer.Opacity);
-  body->Caster.Empty = &empty;
+  const TwoBalls balls = MakeTwoBalls({ -40.0, 0.0, 0.0 }, { 40.0, 0.0, 0.0 }, 7.0, 0.08, glm::ivec3(113, 33, 33),
+    glm::dvec3(-56.0, -16.0, -16.0));
+  Body* body = balls.Volume.get();
   const Light light = Positional({ 0.0, 0.0, 0.0 }, { 1.0, 0.0, 0.0 });
-  ShadowParameters parameters = Technique("dsm");
-  parameters.Clusters = 4;
-  parameters.MapSize = 128;
+  ShadowParameters parameters = ClusteredMaps(4, 0.25);
   const auto clustered = MakeLightShadow(parameters, body->Caster, light, ViewStep);
   const auto& faces = dynamic_cast<const LightSpaceShadow&>(*clustered).GetFaces();
   ASSERT_EQ(faces.size(), 2u);
@@ -214,15 +226,14 @@ TEST(Clusters, APointLightAmongObjectsNeedsFewerThanSixMaps)
 
 TEST(Clusters, ASpotLightSkipsClustersOutsideItsCone)
 {
-  // The same balls under a narrow spot on the right one: the left ball needs no map.
-  const glm::dvec3 a(-20.0, 0.0, 0.0), b(20.0, 0.0, 0.0);
-  auto body = std::make_unique<Body>(glm::ivec3(65, 33, 33), glm::dvec3(-32.0, -16.0, -16.0), 0.08, glm::dvec3(0.0),
-    [&](const glm::dvec3& p) { return std::max(BallField(p, a, 7.0), BallField(p, b, 7.0)); });
-  const EmptySpaceMap empty(*body->Grid, body->Transfer.Opacity);
-  const ClusteredFaces spot = ClusterFaces(Positional({ 20.0, 0.0, 40.0 }, b, 15.0), body->Grid->GetIndexToWorld(),
-    body->Grid->GetDims(), empty, nullptr, 4, 0.25);
+  // Two balls under a narrow spot on the right one: the left ball needs no map.
+  const glm::dvec3 b(20.0, 0.0, 0.0);
+  const TwoBalls balls = MakeTwoBalls({ -20.0, 0.0, 0.0 }, b, 7.0, 0.08, glm::ivec3(65, 33, 33), glm::dvec3(-32.0, -16.0, -16.0));
+  const VolumeGrid& grid = *balls.Volume->Grid;
+  const ClusteredFaces spot = ClusterFaces(Positional({ 20.0, 0.0, 40.0 }, b, 15.0), grid.GetIndexToWorld(),
+    grid.GetDims(), *balls.Empty, nullptr, 4, 0.25);
   EXPECT_EQ(spot.Faces.size(), 1u);
-  const ClusteredFaces wide = ClusterFaces(Positional({ 20.0, 0.0, 40.0 }, b, 80.0), body->Grid->GetIndexToWorld(),
-    body->Grid->GetDims(), empty, nullptr, 4, 0.25);
+  const ClusteredFaces wide = ClusterFaces(Positional({ 20.0, 0.0, 40.0 }, b, 80.0), grid.GetIndexToWorld(),
+    grid.GetDims(), *balls.Empty, nullptr, 4, 0.25);
   EXPECT_EQ(wide.Faces.size(), 2u);
 }
