@@ -1,11 +1,10 @@
 #include "vtkDeepShadowTechniqueInternals.h"
 
-#include "GL/ClampedTexture.h"
 #include "GL/ComputeProgram.h"
-#include "Core/Shadows/Clusters.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Volume/ShadowContext.h"
 #include "LightSpaceBricks.h"
+#include "LightSpaceClusters.h"
 #include "ShadowSlots.h"
 #include "vtkDeepShadowBrickTotalsCS.h"
 #include "vtkDeepShadowLightSpace.h"
@@ -33,12 +32,7 @@ public:
   int Unit = -1;
   vtkOpenGLRenderWindow* Window = nullptr;
   std::vector<std::vector<deepshadow::ShadowMapFace>> Faces; // per slot
-  // Per slot, clustered (Core/Shadows/Clusters.h): the faces' boxes, whether the casting
-  // surfaces belong to each, and which cluster each block belongs to (R8: 0, or 1 + cluster).
-  std::vector<std::vector<deepshadow::IndexBox>> Clips;
-  std::vector<std::vector<double>> Starts;
-  std::vector<std::vector<bool>> CastsSurfaces;
-  std::vector<vtkSmartPointer<vtkTextureObject>> Labels;
+  deepshadow::LightSpaceClusters Clusters; // clustered faces (SetClusters)
   deepshadow::ComputeProgram Build;
   unsigned int Deferred = 0; // the build's deferred texels: a count, then one uint each
   // Other processes' bricks of the volume (vtkDeepShadowBrickExchange), and the pass that
@@ -60,15 +54,7 @@ public:
     }
     this->TotalsPass.Release();
     this->Bricks.Release();
-    for (auto& labels : this->Labels)
-    {
-      if (labels && this->Window)
-      {
-        labels->ReleaseGraphicsResources(this->Window);
-      }
-    }
-    this->Labels.clear();
-    this->Clips.clear();
+    this->Clusters.Release(this->Window);
     if (this->Texture)
     {
       glDeleteTextures(1, &this->Texture);
@@ -80,11 +66,6 @@ public:
       this->Deferred = 0;
     }
     this->Build.Release();
-  }
-
-  bool Clustered() const
-  {
-    return std::any_of(this->Clips.begin(), this->Clips.end(), [](const auto& clips) { return !clips.empty(); });
   }
 };
 
@@ -179,10 +160,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   // separate shadow property, nor between bricks (whose faces see their union).
   const bool clusterable =
     self->Clusters > 0 && context.EmptyBlocks && !self->GetShadowProperty() && !exchanging;
-  std::vector<std::vector<deepshadow::IndexBox>> clips(static_cast<size_t>(slots.Count()));
-  std::vector<std::vector<uint8_t>> labels(static_cast<size_t>(slots.Count()));
-  maps.CastsSurfaces.assign(static_cast<size_t>(slots.Count()), {});
-  maps.Starts.assign(static_cast<size_t>(slots.Count()), {});
+  maps.Clusters.BeginFrame(clusterable ? slots.Count() : 0);
   int facesPerLight = 1;
   for (int slot = 0; slot < slots.Count(); ++slot)
   {
@@ -190,14 +168,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
     maps.Faces[slot].clear();
     if (clusterable)
     {
-      deepshadow::ClusteredFaces clustered = deepshadow::ClusterFaces(light, context.IndexToWorld,
-        context.Dims, *context.EmptyBlocks, context.CastingSurfaces, self->Clusters, self->ClusterDistance,
-        &context.Eye);
-      maps.Faces[slot] = std::move(clustered.Faces);
-      clips[slot] = std::move(clustered.Clips);
-      labels[slot] = std::move(clustered.BlockLabels);
-      maps.CastsSurfaces[slot] = std::move(clustered.CastsSurfaces);
-      maps.Starts[slot] = std::move(clustered.Starts);
+      maps.Clusters.Cluster(slot, light, context.IndexToWorld, context.Dims, *context.EmptyBlocks,
+        context.CastingSurfaces, self->Clusters, self->ClusterDistance, context.Eye, maps.Faces[slot]);
     }
     if (maps.Faces[slot].empty())
     {
@@ -207,39 +179,10 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   }
   // Other clusters (the occupancy, the parameters or the casting meshes changed) need every
   // map rebuilt; a light's own faces follow it as before.
-  const auto same = [](const std::vector<deepshadow::IndexBox>& a, const std::vector<deepshadow::IndexBox>& b) {
-    return a.size() == b.size() &&
-      std::equal(a.begin(), a.end(), b.begin(), [](const deepshadow::IndexBox& x, const deepshadow::IndexBox& y) {
-        return x.Lo == y.Lo && x.Hi == y.Hi;
-      });
-  };
-  bool reclustered = false;
-  for (size_t slot = 0; slot < std::max(clips.size(), maps.Clips.size()); ++slot)
-  {
-    const std::vector<deepshadow::IndexBox> none;
-    reclustered = reclustered ||
-      !same(slot < clips.size() ? clips[slot] : none, slot < maps.Clips.size() ? maps.Clips[slot] : none);
-  }
-  if (reclustered)
+  if (maps.Clusters.EndFrame(context.Window, context.EmptyBlocks ? context.EmptyBlocks->Blocks.BlockCount : glm::ivec3(0)))
   {
     slots.Invalidate();
-    maps.Labels.resize(labels.size());
-    for (size_t slot = 0; slot < labels.size(); ++slot)
-    {
-      if (labels[slot].empty())
-      {
-        maps.Labels[slot] = nullptr;
-        continue;
-      }
-      const glm::ivec3 count = context.EmptyBlocks->Blocks.BlockCount;
-      maps.Labels[slot] = deepshadow::NewClampedTexture(context.Window);
-      maps.Labels[slot]->SetMinificationFilter(vtkTextureObject::Nearest);
-      maps.Labels[slot]->SetMagnificationFilter(vtkTextureObject::Nearest);
-      maps.Labels[slot]->Create3DFromRaw(static_cast<unsigned int>(count.x), static_cast<unsigned int>(count.y),
-        static_cast<unsigned int>(count.z), 1, VTK_UNSIGNED_CHAR, labels[slot].data());
-    }
   }
-  maps.Clips = std::move(clips);
   const unsigned int format = self->GetTexelFormat();
   const int layersPerFace = this->GetLayersPerFace(context);
   const bool sameShape = maps.Texture && maps.Size == self->MapSize && maps.Format == format &&
@@ -317,8 +260,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   vtkDeepShadowLightSpaceTechnique* self = this->Self;
   Maps& maps = *self->LightMaps;
   // Clustered faces march their cluster's box only.
-  const std::string clip = maps.Clustered() ? "//@Dec\n#define LIGHT_SPACE_CLIP\n" : "";
-  if (!Internals::BeginBuildPass(self, maps.Build, vtkDeepShadowLightSpaceCS, context, "Build", clip + self->GetBuildSource()))
+  if (!Internals::BeginBuildPass(self, maps.Build, vtkDeepShadowLightSpaceCS, context, "Build",
+        maps.Clusters.BuildDefines() + self->GetBuildSource()))
   {
     return false;
   }
@@ -346,13 +289,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maps.Deferred);
   }
   glBindImageTexture(0, maps.Texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, maps.Format);
-  for (auto& labels : maps.Labels)
-  {
-    if (labels)
-    {
-      labels->Activate();
-    }
-  }
+  maps.Clusters.ActivateLabels();
   for (int slot : stale)
   {
     for (size_t f = 0; f < maps.Faces[slot].size(); ++f)
@@ -367,22 +304,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
       maps.Build.Set("u_up", glm::vec3(face.Up));
       maps.Build.Set("u_extent", static_cast<float>(face.Extent));
       maps.Build.Set("u_near", static_cast<float>(face.Near));
-      if (!maps.Clips[slot].empty())
-      {
-        maps.Build.Set("u_clipLo", glm::vec3(maps.Clips[slot][f].Lo));
-        maps.Build.Set("u_clipHi", glm::vec3(maps.Clips[slot][f].Hi));
-        maps.Build.Set("u_clipLabel", static_cast<int>(f) + 1);
-        maps.Build.Set("u_clipSurfaces", maps.CastsSurfaces[slot][f] ? 1 : 0);
-        maps.Build.Set("u_clusterLabels", maps.Labels[slot]->GetTextureUnit());
-      }
-      else if (maps.Clustered())
-      {
-        // An unclustered light beside clustered ones: all of the volume.
-        maps.Build.Set("u_clipLo", glm::vec3(-1e30f));
-        maps.Build.Set("u_clipHi", glm::vec3(1e30f));
-        maps.Build.Set("u_clipLabel", 0);
-        maps.Build.Set("u_clipSurfaces", 1);
-      }
+      maps.Clusters.SetBuildUniforms(maps.Build, slot, static_cast<int>(f));
       maps.Build.Set("u_deferredPass", 0);
       GLuint deferred = 0;
       if (defers)
@@ -411,13 +333,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   }
-  for (auto& labels : maps.Labels)
-  {
-    if (labels)
-    {
-      labels->Deactivate();
-    }
-  }
+  maps.Clusters.DeactivateLabels();
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, maps.Format);
   Internals::EndBuildPass(self, context);
   self->EndMapBuild();
@@ -495,18 +411,8 @@ std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
   // Between bricks, LightSpace.glsl multiplies the bricks in front into every lookup.
   const std::string upstream =
     this->LightMaps->Bricks.Exchanging() ? "//@Dec\n#define LIGHT_SPACE_UPSTREAM\n" : "";
-  // Clustered faces: LightSpace.glsl multiplies every cluster's lookup (an unclustered light
-  // that needs a cube of faces adds the unclustered lookup).
-  const Maps& maps = *this->LightMaps;
-  std::string clusters;
-  if (maps.Clustered())
-  {
-    clusters = "//@Dec\n#define LIGHT_SPACE_CLUSTERS\n";
-    if (std::any_of(maps.Faces.begin(), maps.Faces.end(), [](const auto& faces) { return faces.size() == 6; }))
-    {
-      clusters += "#define LIGHT_SPACE_CUBES_TOO\n";
-    }
-  }
+  // Clustered faces: LightSpace.glsl loops over a light's faces.
+  const std::string clusters = this->LightMaps->Clusters.LookupDefines(this->LightMaps->Faces);
   return upstream + clusters + vtkDeepShadowLightSpace + this->GetMapLookupSource();
 }
 
@@ -521,11 +427,8 @@ void vtkDeepShadowLightSpaceTechnique::SetBrickExchange(vtkDeepShadowBrickExchan
 
 std::vector<int> vtkDeepShadowLightSpaceTechnique::GetClusterCounts() const
 {
-  std::vector<int> counts;
-  for (const auto& clips : this->LightMaps->Clips)
-  {
-    counts.push_back(static_cast<int>(clips.size()));
-  }
+  std::vector<int> counts = this->LightMaps->Clusters.Counts();
+  counts.resize(this->LightMaps->Faces.size(), 0);
   return counts;
 }
 
@@ -568,45 +471,7 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   sink.Set("u_shadowSize", static_cast<float>(self->MapSize));
   sink.Set("u_shadowFacesPerLight", maps.FacesPerLight);
   sink.Set("u_shadowLayersPerFace", maps.LayersPerFace);
-  if (maps.Clustered())
-  {
-    // Face f of slot s at s * MaxClusterFaces + f (LightSpace.glsl).
-    const size_t most = 8;
-    std::vector<int> clusters, clusterPerspective(4 * most, 0), clusterWindowed(4 * most, 0);
-    std::vector<glm::vec3> clusterOrigin(4 * most), clusterForward(4 * most), clusterRight(4 * most), clusterUp(4 * most);
-    std::vector<float> clusterExtent(4 * most, 1.0f), clusterNear(4 * most, 0.0f), clusterStart(4 * most, 0.0f);
-    for (size_t slot = 0; slot < maps.Faces.size(); ++slot)
-    {
-      // An unclustered light's one face, unwindowed; a cube: none (the unclustered lookup).
-      const bool clustered = !maps.Clips[slot].empty();
-      const size_t faces = clustered || maps.Faces[slot].size() == 1 ? maps.Faces[slot].size() : 0;
-      clusters.push_back(static_cast<int>(faces));
-      for (size_t f = 0; f < faces; ++f)
-      {
-        const deepshadow::ShadowMapFace& face = maps.Faces[slot][f];
-        const size_t i = slot * most + f;
-        clusterPerspective[i] = face.Perspective ? 1 : 0;
-        clusterOrigin[i] = glm::vec3(face.Origin);
-        clusterForward[i] = glm::vec3(face.Forward);
-        clusterRight[i] = glm::vec3(face.Right);
-        clusterUp[i] = glm::vec3(face.Up);
-        clusterExtent[i] = static_cast<float>(face.Extent);
-        clusterNear[i] = static_cast<float>(face.Near);
-        clusterWindowed[i] = clustered ? 1 : 0;
-        clusterStart[i] = clustered ? static_cast<float>(maps.Starts[slot][f]) : 0.0f;
-      }
-    }
-    sink.Set("u_shadowClusters", clusters);
-    sink.Set("u_shadowClusterPerspective", clusterPerspective);
-    sink.Set("u_shadowClusterOrigin", clusterOrigin);
-    sink.Set("u_shadowClusterForward", clusterForward);
-    sink.Set("u_shadowClusterRight", clusterRight);
-    sink.Set("u_shadowClusterUp", clusterUp);
-    sink.Set("u_shadowClusterExtent", clusterExtent);
-    sink.Set("u_shadowClusterNear", clusterNear);
-    sink.Set("u_shadowClusterStart", clusterStart);
-    sink.Set("u_shadowClusterWindowed", clusterWindowed);
-  }
+  maps.Clusters.SetLookupUniforms(sink, maps.Faces);
   if (maps.Bricks.Exchanging())
   {
     maps.Bricks.BindLookup(sink, context.Window);
