@@ -29,7 +29,12 @@ cmake --build "$root/build-asan" -j "$(nproc)" --target \
   deepshadow deepshadow-testkit DeepShadowFuzz
 
 export ASAN_OPTIONS="detect_leaks=1:hard_rss_limit_mb=6000"
-export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
+# use_tls=0: LeakSanitizer of Debian 12's GCC 12 can crash scanning the main thread's dynamic
+# TLS ("Tracer caught signal 11" on a garbage DTLS range, exit 1 without a leak report; seen
+# with deepshadow --technique dsm --light-dir 1,0,1 on the box at scale 0.1). TLS is then no
+# root: glibc's loader keeps its own allocations reachable from there only, hence its
+# suppression in lsan.supp.
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0:use_tls=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$root/build-asan"
 ctest --output-on-failure --timeout 1200 -j 2 \
