@@ -329,8 +329,10 @@ ClusteredFaces ClusterFaces(const Light& light, const glm::dmat4& indexToWorld, 
       start = std::min(start, faces.front().Project(corner, u, v, depth) ? std::max(depth, 0.0) : 0.0);
     }
     result.Starts.push_back(start);
+    // Skipping reads the blocks' layout and occupancy only, not their scalar ranges.
     EmptySpaceMap own;
-    own.Blocks = empty.Blocks;
+    own.Blocks.BlockSize = empty.Blocks.BlockSize;
+    own.Blocks.BlockCount = empty.Blocks.BlockCount;
     own.Occupied.resize(empty.Occupied.size());
     for (size_t b = 0; b < own.Occupied.size(); ++b)
     {

@@ -17,7 +17,9 @@ void OccupancyTexture::Update(vtkOpenGLRenderWindow* window, const BlockRanges& 
   this->Blocks = static_cast<long long>(blocks.Min.size());
   this->EmptyBlocks = std::count(occupancy.begin(), occupancy.end(), uint8_t(0));
   this->EmptyFraction = occupancy.empty() ? 0.0 : double(this->EmptyBlocks) / occupancy.size();
-  this->Map.Blocks = blocks;
+  // The layout and occupancy (what clustering reads), not the ranges again.
+  this->Map.Blocks.BlockSize = blocks.BlockSize;
+  this->Map.Blocks.BlockCount = blocks.BlockCount;
   this->Map.Occupied = occupancy;
   for (uint8_t& v : occupancy)
   {
