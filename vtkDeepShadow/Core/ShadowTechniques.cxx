@@ -128,6 +128,13 @@ std::vector<ShadowParameterInfo> MakeParameters()
     &ShadowParameters::Epsilon));
   list.push_back(Field(Numeric("layers", Type::Integer, 1, 256, "N", "nodes per texel"),
     &ShadowParameters::Layers));
+  list.push_back(Field(Numeric("chunk-nodes", Type::Integer, 0, 64, "N",
+                         "chunked node memory: nodes per chunk, any number of chunks per texel "
+                         "(0: layers per texel)"),
+    &ShadowParameters::ChunkNodes));
+  list.push_back(Field(Numeric("node-pool-mb", Type::Number, 0.0, 65536.0, "MB",
+                         "chunked: the node pool per light (0: the memory of the layers)"),
+    &ShadowParameters::PoolMegabytes));
   auto levels = Numeric("opacity-levels", Type::Levels, 0.0, 1.0, "A,B,C", "opacity levels");
   levels.Get = [](const ShadowParameters& p) {
     return std::vector<double>(p.Levels.begin(), p.Levels.end());
@@ -235,24 +242,26 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   for (const bool colored : { false, true })
   {
     auto dsm = LightSpaceMap(Technique(colored ? "dsm-color" : "dsm",
-      colored ? "" : "deep shadow map", ShadowKind::DeepShadowMap, { "epsilon", "layers" },
+      colored ? "" : "deep shadow map", ShadowKind::DeepShadowMap, { "epsilon", "layers", "chunk-nodes", "node-pool-mb" },
       colored ? std::vector<ShadowSweepEntry>{ { "", true }, { "-cached" } }
               : std::vector<ShadowSweepEntry>{ { "", true }, { ":epsilon=0" }, { ":epsilon=0.01" },
                   { ":epsilon=0.05" }, { ":epsilon=0.1" }, { ":layers=1" }, { ":layers=2", true },
-                  { ":layers=4" }, { ":layers=16" }, { ":shadow-map-size=256" },
+                  { ":layers=4" }, { ":layers=16" }, { ":chunk-nodes=2" }, { ":chunk-nodes=4", true },
+                  { ":chunk-nodes=8" }, { ":shadow-map-size=256" },
                   { ":shadow-map-size=1024" }, { ":shadow-step-factor=2" }, { "-cached", true },
                   { "-cached:shadow-volume-size=128" } }));
     dsm.Colored = colored;
     dsm.MakeShadow = MakeTwin<DeepShadowMap>;
     dsm.TexelBytes = [colored](const ShadowParameters& p) -> std::uint64_t {
-      return (colored ? 16 : 8) * static_cast<std::uint64_t>(p.Layers);
+      // Chunked: a start entry, and at most the pool the layers would take (automatic).
+      return (colored ? 16 : 8) * static_cast<std::uint64_t>(p.Layers) + (p.ChunkNodes > 0 ? 4 : 0);
     };
     list.push_back(dsm);
   }
   // Clustered deep shadow maps (paper 000, section 4): at most 4 maps of 256^2 per light, the
   // memory of one 512^2 map, each fitted to a cluster of the volume's objects.
   auto clustered = LightSpaceMap(Technique("dsm-clustered", "", ShadowKind::DeepShadowMap,
-    { "epsilon", "layers", "clusters", "cluster-distance" },
+    { "epsilon", "layers", "chunk-nodes", "node-pool-mb", "clusters", "cluster-distance" },
     { { "", true }, { ":clusters=2" }, { ":clusters=8", true }, { ":cluster-distance=0.1" },
       { ":cluster-distance=0.5" }, { ":shadow-map-size=512" } }));
   clustered.Clustered = true;

@@ -112,6 +112,13 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   // Deep shadow maps.
   double Epsilon = 0.02;    // |V' - V| <= Epsilon at every sample depth (see the README)
   int Layers = 8;           // nodes per texel (and channel)
+  /**
+   * Chunked node memory (Core/Shadows/NodeChunks.h): nodes per chunk, taken from a pool as a
+   * texel needs them, any number per texel; 0: Layers nodes per texel. Layers then only sizes
+   * the automatic pool.
+   */
+  int ChunkNodes = 0;
+  double PoolMegabytes = 0.0; // chunked: the pool per light; 0: the bytes Layers would take
 
   // Opacity levels: depths where the accumulated opacity crosses these.
   std::array<double, 3> Levels{ { 0.1, 0.5, 0.9 } };

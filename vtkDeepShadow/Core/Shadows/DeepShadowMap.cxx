@@ -1,4 +1,5 @@
 #include "Core/Shadows/DeepShadowMap.h"
+#include "Core/Shadows/NodeChunks.h"
 
 #include "Core/Geometry/SurfaceSet.h"
 
@@ -6,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 
@@ -264,6 +266,11 @@ DeepShadowMap::DeepShadowMap(const ShadowParameters& parameters, const ShadowCas
   , Channels(parameters.Colored ? 3 : 1)
   , Layers(std::max(1, parameters.Layers))
 {
+  if (parameters.ChunkNodes > 0)
+  {
+    this->BuildChunked(parameters, step, threads);
+    return;
+  }
   this->Nodes.assign(this->TexelCount() * this->Layers, VisibilityNode{ NoHit, { 1.0f, 1.0f, 1.0f } });
   std::mutex statisticsMutex;
   long nodesTotal = 0;
@@ -297,13 +304,62 @@ DeepShadowMap::DeepShadowMap(const ShadowParameters& parameters, const ShadowCas
   }
 }
 
+DeepShadowMap::~DeepShadowMap() = default;
+
+void DeepShadowMap::BuildChunked(const ShadowParameters& parameters, double step, int threads)
+{
+  const size_t texels = this->TexelCount();
+  const long long capacity = ChunkPoolCapacity(
+    texels, parameters.ChunkNodes, parameters.Colored, this->Layers, parameters.PoolMegabytes);
+  for (double bound = parameters.Epsilon; bound >= 0.0;)
+  {
+    auto chunks = std::make_unique<NodeChunks>(texels, parameters.ChunkNodes, capacity);
+    DeepShadowMapStatistics s;
+    long nodesTotal = 0;
+    std::mutex statisticsMutex;
+    this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
+      const VisibilitySamples samples =
+        SampleVisibility(this->FaceCaster(f), origin, direction, step, parameters.Colored, bound);
+      if (samples.Depths.empty())
+      {
+        return;
+      }
+      const CompressedVisibility compressed =
+        CompressVisibility(samples, this->Channels, bound, std::numeric_limits<int>::max());
+      const bool stored = chunks->Store(this->Texel(f, x, y), compressed.Nodes);
+      const std::lock_guard<std::mutex> lock(statisticsMutex);
+      ++s.TexelsHit;
+      nodesTotal += compressed.NodesNeeded;
+      s.NodesMax = std::max(s.NodesMax, compressed.NodesNeeded);
+      s.TexelsOverflowed += stored ? 0 : 1;
+      s.EpsilonMax = bound;
+    });
+    s.NodesAverage = s.TexelsHit > 0 ? static_cast<double>(nodesTotal) / s.TexelsHit : 0.0;
+    s.ChunksUsed = chunks->Used();
+    s.ChunksCapacity = capacity;
+    bound = ChunkedBuildBound(bound, chunks->Requested(), capacity);
+    this->Chunks = std::move(chunks);
+    this->Statistics = s;
+  }
+}
+
 size_t DeepShadowMap::Bytes() const
 {
+  if (this->Chunks)
+  {
+    // The start table and the chunks taken, as the GPU stores them.
+    return this->TexelCount() * sizeof(float) +
+      static_cast<size_t>(this->Chunks->Used() * ChunkBytes(this->Chunks->ChunkNodes(), this->Channels == 3));
+  }
   return this->TexelCount() * this->Layers * sizeof(float) * (this->Channels == 3 ? 4 : 2);
 }
 
 glm::dvec3 DeepShadowMap::MapVisibility(const MapPoint& point) const
 {
+  if (this->Chunks)
+  {
+    return this->Bilinear(point, [&](size_t texel, double depth) { return this->Chunks->Evaluate(texel, depth); });
+  }
   return this->Bilinear(point, [&](size_t texel, double depth) {
     return EvaluateVisibility(&this->Nodes[texel * this->Layers], this->Layers, depth);
   });

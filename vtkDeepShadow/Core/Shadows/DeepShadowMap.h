@@ -13,6 +13,10 @@
 // Lookup: linear in depth between the two nodes that bracket the point (1 before the first
 // node, the last value after the last), bilinear across the four nearest texels.
 //
+// With ShadowParameters::ChunkNodes, nodes go to a pool of chunks instead (NodeChunks.h): any
+// number per texel, and a pool too small for them all has the whole map built again with a
+// doubled bound (ChunkedBuildBound).
+//
 // GLSL twins: Shaders/Shadows/DeepShadowMapBuild.glsl (sampling and compression, in float)
 // and Shaders/Shadows/DeepShadowMap.glsl (lookup).
 #ifndef deepshadow_DeepShadowMap_h
@@ -22,6 +26,7 @@
 #include "vtkDeepShadowCoreModule.h"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace deepshadow
@@ -118,15 +123,20 @@ struct DeepShadowMapStatistics
   long TexelsHit = 0;         // texels whose ray meets the volume's box
   double NodesAverage = 0.0;  // nodes needed at the requested epsilon, over those texels
   int NodesMax = 0;
-  long TexelsOverflowed = 0;  // texels that needed more than Layers nodes
+  long TexelsOverflowed = 0;  // texels that needed more than Layers nodes (chunked: than the pool held)
   double EpsilonMax = 0.0;    // the largest bound a texel ended with
+  long long ChunksUsed = 0;   // chunked: chunks taken from the pool
+  long long ChunksCapacity = 0; // chunked: the pool's chunks
 };
+
+class NodeChunks;
 
 class VTKDEEPSHADOWCORE_EXPORT DeepShadowMap : public LightSpaceShadow
 {
 public:
   DeepShadowMap(const ShadowParameters& parameters, const ShadowCaster& caster,
     const Light& light, double step, int threads);
+  ~DeepShadowMap() override;
   /** As the GPU stores it: per node a depth and 1 or 3 values, 32-bit floats. */
   size_t Bytes() const override;
   const DeepShadowMapStatistics& GetStatistics() const { return this->Statistics; }
@@ -135,9 +145,13 @@ protected:
   glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
+  /** Chunked memory: builds until the pool holds the nodes, doubling the bound. */
+  void BuildChunked(const ShadowParameters& parameters, double step, int threads);
+
   int Channels;
   int Layers;
-  std::vector<VisibilityNode> Nodes; // per texel, Layers nodes
+  std::vector<VisibilityNode> Nodes; // per texel, Layers nodes (not chunked)
+  std::unique_ptr<NodeChunks> Chunks; // chunked
   DeepShadowMapStatistics Statistics;
 };
 
