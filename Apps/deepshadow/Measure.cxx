@@ -173,6 +173,9 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     m.NodesMax = dsm->GetNodesMax();
     m.TexelsOverflowed = dsm->GetTexelsOverflowed();
     m.EpsilonMax = dsm->GetEpsilonMax();
+    m.ChunksUsed = dsm->GetChunksUsed();
+    m.ChunkBytes = dsm->GetChunkBytes();
+    m.PoolBytes = dsm->GetPoolBytes();
   }
   m.Clusters = ClusterCount(technique);
   m.ClusterTexels = ClusterTexels(technique);

@@ -50,6 +50,9 @@ struct Measurement
   int NodesMax = 0;
   long long TexelsOverflowed = 0;
   double EpsilonMax = 0.0;
+  long long ChunksUsed = 0; // chunked node memory: chunks in use, bytes each, the pool's bytes
+  long long ChunkBytes = 0;
+  long long PoolBytes = 0;
   // Light-space techniques: clustered faces over all shadowed lights, and their texels.
   int Clusters = 0;
   long long ClusterTexels = 0;

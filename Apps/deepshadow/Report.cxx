@@ -151,7 +151,8 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
          "unshadowed_ms,build_ms,render_ms,render_ratio,light_frame_ms,light_ratio,shadow_bytes,"
          "rmse,max_abs,shadow_rmse,shadow_max_abs,pareto_camera,pareto_light,dsm_nodes_avg,"
          "dsm_nodes_max,dsm_texels_overflowed,dsm_epsilon_max,rebuilt_when_camera_moved,"
-         "camera_frame_passes,shader_features,clusters,cluster_texels,worse_than_none\n";
+         "camera_frame_passes,shader_features,clusters,cluster_texels,chunks_used,chunk_bytes,pool_bytes,"
+         "worse_than_none\n";
   for (const Row& r : rows)
   {
     csv << CsvField(r.Scene) << ',' << CsvField(r.Technique) << ',' << CsvField(r.Parameters) << ','
@@ -166,7 +167,8 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
         << Number(r.M.NodesAverage, "%.3f") << ',' << r.M.NodesMax << ',' << r.M.TexelsOverflowed
         << ',' << Number(r.M.EpsilonMax) << ',' << (r.M.RebuiltForCamera ? 1 : 0) << ','
         << CsvField(Join(r.M.CameraPasses, " ")) << ',' << CsvField(Join(r.M.Features, " ")) << ','
-        << r.M.Clusters << ',' << r.M.ClusterTexels << ',' << (r.WorseThanNone ? 1 : 0) << '\n';
+        << r.M.Clusters << ',' << r.M.ClusterTexels << ',' << r.M.ChunksUsed << ',' << r.M.ChunkBytes
+        << ',' << r.M.PoolBytes << ',' << (r.WorseThanNone ? 1 : 0) << '\n';
   }
 }
 

@@ -105,6 +105,9 @@ int RunShadowBench(const Options& options)
         .Set("dsm_nodes_max", m.NodesMax)
         .Set("dsm_texels_overflowed", m.TexelsOverflowed)
         .Set("dsm_epsilon_max", m.EpsilonMax)
+        .Set("chunks_used", m.ChunksUsed)
+        .Set("chunk_bytes", m.ChunkBytes)
+        .Set("pool_bytes", m.PoolBytes)
         .Set("clusters", m.Clusters)
         .Set("cluster_texels", m.ClusterTexels);
       rows.push_back(row);

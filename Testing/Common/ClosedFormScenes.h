@@ -16,6 +16,7 @@
 #include "Core/Shadows/LightSpace.h"
 #include "Core/Shadows.h"
 #include "Core/Shadows/StochasticShadowMap.h"
+#include "Core/ShadowTechniques.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
@@ -173,10 +174,21 @@ inline SurfaceMesh Ground()
   return mesh;
 }
 
-/** A technique by its short name (deepshadow --technique), at its defaults. */
+/**
+ * A technique by its short name (deepshadow --technique), at its defaults, or as a spec with
+ * parameters after it (dsm:chunk-nodes=4, as the report's sweep writes them).
+ */
 inline ShadowParameters Technique(std::string name)
 {
   ShadowParameters p;
+  std::vector<std::pair<std::string, std::string>> settings;
+  for (size_t colon = name.rfind(':'); colon != std::string::npos; colon = name.rfind(':'))
+  {
+    const std::string setting = name.substr(colon + 1);
+    const size_t equals = setting.find('=');
+    settings.emplace_back(setting.substr(0, equals), setting.substr(equals + 1));
+    name.resize(colon);
+  }
   const std::string cached = "-cached";
   if (name.size() > cached.size() && name.compare(name.size() - cached.size(), cached.size(), cached) == 0)
   {
@@ -190,6 +202,11 @@ inline ShadowParameters Technique(std::string name)
                                       : ShadowKind::DeepShadowMap;
   p.Opaque = name == "rays-opaque";
   p.Colored = name == "rays-color" || name == "dsm-color";
+  for (const auto& setting : settings)
+  {
+    const ShadowParameterInfo* info = FindShadowParameter(setting.first);
+    info->Set(p, info->Parse(setting.second));
+  }
   return p;
 }
 

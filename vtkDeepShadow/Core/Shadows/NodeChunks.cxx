@@ -35,6 +35,12 @@ bool NodeChunks::Store(size_t texel, const std::vector<VisibilityNode>& nodes)
 {
   // As the GPU build emits them: a chunk is asked for as a node starts one, and once the
   // pool has run out the texel only counts what it would have asked for.
+  // One node of value 1 (a ray through empty space, or lit all along) is V' = 1: no chunk.
+  if (nodes.empty() ||
+    (nodes.size() == 1 && nodes[0].Value == std::array<float, 3>{ { 1.0f, 1.0f, 1.0f } }))
+  {
+    return true;
+  }
   std::int32_t chunk = NoChunk;
   bool granted = true;
   for (size_t k = 0; k < nodes.size(); ++k)
@@ -57,7 +63,7 @@ bool NodeChunks::Store(size_t texel, const std::vector<VisibilityNode>& nodes)
       this->Entries[static_cast<size_t>(chunk) * this->Nodes + slot] = nodes[k];
     }
   }
-  if (granted && !nodes.empty())
+  if (granted)
   {
     // The last chunk's tail repeats the last value far away.
     for (size_t slot = nodes.size() % this->Nodes; slot != 0 && slot < static_cast<size_t>(this->Nodes); ++slot)

@@ -6,7 +6,8 @@
 // it emits them: chunks of `ChunkNodes` nodes, taken from one pool by an atomic counter as a
 // texel's previous chunk fills, linked texel by texel; a start table holds each texel's first
 // chunk (NoChunk: no node, visibility 1). A texel may then have any number of nodes while the
-// pool lasts, and an empty texel costs only its start entry.
+// pool lasts, and an empty texel costs only its start entry: one whose ray meets nothing
+// (its one node is 1) takes no chunk.
 //
 // Unlike the paper, a chunk belongs to one texel: the paper's chunks are shared by the 64
 // texels of a block (each entry then links to its texel's next entry, a list walked node by

@@ -3,6 +3,9 @@
 
 #include "Volume/ShadowContext.h"
 #include "Core/Shadows.h"
+#include "Core/Shadows/NodeChunks.h"
+#include "NodePool.h"
+#include "ShadowSlots.h"
 #include "vtkDeepShadowDeepShadowMap.h"
 #include "vtkDeepShadowDeepShadowMapBuild.h"
 
@@ -14,6 +17,8 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numeric>
+#include <sstream>
 
 vtkStandardNewMacro(vtkDeepShadowDeepShadowMapTechnique);
 
@@ -29,13 +34,20 @@ public:
 
   int GetLayersPerFace(const deepshadow::ShadowContext&) const override
   {
-    return this->Technique->Layers;
+    // Chunked: one layer of first chunks per face, the nodes in the pool.
+    return this->Technique->ChunkNodes > 0 ? 1 : this->Technique->Layers;
   }
+
+  bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;
 
   void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
   {
     sink.Set("u_epsilon", static_cast<float>(this->Technique->Epsilon));
   }
+
+  void SetSlotBuildUniforms(deepshadow::UniformSink& sink, int slot) override;
+  std::vector<int> SlotsToBuildAgain(const std::vector<int>& built, int slotCount) override;
+  void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
 private:
   vtkDeepShadowDeepShadowMapTechnique* Technique;
@@ -51,7 +63,8 @@ class vtkDeepShadowDeepShadowMapTechnique::Statistics
 {
 public:
   unsigned int Buffer = 0;
-  std::array<unsigned int, 5> Last{ { 0, 0, 0, 0, 0 } }; // hit, total, max, overflowed, epsilon bits
+  // hit, total, max, overflowed, epsilon bits, then chunks asked for per slot (chunked)
+  std::array<unsigned int, 9> Last{};
 
   void Release()
   {
@@ -63,8 +76,23 @@ public:
   }
 };
 
+// Chunked node memory: the pool, and per slot the bound of its build (doubled while the
+// pool cannot hold its nodes) and the chunks it took.
+class vtkDeepShadowDeepShadowMapTechnique::Chunks
+{
+public:
+  deepshadow::NodePool Pool;
+  std::vector<double> Bound;
+  std::vector<long long> Used;
+  std::vector<bool> Cut; // the pool ran out even at a bound of 1
+  vtkOpenGLRenderWindow* Window = nullptr;
+  std::string SaidLimit; // what the GL allows of the pool, said once while it lasts
+  std::string SaidShort; // the same for a pool too small for the nodes
+};
+
 vtkDeepShadowDeepShadowMapTechnique::vtkDeepShadowDeepShadowMapTechnique()
   : Stats(new Statistics)
+  , Pool(new Chunks)
 {
   Internals::SetHooks(this, std::make_unique<Hooks>(*this));
 }
@@ -81,6 +109,186 @@ void vtkDeepShadowDeepShadowMapTechnique::SetLayers(int layers)
   this->SetClamped("Layers", "layers", this->Layers, layers);
 }
 
+void vtkDeepShadowDeepShadowMapTechnique::SetChunkNodes(int nodes)
+{
+  this->SetClamped("ChunkNodes", "chunk-nodes", this->ChunkNodes, nodes);
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::SetPoolMegabytes(double megabytes)
+{
+  this->SetClamped("PoolMegabytes", "node-pool-mb", this->PoolMegabytes, megabytes);
+}
+
+bool vtkDeepShadowDeepShadowMapTechnique::Hooks::AllocateStructures(
+  deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots)
+{
+  if (!this->vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(context, slots))
+  {
+    return false;
+  }
+  vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
+  Chunks& chunks = *self->Pool;
+  chunks.Window = context.Window;
+  if (self->ChunkNodes == 0)
+  {
+    chunks.Pool.Release();
+    return true;
+  }
+  // Each light's limit, as the twin's (ChunkPoolCapacity over its faces' texels).
+  std::vector<long long> limits;
+  for (int slot = 0; slot < slots.Count(); ++slot)
+  {
+    const size_t texels = static_cast<size_t>(self->GetFaceCount(slot)) * self->MapSize * self->MapSize;
+    limits.push_back(deepshadow::ChunkPoolCapacity(texels, self->ChunkNodes, self->Colored, self->Layers, self->PoolMegabytes));
+  }
+  bool remade = false;
+  std::string problem;
+  const bool made = chunks.Pool.Reserve(context.Window, limits, self->ChunkNodes, self->Colored, remade, problem);
+  if (!made)
+  {
+    self->LastError = problem;
+    return false;
+  }
+  if (!problem.empty() && problem != chunks.SaidLimit)
+  {
+    vtkWarningWithObjectMacro(self, << problem);
+  }
+  chunks.SaidLimit = problem;
+  // Every build starts from the bound asked for.
+  chunks.Bound.assign(static_cast<size_t>(slots.Count()), self->Epsilon);
+  chunks.Used.resize(static_cast<size_t>(slots.Count()), 0);
+  chunks.Cut.assign(static_cast<size_t>(slots.Count()), false);
+  if (remade)
+  {
+    slots.Invalidate();
+  }
+  return true;
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::Hooks::SetSlotBuildUniforms(deepshadow::UniformSink& sink, int slot)
+{
+  vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
+  if (self->ChunkNodes == 0)
+  {
+    return;
+  }
+  const Chunks& chunks = *self->Pool;
+  sink.Set("u_epsilon", static_cast<float>(chunks.Bound[static_cast<size_t>(slot)]));
+  // Unsigned in the shader; the pool keeps chunk numbers below 2^24.
+  sink.Set("u_chunkBase", static_cast<int>(chunks.Pool.Base(slot)));
+  sink.Set("u_chunkCapacity", static_cast<int>(chunks.Pool.Capacity(slot)));
+  sink.Set("u_poolSlot", slot);
+}
+
+std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(const std::vector<int>& built, int slotCount)
+{
+  vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
+  if (self->ChunkNodes == 0)
+  {
+    return {};
+  }
+  Chunks& chunks = *self->Pool;
+  std::vector<int> doubled;
+  bool grew = false;
+  std::string problem;
+  for (int slot : built)
+  {
+    const long long requested = self->Stats->Last[5 + static_cast<size_t>(slot)];
+    // A pool short of its limit grows (moving every light's chunks); one at its limit gets a
+    // doubled bound, as the twin (DeepShadowMap::BuildChunked).
+    if (chunks.Pool.Grow(requested, slot, problem))
+    {
+      grew = true;
+      continue;
+    }
+    if (!problem.empty())
+    {
+      self->LastError = problem;
+      return {};
+    }
+    chunks.Used[static_cast<size_t>(slot)] = std::min(requested, chunks.Pool.Capacity(slot));
+    chunks.Cut[static_cast<size_t>(slot)] = requested > chunks.Pool.Capacity(slot);
+    double& bound = chunks.Bound[static_cast<size_t>(slot)];
+    const double next = deepshadow::ChunkedBuildBound(bound, requested, chunks.Pool.Limit(slot));
+    if (next >= 0.0)
+    {
+      bound = next;
+      doubled.push_back(slot);
+    }
+  }
+  if (grew)
+  {
+    std::vector<int> all(static_cast<size_t>(slotCount));
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
+  if (doubled.empty())
+  {
+    self->SayPoolShort();
+  }
+  return doubled;
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::SayPoolShort()
+{
+  // Once the build is done: which lights' nodes did not fit at the bound asked for, said once
+  // while the same happens again.
+  Chunks& chunks = *this->Pool;
+  std::ostringstream say;
+  for (size_t slot = 0; slot < chunks.Bound.size(); ++slot)
+  {
+    if (chunks.Bound[slot] > this->Epsilon || chunks.Cut[slot])
+    {
+      say << (say.tellp() > 0 ? "; " : "") << "the deep shadow map's node pool of "
+          << chunks.Pool.Limit(static_cast<int>(slot)) * chunks.Pool.ChunkBytes() / 1048576.0
+          << " MB cannot hold light " << slot << "'s nodes at epsilon " << this->Epsilon << ": "
+          << (chunks.Cut[slot] ? "texels keep the chunks they got at a bound of " : "built with a bound of ")
+          << chunks.Bound[slot] << " (node-pool-mb raises it)";
+    }
+  }
+  if (!say.str().empty() && say.str() != chunks.SaidShort)
+  {
+    vtkWarningMacro(<< say.str());
+  }
+  chunks.SaidShort = say.str();
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::Hooks::SetMapLookupUniforms(
+  deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
+{
+  if (this->Technique->ChunkNodes > 0)
+  {
+    this->Technique->Pool->Pool.BindLookup(sink, context.Window);
+  }
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::UnbindLookup()
+{
+  this->Superclass::UnbindLookup();
+  this->Pool->Pool.UnbindLookup();
+}
+
+long long vtkDeepShadowDeepShadowMapTechnique::GetStructureBytes() const
+{
+  return this->Superclass::GetStructureBytes() + this->Pool->Pool.AllocatedBytes();
+}
+
+long long vtkDeepShadowDeepShadowMapTechnique::GetChunksUsed() const
+{
+  const auto& used = this->Pool->Used;
+  return this->ChunkNodes > 0 ? std::accumulate(used.begin(), used.end(), 0LL) : 0;
+}
+
+long long vtkDeepShadowDeepShadowMapTechnique::GetChunkBytes() const
+{
+  return this->ChunkNodes > 0 ? deepshadow::ChunkBytes(this->ChunkNodes, this->Colored) : 0;
+}
+
+long long vtkDeepShadowDeepShadowMapTechnique::GetPoolBytes() const
+{
+  return this->Pool->Pool.AllocatedBytes();
+}
+
 deepshadow::ShadowParameters vtkDeepShadowDeepShadowMapTechnique::GetParameters() const
 {
   deepshadow::ShadowParameters parameters;
@@ -89,6 +297,8 @@ deepshadow::ShadowParameters vtkDeepShadowDeepShadowMapTechnique::GetParameters(
   this->FillMapParameters(parameters);
   parameters.Epsilon = this->Epsilon;
   parameters.Layers = this->Layers;
+  parameters.ChunkNodes = this->ChunkNodes;
+  parameters.PoolMegabytes = this->PoolMegabytes;
   parameters.Colored = this->Colored;
   return parameters;
 }
@@ -98,29 +308,41 @@ void vtkDeepShadowDeepShadowMapTechnique::SetParameters(const deepshadow::Shadow
   this->Superclass::SetParameters(parameters);
   this->SetEpsilon(parameters.Epsilon);
   this->SetLayers(parameters.Layers);
+  this->SetChunkNodes(parameters.ChunkNodes);
+  this->SetPoolMegabytes(parameters.PoolMegabytes);
   this->SetColored(parameters.Colored);
 }
 
 std::vector<double> vtkDeepShadowDeepShadowMapTechnique::GetStructureKey() const
 {
-  return { static_cast<double>(this->MapSize), this->Epsilon, static_cast<double>(this->Layers) };
+  return { static_cast<double>(this->MapSize), this->Epsilon, static_cast<double>(this->Layers),
+    static_cast<double>(this->ChunkNodes), this->PoolMegabytes };
 }
 
 unsigned int vtkDeepShadowDeepShadowMapTechnique::GetTexelFormat() const
 {
-  return this->Colored ? GL_RGBA32F : GL_RG32F;
+  // Chunked: each texel's first chunk (the nodes are in the pool).
+  return this->ChunkNodes > 0 ? GL_R32F : (this->Colored ? GL_RGBA32F : GL_RG32F);
+}
+
+std::string vtkDeepShadowDeepShadowMapTechnique::ChunkDefines() const
+{
+  return this->ChunkNodes > 0
+    ? "//@Dec\n#define DSM_CHUNKED\n#define DSM_CHUNK_NODES " + std::to_string(this->ChunkNodes) + "\n"
+    : std::string();
 }
 
 std::string vtkDeepShadowDeepShadowMapTechnique::GetBuildSource() const
 {
-  return vtkDeepShadowDeepShadowMapBuild;
+  return this->ChunkDefines() + vtkDeepShadowDeepShadowMapBuild;
 }
 
 int vtkDeepShadowDeepShadowMapTechnique::LookupLoopIterations() const
 {
-  // A binary search over the nodes in each of the four bilinear texels.
-  int steps = 1;
-  for (int remaining = this->Layers; remaining > 1; remaining /= 2)
+  // A binary search over the nodes in each of the four bilinear texels; chunked, over one
+  // chunk's, after the start and (mostly) one link.
+  int steps = this->ChunkNodes > 0 ? 3 : 1;
+  for (int remaining = this->ChunkNodes > 0 ? this->ChunkNodes : this->Layers; remaining > 1; remaining /= 2)
   {
     ++steps;
   }
@@ -129,7 +351,7 @@ int vtkDeepShadowDeepShadowMapTechnique::LookupLoopIterations() const
 
 std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const
 {
-  return std::string("//@Dec\nconst bool DsmColored = ") + (this->Colored ? "true" : "false") +
+  return this->ChunkDefines() + "//@Dec\nconst bool DsmColored = " + (this->Colored ? "true" : "false") +
     ";\n" + vtkDeepShadowDeepShadowMap;
 }
 
@@ -140,10 +362,14 @@ void vtkDeepShadowDeepShadowMapTechnique::BeginMapBuild()
   {
     glGenBuffers(1, &stats.Buffer);
   }
-  const std::array<unsigned int, 5> zero{ { 0, 0, 0, 0, 0 } };
+  const std::array<unsigned int, 9> zero{};
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, stats.Buffer);
   glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(zero), zero.data(), GL_DYNAMIC_READ);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats.Buffer);
+  if (this->ChunkNodes > 0)
+  {
+    this->Pool->Pool.BindBuild();
+  }
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::EndMapBuild()
@@ -153,6 +379,10 @@ void vtkDeepShadowDeepShadowMapTechnique::EndMapBuild()
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(stats.Last), stats.Last.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (this->ChunkNodes > 0)
+  {
+    this->Pool->Pool.UnbindBuild();
+  }
 }
 
 double vtkDeepShadowDeepShadowMapTechnique::GetNodesAverage() const
@@ -182,6 +412,7 @@ void vtkDeepShadowDeepShadowMapTechnique::ReleaseGraphicsResources(vtkWindow* wi
 {
   this->Superclass::ReleaseGraphicsResources(window);
   this->Stats->Release();
+  this->Pool->Pool.Release();
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)
@@ -189,6 +420,8 @@ void vtkDeepShadowDeepShadowMapTechnique::PrintSelf(ostream& os, vtkIndent inden
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Layers: " << this->Layers << "\n";
+  os << indent << "ChunkNodes: " << this->ChunkNodes << "\n";
+  os << indent << "PoolMegabytes: " << this->PoolMegabytes << "\n";
   os << indent << "Colored: " << this->Colored << "\n";
   os << indent << "Nodes (last build): " << this->GetNodesAverage() << " average, "
      << this->GetNodesMax() << " maximum, " << this->GetTexelsOverflowed() << " texels overflowed\n";

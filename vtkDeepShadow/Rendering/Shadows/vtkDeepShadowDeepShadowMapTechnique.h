@@ -50,6 +50,34 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Chunked node memory (paper 000, section 5): nodes go to chunks of this many, taken from a
+   * pool as a texel needs them, so a texel holds any number of nodes while the pool lasts and
+   * an empty one costs 4 bytes; 0 (the default) keeps Layers nodes per texel ([0, 64],
+   * warned). Pictures are those of layers that never overflow.
+   */
+  void SetChunkNodes(int nodes);
+  vtkGetMacro(ChunkNodes, int);
+  ///@}
+
+  ///@{
+  /**
+   * Chunked: the most memory one light's nodes may take, in MB; 0 (the default) is what
+   * Layers fixed layers would take. The pool grows to what the maps need, up to this. A map
+   * that needs more is built again with a doubled bound (GetEpsilonMax says which, warned).
+   */
+  void SetPoolMegabytes(double megabytes);
+  vtkGetMacro(PoolMegabytes, double);
+  ///@}
+
+  ///@{
+  /** Chunked: chunks in use after the last build, bytes per chunk, bytes of the pool. */
+  long long GetChunksUsed() const;
+  long long GetChunkBytes() const;
+  long long GetPoolBytes() const;
+  ///@}
+
+  ///@{
   /** One visibility per colour channel (default off). */
   vtkSetMacro(Colored, bool);
   vtkGetMacro(Colored, bool);
@@ -74,15 +102,23 @@ protected:
 
   std::vector<double> GetStructureKey() const override;
   unsigned int GetTexelFormat() const override;
-  bool DefersTexels() const override { return true; }
+  bool DefersTexels() const override { return this->ChunkNodes == 0; }
   std::string GetBuildSource() const override;
+  /** The shaders' defines of chunked node memory (none with fixed layers). */
+  std::string ChunkDefines() const;
+  /** After a chunked build: warns (once) about lights whose nodes the pool could not hold. */
+  void SayPoolShort();
   std::string GetMapLookupSource() const override;
   int LookupLoopIterations() const override;
   void BeginMapBuild() override;
   void EndMapBuild() override;
+  long long GetStructureBytes() const override;
+  void UnbindLookup() override;
 
   double Epsilon = 0.02;
   int Layers = 8;
+  int ChunkNodes = 0;
+  double PoolMegabytes = 0.0;
   bool Colored = false;
 
 private:
@@ -94,6 +130,8 @@ private:
 
   class Statistics;
   std::unique_ptr<Statistics> Stats;
+  class Chunks;
+  std::unique_ptr<Chunks> Pool;
 };
 
 #endif

@@ -254,8 +254,14 @@ long long vtkDeepShadowLightSpaceTechnique::GetStructureBytes() const
     maps.LayersPerFace * BytesPerTexel(maps.Format);
 }
 
+int vtkDeepShadowLightSpaceTechnique::GetFaceCount(int slot) const
+{
+  const auto& faces = this->LightMaps->Faces;
+  return slot >= 0 && slot < static_cast<int>(faces.size()) ? static_cast<int>(faces[slot].size()) : 0;
+}
+
 bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::ShadowContext& context,
-  const deepshadow::ShadowSlots&, const std::vector<int>& stale)
+  const deepshadow::ShadowSlots& slots, const std::vector<int>& stale)
 {
   vtkDeepShadowLightSpaceTechnique* self = this->Self;
   Maps& maps = *self->LightMaps;
@@ -269,7 +275,6 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   maps.Build.Set("u_size", self->MapSize);
   maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
   this->SetBuildUniforms(sink, context);
-  self->BeginMapBuild();
   const bool defers = self->DefersTexels();
   if (defers)
   {
@@ -290,8 +295,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   }
   glBindImageTexture(0, maps.Texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, maps.Format);
   maps.Clusters.ActivateLabels();
-  for (int slot : stale)
-  {
+  // One slot's faces: a dispatch each, and one more for a face's deferred texels.
+  auto buildSlot = [&](int slot) {
     for (size_t f = 0; f < maps.Faces[slot].size(); ++f)
     {
       const deepshadow::ShadowMapFace& face = maps.Faces[slot][f];
@@ -327,6 +332,18 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
         self->LastPasses.emplace_back("light-space-deferred");
       }
     }
+  };
+  // A technique may ask for slots again (the deep shadow map's node pool was short).
+  for (std::vector<int> building = stale; !building.empty();
+       building = this->SlotsToBuildAgain(building, slots.Count()))
+  {
+    self->BeginMapBuild();
+    for (int slot : building)
+    {
+      this->SetSlotBuildUniforms(sink, slot);
+      buildSlot(slot);
+    }
+    self->EndMapBuild();
   }
   if (defers)
   {
@@ -336,7 +353,6 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   maps.Clusters.DeactivateLabels();
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, maps.Format);
   Internals::EndBuildPass(self, context);
-  self->EndMapBuild();
   return true;
 }
 

@@ -108,6 +108,9 @@ protected:
   std::string GetLookupSource() const override;
   void UnbindLookup() override;
 
+  /** Faces of shadowed light `slot` in the last frame (a cube: 6; clustered: one per cluster). */
+  int GetFaceCount(int slot) const;
+
   /** The light-space fields of GetParameters(): map size and clustering. */
   void FillMapParameters(deepshadow::ShadowParameters& parameters) const;
 

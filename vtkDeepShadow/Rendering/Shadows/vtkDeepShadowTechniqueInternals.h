@@ -76,6 +76,13 @@ public:
   /** Layers per face (deep shadow map nodes, stochastic photons, opacity levels' mesh steps). */
   virtual int GetLayersPerFace(const deepshadow::ShadowContext&) const { return 1; }
   virtual void SetBuildUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
+  /** Before the dispatches of slot `slot`'s faces. */
+  virtual void SetSlotBuildUniforms(deepshadow::UniformSink&, int /*slot*/) {}
+  /**
+   * After a build of the slots `built` (of `slotCount`), read back by EndMapBuild: the slots
+   * to build again (the deep shadow map's node pool ran out); none by default.
+   */
+  virtual std::vector<int> SlotsToBuildAgain(const std::vector<int>& /*built*/, int /*slotCount*/) { return {}; }
   virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
 
   bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;

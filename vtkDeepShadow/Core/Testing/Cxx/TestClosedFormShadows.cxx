@@ -252,6 +252,7 @@ const glm::dvec3 Orange{ 1.0, 0.6, 0.2 };
 // Grey techniques on a mesh receiver: the ground under a translucent ball.
 TEST(ClosedFormShadows, RaysOnAGroundUnderABall) { CheckBallOnGround("rays"); }
 TEST(ClosedFormShadows, DeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("dsm"); }
+TEST(ClosedFormShadows, ChunkedDeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("dsm:chunk-nodes=4"); }
 // CSSM's offsets reach 7 texels: on a receiver that slopes away from the light, they must
 // compare the receiver plane's depth there, not the point's (else the ground's own crossing
 // in the texels towards the light shadows it: 30 % darker, and the ball's shadow lost).
@@ -267,6 +268,7 @@ TEST(ClosedFormShadows, OpaqueRaysOnAGroundUnderABall) { CheckBallOnGround("rays
 TEST(ClosedFormShadows, RaysInsideASlab) { CheckSlabSelfShadow("rays"); }
 TEST(ClosedFormShadows, CachedRaysInsideASlab) { CheckSlabSelfShadow("rays-cached"); }
 TEST(ClosedFormShadows, DeepShadowMapInsideASlab) { CheckSlabSelfShadow("dsm"); }
+TEST(ClosedFormShadows, ChunkedDeepShadowMapInsideASlab) { CheckSlabSelfShadow("dsm:chunk-nodes=2"); }
 TEST(ClosedFormShadows, CachedDeepShadowMapInsideASlab) { CheckSlabSelfShadow("dsm-cached"); }
 TEST(ClosedFormShadows, OpacityLevelsInsideASlab) { CheckSlabSelfShadow("dsm3"); }
 TEST(ClosedFormShadows, StochasticShadowMapInsideASlab) { CheckSlabSelfShadow("cssm"); }
@@ -278,6 +280,7 @@ TEST(ClosedFormShadows, OpaqueRaysInsideASlab) { CheckSlabSelfShadow("rays-opaqu
 // What one volume casts onto another, through the receiver's grid.
 TEST(ClosedFormShadows, RaysOnASecondVolume) { CheckBallOnSecondVolume("rays"); }
 TEST(ClosedFormShadows, DeepShadowMapOnASecondVolume) { CheckBallOnSecondVolume("dsm"); }
+TEST(ClosedFormShadows, ChunkedDeepShadowMapOnASecondVolume) { CheckBallOnSecondVolume("dsm:chunk-nodes=4"); }
 TEST(ClosedFormShadows, OpacityLevelsOnASecondVolume) { CheckBallOnSecondVolume("dsm3"); }
 TEST(ClosedFormShadows, StochasticShadowMapOnASecondVolume) { CheckBallOnSecondVolume("cssm"); }
 TEST(ClosedFormShadows, ShadowMapOnASecondVolume) { CheckBallOnSecondVolume("shadowmap"); }
@@ -285,7 +288,7 @@ TEST(ClosedFormShadows, ShadowMapOnASecondVolume) { CheckBallOnSecondVolume("sha
 // Positional lights: inside the medium (cube faces), and a spot above it.
 TEST(ClosedFormShadows, PointLightInAMedium)
 {
-  for (const char* name : { "rays", "rays-cached", "dsm", "dsm-cached", "dsm3", "cssm", "shadowmap", "rays-opaque" })
+  for (const char* name : { "rays", "rays-cached", "dsm", "dsm:chunk-nodes=4", "dsm-cached", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     CheckMediumWithPositionalLight(name, false);
   }
@@ -307,7 +310,7 @@ TEST(ClosedFormShadows, ColouredRaysAndDeepShadowMapsOnAGround)
 TEST(ClosedFormShadows, ColouredStochasticShadowMapOnAGround) { CheckBallOnGround("cssm", Orange); }
 TEST(ClosedFormShadows, ColouredPointLightInAMedium)
 {
-  for (const char* name : { "rays-color", "dsm-color", "cssm" })
+  for (const char* name : { "rays-color", "dsm-color", "dsm-color:chunk-nodes=4", "cssm" })
   {
     CheckMediumWithPositionalLight(name, false, Orange);
   }

@@ -42,12 +42,13 @@ std::vector<VisibilityNode> Padded(std::vector<VisibilityNode> nodes, size_t len
   return nodes;
 }
 
+// Chunks for texels of RandomNodes: one node (of value 1) takes none.
 long long ChunksFor(const std::vector<int>& counts, int chunkNodes)
 {
   long long chunks = 0;
   for (int count : counts)
   {
-    chunks += (count + chunkNodes - 1) / chunkNodes;
+    chunks += count == 1 ? 0 : (count + chunkNodes - 1) / chunkNodes;
   }
   return chunks;
 }
@@ -114,7 +115,7 @@ TEST(NodeChunks, RandomCountsReadBackAsStoredAndLookUpAsFixedLayers)
     for (size_t texel = 0; texel < nodes.size(); ++texel)
     {
       EXPECT_TRUE(stored[texel]);
-      const size_t length = ((nodes[texel].size() + chunkNodes - 1) / chunkNodes) * chunkNodes;
+      const size_t length = nodes[texel].size() == 1 ? 0 : ((nodes[texel].size() + chunkNodes - 1) / chunkNodes) * chunkNodes;
       const std::vector<VisibilityNode> read = chunks.NodesOf(texel);
       ASSERT_EQ(read.size(), length) << "chunk nodes " << chunkNodes << " texel " << texel;
       const std::vector<VisibilityNode> padded = Padded(nodes[texel], length);
@@ -131,6 +132,16 @@ TEST(NodeChunks, RandomCountsReadBackAsStoredAndLookUpAsFixedLayers)
 TEST(NodeChunks, AdversarialCounts)
 {
   std::mt19937 random(11);
+  // One node: of value 1 (a ray through empty space) no chunk, below 1 a chunk.
+  {
+    NodeChunks chunks(2, 4, 10);
+    EXPECT_TRUE(chunks.Store(0, { VisibilityNode{ 3.0f, { 1.0f, 1.0f, 1.0f } } }));
+    EXPECT_EQ(chunks.Requested(), 0);
+    EXPECT_TRUE(chunks.Store(1, { VisibilityNode{ 3.0f, { 1.0f, 0.5f, 1.0f } } }));
+    EXPECT_EQ(chunks.Requested(), 1);
+    EXPECT_EQ(chunks.Evaluate(1, 4.0), glm::dvec3(1.0, 0.5, 1.0));
+    EXPECT_EQ(chunks.Evaluate(1, 2.0), glm::dvec3(1.0));
+  }
   // One texel with thousands of nodes among empty ones: its chain is long, theirs absent.
   {
     std::vector<std::vector<VisibilityNode>> nodes(64);

@@ -4,12 +4,91 @@
 // channel (Value is float; vec3 with the feature FeelerColored). Nodes go to layers u_layer + k as (depth, value); a texel that
 // needs more than u_layersPerFace nodes is deferred to the second dispatch, which marches it
 // again with doubled bounds until its nodes fit. The nodes needed at the requested bound are
-// gathered in u_statistics.
+// gathered in u_statistics. With DSM_CHUNKED, nodes go to chunks of a pool instead, any
+// number per texel (NodeChunks.h).
 //@Dec
 // Values have the feelers' transmittance type: vec3 when coloured, else float.
 #define Value FeelerTransmittance
+layout(std430, binding = 1) buffer DeepShadowStatistics
+{
+  uint texelsHit;
+  uint nodesTotal;
+  uint nodesMax;
+  uint texelsOverflowed;
+  uint epsilonMaxBits; // positive floats order like their bits
+  uint chunksRequested[4]; // chunked: per slot, given or not
+} u_statistics;
+#ifdef DSM_CHUNKED
+// Chunked node memory (NodeChunks in Core/Shadows/NodeChunks.cxx is the twin): a chunk is
+// DSM_CHUNK_NODES + 1 entries of the pool, its link (the next chunk, -1: none) and then its
+// nodes. Chunks are taken from this slot's region with its counter; one asked for beyond
+// u_chunkCapacity is counted, not given. The output holds per texel 2 first chunk + 1 if it
+// has a next one (-1: no chunk), so that most lookups search their chunk without its link.
+// A texel whose one node is 1 (a ray through empty space) takes no chunk, as in the twin.
+layout(r32f, binding = 0) uniform writeonly image2DArray u_output;
+layout(std430, binding = 3) buffer DeepShadowNodePool
+{
 #ifdef FEELER_COLORED
+  vec4 entries[];
+#else
+  vec2 entries[];
+#endif
+} u_pool;
+uniform int u_chunkBase;
+uniform int u_chunkCapacity;
+uniform int u_poolSlot;
+const int ChunkNodes = DSM_CHUNK_NODES;
+int g_firstChunk; // the texel's first chunk (-1: none yet)
+int g_chunk;      // its last
+bool g_poolOut;   // a chunk it asked for was not given: it keeps the whole chunks it has
+vec4 g_firstNode; // node 0, placed once a second node shows the texel is not empty
+
+void storeEntry(int chunk, int entry, vec4 value)
+{
+#ifdef FEELER_COLORED
+  u_pool.entries[chunk * (ChunkNodes + 1) + entry] = value;
+#else
+  u_pool.entries[chunk * (ChunkNodes + 1) + entry] = value.xy;
+#endif
+}
+
+// Node k of the texel into its chunks, a new chunk every ChunkNodes nodes.
+void placeNode(int k, vec4 value)
+{
+  int entry = k % ChunkNodes;
+  if (entry == 0)
+  {
+    uint asked = atomicAdd(u_statistics.chunksRequested[u_poolSlot], 1u);
+    if (!g_poolOut && asked < uint(u_chunkCapacity))
+    {
+      int chunk = u_chunkBase + int(asked);
+      storeEntry(chunk, 0, vec4(-1.0));
+      if (g_chunk < 0)
+      {
+        g_firstChunk = chunk;
+      }
+      else
+      {
+        storeEntry(g_chunk, 0, vec4(float(chunk)));
+      }
+      g_chunk = chunk;
+    }
+    else
+    {
+      g_poolOut = true;
+    }
+  }
+  if (!g_poolOut)
+  {
+    storeEntry(g_chunk, 1 + entry, value);
+  }
+}
+#elif defined(FEELER_COLORED)
 layout(rgba32f, binding = 0) uniform writeonly image2DArray u_output;
+#else
+layout(rg32f, binding = 0) uniform writeonly image2DArray u_output;
+#endif
+#ifdef FEELER_COLORED
 bool ordered(vec3 low, vec3 high)
 {
   return all(lessThanEqual(low, high));
@@ -19,7 +98,6 @@ vec4 node(float depth, vec3 value)
   return vec4(depth, value);
 }
 #else
-layout(rg32f, binding = 0) uniform writeonly image2DArray u_output;
 bool ordered(float low, float high)
 {
   return low <= high;
@@ -29,14 +107,6 @@ vec4 node(float depth, float value)
   return vec4(depth, value, 0.0, 0.0);
 }
 #endif
-layout(std430, binding = 1) buffer DeepShadowStatistics
-{
-  uint texelsHit;
-  uint nodesTotal;
-  uint nodesMax;
-  uint texelsOverflowed;
-  uint epsilonMaxBits; // positive floats order like their bits
-} u_statistics;
 uniform float u_epsilon;
 
 // The compressor's state.
@@ -54,12 +124,23 @@ Value g_lastStored;
 bool g_started;
 Value g_transmittance;
 
+// Inlined wherever a segment starts: kept short (llvmpipe's time grows with the code).
 void emitNode(float depth, Value value)
 {
+#ifdef DSM_CHUNKED
+  // Node 0 waits for node 1 (a texel with one node of 1 takes no chunk); node 1 places both.
+  vec4 stored = node(depth, value);
+  for (int k = g_nodes == 1 ? 0 : g_nodes; k <= g_nodes && g_nodes > 0; ++k)
+  {
+    placeNode(k, k == g_nodes ? stored : g_firstNode);
+  }
+  g_firstNode = g_nodes == 0 ? stored : g_firstNode;
+#else
   if (g_nodes < u_layersPerFace)
   {
     imageStore(u_output, ivec3(g_texel, u_layer + g_nodes), node(depth, value));
   }
+#endif
   g_lastStored = value;
   ++g_nodes;
 }
@@ -89,24 +170,34 @@ void addBounded(float depth, Value low, Value high, Value preferred)
   // Nodes stay in [0, 1], as in deepshadow::VisibilityCompressor::AddBounded.
   low = max(low, Value(0.0));
   high = min(high, Value(1.0));
-  if (g_nodes == 0)
+  bool first = g_nodes == 0;
+  bool split = false;
+  Value slopeLow, slopeHigh;
+  if (!first)
   {
-    startSegment(depth, clamp(preferred, low, high));
-    return;
-  }
-  if (!(depth > g_lastDepth))
-  {
-    depth = uintBitsToFloat(floatBitsToUint(g_lastDepth) + 1u);
-  }
-  float inverseDz = 1.0 / (depth - g_startDepth);
-  Value slopeLow = max((low - g_startValue) * inverseDz, g_slopeLow);
-  Value slopeHigh = min((high - g_startValue) * inverseDz, g_slopeHigh);
-  if (!ordered(slopeLow, slopeHigh))
-  {
+    if (!(depth > g_lastDepth))
+    {
+      depth = uintBitsToFloat(floatBitsToUint(g_lastDepth) + 1u);
+    }
+    float inverseDz = 1.0 / (depth - g_startDepth);
+    slopeLow = max((low - g_startValue) * inverseDz, g_slopeLow);
+    slopeHigh = min((high - g_startValue) * inverseDz, g_slopeHigh);
     // No line from the start reaches this sample too: a new segment starts at the previous
-    // sample, and one constraint alone is always feasible.
-    endSegment();
-    inverseDz = 1.0 / (depth - g_startDepth);
+    // sample (endSegment), and one constraint alone is always feasible.
+    split = !ordered(slopeLow, slopeHigh);
+  }
+  if (first || split)
+  {
+    // One startSegment for both cases: each call is inlined, and llvmpipe pays for the code.
+    float dz = g_lastDepth - g_startDepth;
+    startSegment(first ? depth : g_lastDepth,
+      first ? clamp(preferred, low, high)
+            : clamp(g_lastPreferred, g_startValue + g_slopeLow * dz, g_startValue + g_slopeHigh * dz));
+    if (first)
+    {
+      return;
+    }
+    float inverseDz = 1.0 / (depth - g_startDepth);
     slopeLow = (low - g_startValue) * inverseDz;
     slopeHigh = (high - g_startValue) * inverseDz;
   }
@@ -122,13 +213,9 @@ void addBounded(float depth, Value low, Value high, Value preferred)
 bool addPoint(float depth)
 {
   Value v = g_transmittance;
-  if (feelerLargest(v) <= u_epsilon)
-  {
-    addBounded(depth, v - g_bound, Value(g_bound), v);
-    return false;
-  }
-  addBounded(depth, v - g_bound, v + g_bound, v);
-  return true;
+  bool beyond = feelerLargest(v) <= u_epsilon;
+  addBounded(depth, v - g_bound, beyond ? Value(g_bound) : v + g_bound, v);
+  return !beyond;
 }
 
 void startPoint(float t)
@@ -190,6 +277,42 @@ void compressTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tE
   }
 }
 
+#ifdef DSM_CHUNKED
+// Any number of nodes per texel while the pool lasts; the bound is this slot's (the host
+// doubles it for a build again when the pool ran out, ChunkedBuildBound).
+void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
+{
+  g_firstChunk = -1;
+  g_chunk = -1;
+  g_poolOut = false;
+  compressTexel(indexOrigin, indexDirection, tEnter, tExit, u_epsilon);
+  if (g_nodes == 1 && feelerLargest(Value(1.0) - g_lastStored) > 0.0)
+  {
+    placeNode(0, g_firstNode);
+  }
+  if (g_chunk >= 0 && !g_poolOut && g_nodes % ChunkNodes != 0)
+  {
+    // The last chunk's tail repeats the last value far away.
+    for (int entry = g_nodes % ChunkNodes; entry < ChunkNodes; ++entry)
+    {
+      storeEntry(g_chunk, 1 + entry, node(NoHit, g_lastStored));
+    }
+  }
+  float start = g_firstChunk < 0 ? -1.0 : float(2 * g_firstChunk + (g_chunk != g_firstChunk ? 1 : 0));
+  imageStore(u_output, ivec3(g_texel, u_layer), vec4(start));
+  if (g_nodes > 0)
+  {
+    atomicAdd(u_statistics.texelsHit, 1u);
+    atomicAdd(u_statistics.nodesTotal, uint(g_nodes));
+    atomicMax(u_statistics.nodesMax, uint(g_nodes));
+    atomicMax(u_statistics.epsilonMaxBits, floatBitsToUint(u_epsilon));
+  }
+  if (g_poolOut)
+  {
+    atomicAdd(u_statistics.texelsOverflowed, 1u);
+  }
+}
+#else
 void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
   float bound = u_epsilon;
@@ -233,3 +356,4 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     atomicMax(u_statistics.epsilonMaxBits, floatBitsToUint(bound));
   }
 }
+#endif

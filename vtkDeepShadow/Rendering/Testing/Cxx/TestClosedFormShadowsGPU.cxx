@@ -96,6 +96,7 @@ vtkSmartPointer<vtkDeepShadowTechnique> Make(const deepshadow::ShadowParameters&
     {
       auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
       dsm->SetColored(p.Colored);
+      dsm->SetChunkNodes(p.ChunkNodes);
       technique = dsm;
       break;
     }
@@ -430,11 +431,12 @@ int TestClosedFormShadowsGPU(int, char*[])
 {
   bool ok = true;
   const glm::dvec3 black(0.0), orange(1.0, 0.6, 0.2);
-  for (const char* name : { "rays", "dsm", "dsm3", "cssm", "shadowmap", "rays-opaque" })
+  // Chunked node memory (dsm:chunk-nodes) with the lights that give one face, and a cube.
+  for (const char* name : { "rays", "dsm", "dsm:chunk-nodes=4", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     ok = BallOverGround(name, black) && ok;
   }
-  for (const char* name : { "rays-color", "dsm-color", "cssm" })
+  for (const char* name : { "rays-color", "dsm-color", "dsm-color:chunk-nodes=4", "cssm" })
   {
     ok = BallOverGround(name, orange) && ok;
   }
@@ -442,7 +444,7 @@ int TestClosedFormShadowsGPU(int, char*[])
   {
     ok = SlabEdgeOn(name) && ok;
   }
-  for (const char* name : { "rays", "dsm", "dsm3", "cssm", "shadowmap", "rays-opaque" })
+  for (const char* name : { "rays", "dsm", "dsm:chunk-nodes=2", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     ok = MediumOntoPlane(name, false, black) && ok;
     ok = MediumOntoPlane(name, true, black) && ok;
