@@ -2,6 +2,7 @@
 
 #include "Commands.h"
 #include "Look.h"
+#include "vtkDeepShadowStandardScene.h"
 
 #include <algorithm>
 #include <cctype>
@@ -443,6 +444,16 @@ Options Options::Parse(int argc, char* argv[])
       {
         throw UsageError("--scale must be in [0.01, 2]");
       }
+    }
+    else if (key == "--objects")
+    {
+      const double count = ParseNumber(key, next());
+      if (count != std::floor(count) || count < 1 || count > vtkDeepShadowStandardScene::GetMaxObjectCount())
+      {
+        throw UsageError("--objects must be a whole number in [1, " +
+          std::to_string(vtkDeepShadowStandardScene::GetMaxObjectCount()) + "]");
+      }
+      o.ObjectCount = static_cast<int>(count);
     }
     else if (key == "--size")
     {

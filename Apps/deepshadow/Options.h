@@ -58,6 +58,7 @@ struct Options
   std::string VolumeFile; // or a file
   std::string MaskFile;   // --mask: a binary mask volume of the data's dimensions
   double SceneScale = 1.0;
+  int ObjectCount = 0;    // --objects: the sparse scene's first N objects (0: all)
   std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
   std::string Csg;                     // --csg: how they combine ("" = their union)
   std::vector<MeshSpec> Meshes;        // --mesh, repeatable: meshes that cast and receive

@@ -166,6 +166,8 @@ Commands:
 SCENE (default: --scene box):
   --scene NAME            a standard scene (see `deepshadow scenes`)
   --scale S               voxels per axis of the scene times S (0.01-2, default 1)
+  --objects N             sparse: its first N objects (1-24; default its 19; above 19,
+                          smaller ones between its cells), for scaling studies
   --volume FILE|DIR       a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr, .nii/.nii.gz
                           (placed by its s/q-form), or a directory of one DICOM series
   --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing

@@ -312,6 +312,10 @@ SceneSetup SceneSetup::Build(const Options& options)
   vtkSmartPointer<vtkVolumeProperty> property;
   std::vector<LightSpec> lights = options.Lights;
   vtkNew<vtkDeepShadowStandardScene> scene;
+  if (options.ObjectCount > 0 && (!options.VolumeFile.empty() || options.Scene != "sparse"))
+  {
+    throw UsageError("--objects applies to --scene sparse only");
+  }
   if (!options.VolumeFile.empty())
   {
     vtkNew<vtkDeepShadowVolumeReader> reader;
@@ -334,6 +338,7 @@ SceneSetup SceneSetup::Build(const Options& options)
         : hybrid        ? vtkDeepShadowHybridScene::GetVolumeSceneName(options.Scene)
                         : options.Scene);
     scene->SetResolutionScale(options.SceneScale);
+    scene->SetObjectCount(options.ObjectCount);
     setup.Data = scene->GetVolume();
     setup.GenerationSeconds = scene->GetLastGenerationTime();
     setup.Name = options.Scene;

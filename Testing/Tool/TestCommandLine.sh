@@ -38,6 +38,13 @@ expect 2 "bad size" -- "$tool" render --size 12 --out x.png
 expect 2 "bad number" -- "$tool" render --sample-distance fast --out x.png
 expect 2 "negative sample distance" -- "$tool" render --sample-distance -1 --out x.png
 expect 2 "zero light direction" -- "$tool" render --light-dir 0,0,0 --out x.png
+expect 2 "--objects on another scene" "sparse only" -- "$tool" render --scene rods --objects 4 --out x.png
+expect 2 "--objects beyond 24" "[1, 24]" -- "$tool" render --scene sparse --objects 25 --out x.png
+expect 2 "--objects not whole" "whole number" -- "$tool" render --scene sparse --objects 2.5 --out x.png
+expect 2 "--chunk-nodes beyond 64" "chunk-nodes" -- "$tool" render --technique dsm --chunk-nodes 65 --out x.png
+expect 0 "sparse with 4 objects, chunked deep shadow map" -- "$tool" render --scene sparse --scale 0.25 --objects 4 \
+  --technique dsm --chunk-nodes 4 --size 32x32 --frames 1 --out x.png --json x.json
+grep -q '"chunks_used": [1-9]' x.json || fail "chunked render: chunks_used in its JSON"
 expect 2 "unknown scene" -- "$tool" render --scene teapot --out x.png
 expect 2 "unknown technique" -- "$tool" render --technique magic --out x.png
 expect 2 "threshold out of range" -- "$tool" render --technique shadowmap --shadow-threshold 2 --out x.png

@@ -84,8 +84,9 @@ double Distance(const SparseObject& o, const double p[3])
 }
 
 // The objects: the focus and its ring by hand, the others one per free cell, their shape,
-// colour, size and place from the cell's hash.
-std::vector<SparseObject> SparseObjects()
+// colour, size and place from the cell's hash; `count` (0: all 19) keeps the first, or adds
+// up to 5 more, smaller, between cells away from the focus (scaling studies).
+std::vector<SparseObject> SparseObjects(int count)
 {
   std::vector<SparseObject> objects;
   objects.push_back({ Kind::Molecule, { sparse::Focus[0], sparse::Focus[1], sparse::Focus[2] }, 11.0, 200.0, 2 });
@@ -116,6 +117,27 @@ std::vector<SparseObject> SparseObjects()
       objects.push_back(o);
     }
   }
+  // Between the cells: radius 7 to 9 leaves at least 2 units to the cells' objects (at most
+  // 17 from their centre, 26 to 28 away).
+  const double between[sparse::ExtraObjects][2] = { { -78.0, -56.0 }, { -26.0, 0.0 }, { 26.0, -56.0 },
+    { -78.0, 56.0 }, { 26.0, 56.0 } };
+  for (int e = 0; e < sparse::ExtraObjects && count > static_cast<int>(objects.size()); ++e)
+  {
+    const auto unit = [&](uint32_t salt) { return HashUnit(Hash3(e, 7, static_cast<int>(salt), 0xe17au)); };
+    SparseObject o;
+    o.Shape = static_cast<Kind>((e + 2) % 6);
+    o.Value = values[(e * 5 + 3) % 6];
+    o.Radius = 7.0 + 2.0 * unit(0);
+    o.Centre[0] = between[e][0];
+    o.Centre[1] = between[e][1];
+    o.Centre[2] = (22.0 - o.Radius) * (2.0 * unit(3) - 1.0);
+    o.Axis = unit(4) < 0.5 ? 0 : 2;
+    objects.push_back(o);
+  }
+  if (count > 0 && count < static_cast<int>(objects.size()))
+  {
+    objects.resize(static_cast<size_t>(count));
+  }
   return objects;
 }
 }
@@ -124,11 +146,11 @@ std::vector<SparseObject> SparseObjects()
 // Each object is drawn over its own box of voxels (the objects do not overlap): a one-voxel
 // antialiased surface and a gentle +-8 rise towards the inside, within the object's colour
 // band, so that inner samples have a gradient to be shaded by.
-void GenerateSparse(const Grid& g, unsigned char* out)
+void GenerateSparse(const Grid& g, unsigned char* out, int count)
 {
   std::fill(out, out + g.Size(), static_cast<unsigned char>(0));
   const double voxel = std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
-  const std::vector<SparseObject> objects = SparseObjects();
+  const std::vector<SparseObject> objects = SparseObjects(count);
   ForEachSlice(g.Dims[2], [&](int k) {
     unsigned char* slice = out + k * g.SliceSize();
     const double z = g.World(2, k);

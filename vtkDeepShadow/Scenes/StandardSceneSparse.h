@@ -14,7 +14,10 @@ namespace scenes
 {
 namespace sparse
 {
-// A 5 x 4 grid of cells, one object (radius 7 to 11, jittered) per cell.
+// A 5 x 4 grid of cells, one object (radius 7 to 11, jittered) per cell: 19 objects with the
+// focus's ring; SetObjectCount keeps fewer, or adds up to ExtraObjects between the cells.
+constexpr int Objects = 19;
+constexpr int ExtraObjects = 5;
 constexpr int Columns = 5;
 constexpr int Rows = 4;
 inline double CellX(int column)

@@ -200,7 +200,7 @@ void GenerateBucky(const Grid& g, unsigned char* out);
 void GenerateRods(const Grid& g, unsigned char* out);
 void GenerateSpheres(const Grid& g, unsigned char* out);
 void GenerateClouds(const Grid& g, unsigned char* out);
-void GenerateSparse(const Grid& g, unsigned char* out);
+void GenerateSparse(const Grid& g, unsigned char* out, int count); // count 0: all
 void GenerateHead(const Grid& g, short* out);
 
 }

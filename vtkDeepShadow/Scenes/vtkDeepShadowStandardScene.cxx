@@ -253,6 +253,21 @@ void vtkDeepShadowStandardScene::SetResolutionScale(double scale)
   }
 }
 
+void vtkDeepShadowStandardScene::SetObjectCount(int count)
+{
+  count = std::clamp(count, 0, scenes::sparse::Objects + scenes::sparse::ExtraObjects);
+  if (count != this->ObjectCount)
+  {
+    this->ObjectCount = count;
+    this->Invalidate();
+  }
+}
+
+int vtkDeepShadowStandardScene::GetMaxObjectCount()
+{
+  return scenes::sparse::Objects + scenes::sparse::ExtraObjects;
+}
+
 void vtkDeepShadowStandardScene::Invalidate()
 {
   this->Volume = nullptr;
@@ -335,7 +350,7 @@ vtkImageData* vtkDeepShadowStandardScene::GetVolume()
     }
     else if (this->Scene == "sparse")
     {
-      scenes::GenerateSparse(g, out);
+      scenes::GenerateSparse(g, out, this->ObjectCount);
     }
     else
     {
@@ -459,6 +474,7 @@ void vtkDeepShadowStandardScene::PrintSelf(ostream& os, vtkIndent indent)
   this->GetSpacing(spacing);
   os << indent << "Scene: " << this->Scene << "\n";
   os << indent << "ResolutionScale: " << this->ResolutionScale << "\n";
+  os << indent << "ObjectCount: " << this->ObjectCount << "\n";
   os << indent << "Dimensions: " << dims[0] << " " << dims[1] << " " << dims[2] << "\n";
   os << indent << "Spacing: " << spacing[0] << " " << spacing[1] << " " << spacing[2] << "\n";
   os << indent << "Volume: " << (this->Volume ? "generated" : "(none)") << "\n";

@@ -76,6 +76,18 @@ public:
   vtkGetMacro(ResolutionScale, double);
   ///@}
 
+  ///@{
+  /**
+   * "sparse" only: how many of its objects (0, the default: its 19). Fewer keep the first
+   * (the object the camera looks at, the ring that shadows it, then cell by cell); up to
+   * GetMaxObjectCount() (24) adds smaller ones between the cells. For scaling studies
+   * against the object count; other scenes ignore it. A change drops the cached volume.
+   */
+  void SetObjectCount(int count);
+  vtkGetMacro(ObjectCount, int);
+  static int GetMaxObjectCount();
+  ///@}
+
   /** Dimensions, spacing and origin of the volume at the current scale (no generation). */
   void GetDimensions(int dims[3]) const;
   void GetSpacing(double spacing[3]) const;
@@ -129,6 +141,7 @@ protected:
 
   std::string Scene;
   double ResolutionScale = 1.0;
+  int ObjectCount = 0;
   double LastGenerationTime = 0.0;
   double LightDirection[3] = { 0.0, 0.0, 1.0 };
   vtkSmartPointer<vtkImageData> Volume;

@@ -201,6 +201,81 @@ TEST(StandardScene, SetSceneAndScaleDropTheCache)
   EXPECT_EQ(dims[0], 16);
 }
 
+namespace
+{
+// Groups of 26-connected non-zero voxels (the sparse scene's objects do not touch).
+int CountObjects(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  const auto* v = static_cast<const unsigned char*>(image->GetScalarPointer());
+  const long n = static_cast<long>(dims[0]) * dims[1] * dims[2];
+  std::vector<char> seen(static_cast<size_t>(n), 0);
+  int objects = 0;
+  std::vector<long> stack;
+  for (long start = 0; start < n; ++start)
+  {
+    if (!v[start] || seen[start])
+    {
+      continue;
+    }
+    ++objects;
+    seen[start] = 1;
+    stack.push_back(start);
+    while (!stack.empty())
+    {
+      const long at = stack.back();
+      stack.pop_back();
+      const int x = static_cast<int>(at % dims[0]), y = static_cast<int>((at / dims[0]) % dims[1]),
+                z = static_cast<int>(at / (static_cast<long>(dims[0]) * dims[1]));
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+          {
+            const int i = x + dx, j = y + dy, k = z + dz;
+            if (i < 0 || j < 0 || k < 0 || i >= dims[0] || j >= dims[1] || k >= dims[2])
+            {
+              continue;
+            }
+            const long next = i + dims[0] * (j + static_cast<long>(dims[1]) * k);
+            if (v[next] && !seen[next])
+            {
+              seen[next] = 1;
+              stack.push_back(next);
+            }
+          }
+    }
+  }
+  return objects;
+}
+}
+
+TEST(StandardScene, SparseObjectCountKeepsTheFirstObjectsOrAddsMore)
+{
+  vtkNew<vtkDeepShadowStandardScene> scene;
+  scene->SetScene("sparse");
+  vtkSmartPointer<vtkImageData> all = scene->GetVolume();
+  EXPECT_EQ(CountObjects(all), 19);
+  const auto* full = static_cast<const unsigned char*>(all->GetScalarPointer());
+  for (int count : { 1, 4, 12, 24 })
+  {
+    scene->SetObjectCount(count);
+    EXPECT_EQ(scene->GetObjectCount(), count);
+    vtkImageData* some = scene->GetVolume();
+    EXPECT_EQ(CountObjects(some), count) << count;
+    // The objects kept are the scene's own, voxel for voxel.
+    const auto* v = static_cast<const unsigned char*>(some->GetScalarPointer());
+    long differ = 0;
+    for (vtkIdType i = 0; i < some->GetNumberOfPoints(); ++i)
+    {
+      differ += (v[i] != 0 && count <= 19 && v[i] != full[i]) || (count > 19 && full[i] != 0 && v[i] != full[i]) ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0) << count;
+  }
+  scene->SetObjectCount(99);
+  EXPECT_EQ(scene->GetObjectCount(), vtkDeepShadowStandardScene::GetMaxObjectCount());
+}
+
 //------------------------------------------------------------------------------
 class EachScene : public ::testing::TestWithParam<std::string>
 {
