@@ -2,7 +2,7 @@
 # Build and frame time of the deep shadow maps against the sparse scene's object count and
 # the map size (issue "large and sparse scenes"): for each count (--objects) and size S, one
 # S^2 map (dsm), the same with chunked node memory (dsm:chunk-nodes=4), and clustered maps of
-# the same texels (dsm-clustered, 4 maps of (S/2)^2). Prints a Markdown table; the numbers
+# the same texels (dsm-clustered, at most 4 maps of (S/2)^2). Prints a Markdown table; the numbers
 # come from `deepshadow shadow-bench` (build: a light move's rebuild; frame: a camera move's
 # frame over the unshadowed one of the same run).
 #   scripts/scaling.sh BUILD_DIR [COUNTS] [SIZES]   # defaults "1 4 12 24" and "256 512 1024"
@@ -36,7 +36,7 @@ for r in rows:
     spec = r["technique"]
     size = int(re.search(r"shadow-map-size=(\d+)", spec).group(1))
     name = spec.split(":")[0] + (":chunk-nodes=4" if "chunk-nodes" in spec else "")
-    maps = f"4 x {size}^2" if name == "dsm-clustered" else f"{size}^2"
+    maps = f"{r['clusters']} x {size}^2" if name == "dsm-clustered" else f"{size}^2"
     print(f"| {sys.argv[2]} | {maps} | {name} | {r['build_ms']:.0f} | {r['camera_ratio']:.2f} | "
           f"{r['shadow_bytes'] / 1048576:.1f} | {r['rmse']:.5f} |")
 PY

@@ -10,7 +10,7 @@ work=$2
 rm -rf "$work"
 mkdir -p "$work"
 scenes=box,bucky,rods,clouds,spheres,head,sparse,hybrid-ground,hybrid-glass,hybrid-rod,hybrid-smoke,hybrid-sparse
-techniques=rays,rays-cached,rays-color,dsm,dsm-cached,dsm-color,dsm-clustered,dsm3,dsm3-cached,cssm,cssm-cached
+techniques=rays,rays-cached,rays-color,dsm,dsm:chunk-nodes=4,dsm-cached,dsm-color,dsm-clustered,dsm3,dsm3-cached,cssm,cssm-cached
 if ! "$tool" report --out "$work" --size 64x64 --error-size 64x64 --frames 0 --scenes "$scenes" \
   --techniques "$techniques" 2> "$work/progress.txt"; then
   echo "FAILED: the report did not run"; tail -3 "$work/progress.txt"; exit 1
@@ -18,8 +18,8 @@ fi
 csv="$work/results.csv"
 column=$(head -1 "$csv" | tr ',' '\n' | grep -n '^worse_than_none$' | cut -d: -f1)
 rows=$(($(wc -l < "$csv") - 1))
-if [ -z "$column" ] || [ "$rows" -ne 144 ]; then
-  echo "FAILED: expected 144 rows with a worse_than_none column, got $rows"; exit 1
+if [ -z "$column" ] || [ "$rows" -ne 156 ]; then
+  echo "FAILED: expected 156 rows with a worse_than_none column, got $rows"; exit 1
 fi
 defects=$(awk -F, -v c="$column" 'NR > 1 && $c == 1 { print $1 ": " $4 " RMSE " $18 }' "$csv")
 if [ -n "$defects" ]; then

@@ -85,7 +85,6 @@ public:
   std::vector<double> Bound;
   std::vector<long long> Used;
   std::vector<bool> Cut; // the pool ran out even at a bound of 1
-  vtkOpenGLRenderWindow* Window = nullptr;
   std::string SaidLimit; // what the GL allows of the pool, said once while it lasts
   std::string SaidShort; // the same for a pool too small for the nodes
 };
@@ -128,7 +127,6 @@ bool vtkDeepShadowDeepShadowMapTechnique::Hooks::AllocateStructures(
   }
   vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
   Chunks& chunks = *self->Pool;
-  chunks.Window = context.Window;
   if (self->ChunkNodes == 0)
   {
     chunks.Pool.Release();

@@ -65,6 +65,25 @@ class TestPythonTechniques(Testing.vtkTest):
         scene.render()
         self.assertEqual(tuple(technique.GetClusterCounts()), (0,))
 
+    def testChunkedNodeMemory(self):
+        # SetChunkNodes: the picture of fixed layers that hold every node, every node kept,
+        # the memory of the chunks in use.
+        technique = vtkDeepShadowTechnique.NewFromName("dsm")
+        technique.SetLayers(64)
+        scene = RodsScene(technique=technique)
+        layers = scene.render()
+        self.assertEqual(technique.GetTexelsOverflowed(), 0)
+        layer_bytes = technique.GetShadowBytes()
+        technique.SetLayers(8)
+        technique.SetChunkNodes(4)
+        chunked = scene.render()
+        self.assertEqual(scene.mapper.GetLastError(), "")
+        self.assertEqual(technique.GetTexelsOverflowed(), 0)
+        self.assertGreater(technique.GetChunksUsed(), 0)
+        self.assertEqual(technique.GetChunkBytes(), 40)
+        self.assertLess(technique.GetShadowBytes(), layer_bytes / 4)
+        self.assertTrue((chunked == layers).all())
+
     def testSetGetAndObservers(self):
         for cls in TECHNIQUE_CLASSES:
             technique = cls()
