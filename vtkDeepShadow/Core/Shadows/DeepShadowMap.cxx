@@ -227,9 +227,9 @@ CompressedVisibility CompressVisibility(
   return result;
 }
 
-glm::dvec3 EvaluateVisibility(const VisibilityNode* nodes, int count, double depth)
+int NodesAtOrBefore(const VisibilityNode* nodes, int count, double depth)
 {
-  // first = how many nodes lie at or before `depth` (the GLSL twin searches the same way).
+  // A binary search (the GLSL twins search the same way).
   int first = 0, remaining = count;
   while (remaining > 0)
   {
@@ -244,20 +244,30 @@ glm::dvec3 EvaluateVisibility(const VisibilityNode* nodes, int count, double dep
       remaining = half;
     }
   }
+  return first;
+}
+
+glm::dvec3 InterpolateNodes(const VisibilityNode& a, const VisibilityNode& b, double depth)
+{
+  const glm::dvec3 va(a.Value[0], a.Value[1], a.Value[2]);
+  const glm::dvec3 vb(b.Value[0], b.Value[1], b.Value[2]);
+  const double f = (depth - a.Depth) / (static_cast<double>(b.Depth) - a.Depth);
+  return va + f * (vb - va);
+}
+
+glm::dvec3 EvaluateVisibility(const VisibilityNode* nodes, int count, double depth)
+{
+  const int first = NodesAtOrBefore(nodes, count, depth);
   if (first == 0)
   {
     return glm::dvec3(1.0);
   }
   const VisibilityNode& a = nodes[first - 1];
-  const glm::dvec3 va(a.Value[0], a.Value[1], a.Value[2]);
   if (first == count)
   {
-    return va;
+    return glm::dvec3(a.Value[0], a.Value[1], a.Value[2]);
   }
-  const VisibilityNode& b = nodes[first];
-  const glm::dvec3 vb(b.Value[0], b.Value[1], b.Value[2]);
-  const double f = (depth - a.Depth) / (static_cast<double>(b.Depth) - a.Depth);
-  return va + f * (vb - va);
+  return InterpolateNodes(a, nodes[first], depth);
 }
 
 DeepShadowMap::DeepShadowMap(const ShadowParameters& parameters, const ShadowCaster& caster,

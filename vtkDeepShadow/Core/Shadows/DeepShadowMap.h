@@ -113,6 +113,10 @@ struct CompressedVisibility
 VTKDEEPSHADOWCORE_EXPORT CompressedVisibility CompressVisibility(
   const VisibilitySamples& samples, int channels, double epsilon, int maxNodes);
 
+/** How many of `count` nodes in increasing depth lie at or before `depth`. */
+VTKDEEPSHADOWCORE_EXPORT int NodesAtOrBefore(const VisibilityNode* nodes, int count, double depth);
+/** Linear between node a (at or before `depth`) and node b (beyond it). */
+VTKDEEPSHADOWCORE_EXPORT glm::dvec3 InterpolateNodes(const VisibilityNode& a, const VisibilityNode& b, double depth);
 /** V'(depth) from `count` nodes in increasing depth (unused trailing nodes at NoHit are fine). */
 VTKDEEPSHADOWCORE_EXPORT glm::dvec3 EvaluateVisibility(
   const VisibilityNode* nodes, int count, double depth);

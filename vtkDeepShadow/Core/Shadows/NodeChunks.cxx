@@ -94,20 +94,7 @@ glm::dvec3 NodeChunks::Evaluate(size_t texel, double depth) const
       continue;
     }
     // The first node of this chunk beyond depth brackets it with the one before.
-    int first = 0, remaining = this->Nodes;
-    while (remaining > 0)
-    {
-      const int half = remaining / 2;
-      if (static_cast<double>(nodes[first + half].Depth) <= depth)
-      {
-        first += half + 1;
-        remaining -= half + 1;
-      }
-      else
-      {
-        remaining = half;
-      }
-    }
+    const int first = NodesAtOrBefore(nodes, this->Nodes, depth);
     const VisibilityNode* a = first > 0 ? &nodes[first - 1] : before;
     if (!a)
     {
@@ -117,9 +104,7 @@ glm::dvec3 NodeChunks::Evaluate(size_t texel, double depth) const
     {
       return ValueOf(*a);
     }
-    const VisibilityNode& b = nodes[first];
-    const double f = (depth - a->Depth) / (static_cast<double>(b.Depth) - a->Depth);
-    return ValueOf(*a) + f * (ValueOf(b) - ValueOf(*a));
+    return InterpolateNodes(*a, nodes[first], depth);
   }
 }
 
