@@ -137,7 +137,7 @@ long long ChunkPoolCapacity(size_t texels, int chunkNodes, bool colored, int lay
   const double bytes = megabytes > 0.0 ? megabytes * 1048576.0
                                        : static_cast<double>(texels) * std::max(1, layers) * (colored ? 16 : 8);
   const double chunks = std::floor(bytes / static_cast<double>(chunk));
-  return static_cast<long long>(std::clamp(chunks, 1.0, 16777216.0));
+  return static_cast<long long>(std::clamp(chunks, 1.0, static_cast<double>(MaxPoolChunks)));
 }
 
 double ChunkedBuildBound(double bound, long long requested, long long capacity)

@@ -72,9 +72,14 @@ private:
 VTKDEEPSHADOWCORE_EXPORT long long ChunkBytes(int chunkNodes, bool colored);
 
 /**
+ * The most chunks a pool holds (all lights together on the GPU): the GPU stores a texel's
+ * start as the float 2 x chunk + 1 (whether a second chunk follows), exact below 2^24.
+ */
+constexpr long long MaxPoolChunks = 1LL << 23;
+
+/**
  * The pool's chunks for one light of `texels` texels: `megabytes` of them, or with 0 as many
- * bytes as `layers` fixed layers would take. At least 1, at most 2^24 (chunk numbers are
- * stored as floats, exact below it).
+ * bytes as `layers` fixed layers would take. At least 1, at most MaxPoolChunks.
  */
 VTKDEEPSHADOWCORE_EXPORT long long ChunkPoolCapacity(
   size_t texels, int chunkNodes, bool colored, int layers, double megabytes);

@@ -15,8 +15,8 @@ namespace deepshadow
 
 namespace
 {
-// Chunk numbers are stored as floats (the start table is R32F, links are entries): exact below.
-constexpr long long MaxChunks = 1LL << 24;
+// Chunk numbers are stored as floats (deepshadow::MaxPoolChunks says why).
+constexpr long long MaxChunks = MaxPoolChunks;
 }
 
 bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, int chunkNodes, bool colored,

@@ -25,7 +25,7 @@ public:
   /**
    * Room for one region per entry of `limits` (each light's limit, in chunks) of chunks of
    * `chunkNodes` nodes. The GL may allow less than the limits (chunk numbers, stored as
-   * floats, stay below 2^24 in all; a buffer texture has GL_MAX_TEXTURE_BUFFER_SIZE entries):
+   * floats, stay below MaxPoolChunks in all; a buffer texture has GL_MAX_TEXTURE_BUFFER_SIZE entries):
    * `problem` then says so and the limits are lowered. `remade` when the buffer was (re)made:
    * every map must be built again. False, with `problem` set, when the GL refused it.
    */

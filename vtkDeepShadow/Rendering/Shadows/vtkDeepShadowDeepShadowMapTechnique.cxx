@@ -172,7 +172,7 @@ void vtkDeepShadowDeepShadowMapTechnique::Hooks::SetSlotBuildUniforms(deepshadow
   }
   const Chunks& chunks = *self->Pool;
   sink.Set("u_epsilon", static_cast<float>(chunks.Bound[static_cast<size_t>(slot)]));
-  // Unsigned in the shader; the pool keeps chunk numbers below 2^24.
+  // Unsigned in the shader; the pool keeps chunk numbers below MaxPoolChunks.
   sink.Set("u_chunkBase", static_cast<int>(chunks.Pool.Base(slot)));
   sink.Set("u_chunkCapacity", static_cast<int>(chunks.Pool.Capacity(slot)));
   sink.Set("u_poolSlot", slot);

@@ -228,7 +228,7 @@ TEST(NodeChunks, PoolCapacity)
   EXPECT_EQ(ChunkPoolCapacity(1000, 4, true, 8, 0.0), 1000 * 128 / 80);
   EXPECT_EQ(ChunkPoolCapacity(1000, 4, false, 8, 1.0), 1048576 / 40);
   EXPECT_EQ(ChunkPoolCapacity(1, 64, false, 1, 0.0), 1);
-  EXPECT_EQ(ChunkPoolCapacity(1, 4, false, 1, 65536.0), 16777216);
+  EXPECT_EQ(ChunkPoolCapacity(1, 4, false, 1, 65536.0), MaxPoolChunks);
 }
 
 namespace
