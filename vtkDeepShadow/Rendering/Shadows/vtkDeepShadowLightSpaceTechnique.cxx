@@ -353,7 +353,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   maps.Clusters.DeactivateLabels();
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, maps.Format);
   Internals::EndBuildPass(self, context);
-  return true;
+  // A build asked for again may fail (the GL could not grow the node pool).
+  return self->LastError.empty();
 }
 
 bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::ShadowContext& context,
