@@ -323,7 +323,9 @@ void DeepShadowMap::BuildChunked(const ShadowParameters& parameters, double step
     texels, parameters.ChunkNodes, parameters.Colored, this->Layers, parameters.PoolMegabytes);
   for (double bound = parameters.Epsilon; bound >= 0.0;)
   {
-    auto chunks = std::make_unique<NodeChunks>(texels, parameters.ChunkNodes, capacity);
+    // Compressed first, then stored: the pool's memory is then what the texels ask for,
+    // whatever its limit.
+    std::vector<std::vector<VisibilityNode>> texelNodes(texels);
     DeepShadowMapStatistics s;
     long nodesTotal = 0;
     std::mutex statisticsMutex;
@@ -334,16 +336,25 @@ void DeepShadowMap::BuildChunked(const ShadowParameters& parameters, double step
       {
         return;
       }
-      const CompressedVisibility compressed =
+      CompressedVisibility compressed =
         CompressVisibility(samples, this->Channels, bound, std::numeric_limits<int>::max());
-      const bool stored = chunks->Store(this->Texel(f, x, y), compressed.Nodes);
       const std::lock_guard<std::mutex> lock(statisticsMutex);
       ++s.TexelsHit;
       nodesTotal += compressed.NodesNeeded;
       s.NodesMax = std::max(s.NodesMax, compressed.NodesNeeded);
-      s.TexelsOverflowed += stored ? 0 : 1;
       s.EpsilonMax = bound;
+      texelNodes[this->Texel(f, x, y)] = std::move(compressed.Nodes);
     });
+    long long expected = 0;
+    for (const auto& nodes : texelNodes)
+    {
+      expected += NodeChunks::ChunksFor(nodes, parameters.ChunkNodes);
+    }
+    auto chunks = std::make_unique<NodeChunks>(texels, parameters.ChunkNodes, capacity, expected);
+    for (size_t texel = 0; texel < texels; ++texel)
+    {
+      s.TexelsOverflowed += chunks->Store(texel, texelNodes[texel]) ? 0 : 1;
+    }
     s.NodesAverage = s.TexelsHit > 0 ? static_cast<double>(nodesTotal) / s.TexelsHit : 0.0;
     s.ChunksUsed = chunks->Used();
     s.ChunksCapacity = capacity;

@@ -17,7 +17,7 @@ glm::dvec3 ValueOf(const VisibilityNode& node)
 
 }
 
-NodeChunks::NodeChunks(size_t texels, int chunkNodes, long long capacity)
+NodeChunks::NodeChunks(size_t texels, int chunkNodes, long long capacity, long long expected)
   : Nodes(chunkNodes)
   , Limit(capacity)
   , Start(texels, NoChunk)
@@ -26,18 +26,26 @@ NodeChunks::NodeChunks(size_t texels, int chunkNodes, long long capacity)
   {
     throw std::invalid_argument("NodeChunks needs chunkNodes >= 1 and capacity >= 0");
   }
-  this->Next.assign(static_cast<size_t>(capacity), NoChunk);
-  this->Entries.assign(static_cast<size_t>(capacity) * static_cast<size_t>(chunkNodes),
-    VisibilityNode{ NoHit, { 1.0f, 1.0f, 1.0f } });
+  const size_t held = static_cast<size_t>(expected < 0 ? capacity : std::min(capacity, expected));
+  this->Next.assign(held, NoChunk);
+  this->Entries.assign(held * static_cast<size_t>(chunkNodes), VisibilityNode{ NoHit, { 1.0f, 1.0f, 1.0f } });
+}
+
+long long NodeChunks::ChunksFor(const std::vector<VisibilityNode>& nodes, int chunkNodes)
+{
+  // One node of value 1 (a ray through empty space, or lit all along) is V' = 1: no chunk.
+  if (nodes.size() == 1 && nodes[0].Value == std::array<float, 3>{ { 1.0f, 1.0f, 1.0f } })
+  {
+    return 0;
+  }
+  return (static_cast<long long>(nodes.size()) + chunkNodes - 1) / chunkNodes;
 }
 
 bool NodeChunks::Store(size_t texel, const std::vector<VisibilityNode>& nodes)
 {
   // As the GPU build emits them: a chunk is asked for as a node starts one, and once the
   // pool has run out the texel only counts what it would have asked for.
-  // One node of value 1 (a ray through empty space, or lit all along) is V' = 1: no chunk.
-  if (nodes.empty() ||
-    (nodes.size() == 1 && nodes[0].Value == std::array<float, 3>{ { 1.0f, 1.0f, 1.0f } }))
+  if (ChunksFor(nodes, this->Nodes) == 0)
   {
     return true;
   }
@@ -53,6 +61,10 @@ bool NodeChunks::Store(size_t texel, const std::vector<VisibilityNode>& nodes)
       {
         granted = false;
         continue;
+      }
+      if (asked >= static_cast<long long>(this->Next.size()))
+      {
+        throw std::logic_error("NodeChunks: more chunks granted than the memory expected for them");
       }
       const auto next = static_cast<std::int32_t>(asked);
       (chunk == NoChunk ? this->Start[texel] : this->Next[static_cast<size_t>(chunk)]) = next;

@@ -37,8 +37,15 @@ class VTKDEEPSHADOWCORE_EXPORT NodeChunks
 public:
   static constexpr std::int32_t NoChunk = -1;
 
-  /** A pool of at most `capacity` chunks of `chunkNodes` (>= 1) nodes for `texels` texels. */
-  NodeChunks(size_t texels, int chunkNodes, long long capacity);
+  /**
+   * A pool of at most `capacity` chunks of `chunkNodes` (>= 1) nodes for `texels` texels.
+   * Memory is taken for `expected` chunks (at most `capacity`; -1: all of it): the chunks
+   * the texels will ask for (ChunksFor), so that a large limit costs nothing unused.
+   */
+  NodeChunks(size_t texels, int chunkNodes, long long capacity, long long expected = -1);
+
+  /** The chunks a texel with these nodes asks for (none for one node of value 1). */
+  static long long ChunksFor(const std::vector<VisibilityNode>& nodes, int chunkNodes);
 
   /**
    * Stores a texel's nodes (in increasing depth), a chunk each `ChunkNodes` nodes, the last

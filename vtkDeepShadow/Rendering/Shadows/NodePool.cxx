@@ -19,8 +19,8 @@ namespace
 constexpr long long MaxChunks = MaxPoolChunks;
 }
 
-bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, int chunkNodes, bool colored,
-  bool& remade, std::string& problem)
+bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, long long start,
+  int chunkNodes, bool colored, bool& remade, std::string& problem)
 {
   remade = false;
   this->Window = window;
@@ -48,8 +48,7 @@ bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> lim
   }
   this->Nodes = chunkNodes;
   this->Colored = colored;
-  // A node per texel's worth (an eighth of the default limit) to start; builds grow it.
-  this->Region = std::min(largest, std::max<long long>(64, largest / 8));
+  this->Region = std::min(largest, std::max<long long>(64, start));
   remade = true;
   return this->Allocate(problem);
 }

@@ -5,8 +5,9 @@
 // with an atomic counter per slot; the lookup reads it as a buffer texture (u_shadowNodes).
 //
 // A light may use at most its limit (ChunkPoolCapacity, as the twin), but the regions start
-// smaller and grow to what a build asked for: a sparse scene then holds the memory its nodes
-// need, not its limit. Growing moves every region, so every light's map is built again.
+// smaller, whatever the limit, and grow to what a build asked for: a sparse scene then holds
+// the memory its nodes need, not its limit. Growing moves every region, so every light's map
+// is built again.
 #ifndef vtkDeepShadowNodePool_h
 #define vtkDeepShadowNodePool_h
 
@@ -27,10 +28,11 @@ public:
    * `chunkNodes` nodes. The GL may allow less than the limits (chunk numbers, stored as
    * floats, stay below MaxPoolChunks in all; a buffer texture has GL_MAX_TEXTURE_BUFFER_SIZE entries):
    * `problem` then says so and the limits are lowered. `remade` when the buffer was (re)made:
-   * every map must be built again. False, with `problem` set, when the GL refused it.
+   * every map must be built again. False, with `problem` set, when the GL refused it. A new
+   * buffer's regions start at `start` chunks (at most the limits): builds grow them.
    */
-  bool Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, int chunkNodes, bool colored,
-    bool& remade, std::string& problem);
+  bool Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, long long start, int chunkNodes,
+    bool colored, bool& remade, std::string& problem);
 
   /** Where slot `slot`'s chunks start, and how many it may take in this build. */
   long long Base(int slot) const;

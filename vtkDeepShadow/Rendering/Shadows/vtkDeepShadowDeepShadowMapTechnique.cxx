@@ -132,16 +132,20 @@ bool vtkDeepShadowDeepShadowMapTechnique::Hooks::AllocateStructures(
     chunks.Pool.Release();
     return true;
   }
-  // Each light's limit, as the twin's (ChunkPoolCapacity over its faces' texels).
+  // Each light's limit, as the twin's (ChunkPoolCapacity over its faces' texels). A new pool
+  // starts at an eighth of the automatic limit (a node per texel's worth), whatever the limit.
   std::vector<long long> limits;
+  long long start = 0;
   for (int slot = 0; slot < slots.Count(); ++slot)
   {
     const size_t texels = static_cast<size_t>(self->GetFaceCount(slot)) * self->MapSize * self->MapSize;
     limits.push_back(deepshadow::ChunkPoolCapacity(texels, self->ChunkNodes, self->Colored, self->Layers, self->PoolMegabytes));
+    start = std::max(start, deepshadow::ChunkPoolCapacity(texels, self->ChunkNodes, self->Colored, self->Layers, 0.0) / 8);
   }
   bool remade = false;
   std::string problem;
-  const bool made = chunks.Pool.Reserve(context.Window, limits, self->ChunkNodes, self->Colored, remade, problem);
+  const bool made =
+    chunks.Pool.Reserve(context.Window, limits, start, self->ChunkNodes, self->Colored, remade, problem);
   if (!made)
   {
     self->LastError = problem;
