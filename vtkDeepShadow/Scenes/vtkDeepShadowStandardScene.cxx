@@ -255,7 +255,7 @@ void vtkDeepShadowStandardScene::SetResolutionScale(double scale)
 
 void vtkDeepShadowStandardScene::SetObjectCount(int count)
 {
-  count = std::clamp(count, 0, scenes::sparse::Objects + scenes::sparse::ExtraObjects);
+  count = std::clamp(count, 0, GetMaxObjectCount());
   if (count != this->ObjectCount)
   {
     this->ObjectCount = count;
