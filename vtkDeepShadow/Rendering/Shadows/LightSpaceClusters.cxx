@@ -136,15 +136,15 @@ void LightSpaceClusters::SetBuildUniforms(ComputeProgram& build, int slot, int f
   build.Set("u_clusterLabels", this->Labels[static_cast<size_t>(slot)]->GetTextureUnit());
 }
 
-std::string LightSpaceClusters::LookupDefines(const std::vector<std::vector<ShadowMapFace>>& faces) const
+std::string LightSpaceClusters::LookupDefines() const
 {
   if (!this->Any())
   {
     return "";
   }
-  // An unclustered light that needs a cube of faces keeps the unclustered lookup beside the loop.
-  const bool cubes = std::any_of(faces.begin(), faces.end(), [](const auto& f) { return f.size() == 6; });
-  return std::string("//@Dec\n#define LIGHT_SPACE_CLUSTERS\n") + (cubes ? "#define LIGHT_SPACE_CUBES_TOO\n" : "");
+  // An unclustered light that needs a cube of faces keeps the unclustered lookup beside the
+  // loop (LIGHT_SPACE_CUBES, from the technique's face kinds).
+  return "//@Dec\n#define LIGHT_SPACE_CLUSTERS\n";
 }
 
 void LightSpaceClusters::SetLookupUniforms(UniformSink& sink, const std::vector<std::vector<ShadowMapFace>>& faces) const

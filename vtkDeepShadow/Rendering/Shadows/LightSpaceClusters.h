@@ -53,8 +53,8 @@ public:
   void DeactivateLabels();
   void SetBuildUniforms(ComputeProgram& build, int slot, int face) const;
 
-  /** The lookup's defines for the lights' `faces`, and its uniforms. */
-  std::string LookupDefines(const std::vector<std::vector<ShadowMapFace>>& faces) const;
+  /** The lookup's define (none while no light is clustered), and its uniforms. */
+  std::string LookupDefines() const;
   void SetLookupUniforms(UniformSink& sink, const std::vector<std::vector<ShadowMapFace>>& faces) const;
 
   void Release(vtkWindow* window);

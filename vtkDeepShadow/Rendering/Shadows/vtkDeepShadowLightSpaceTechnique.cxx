@@ -83,6 +83,30 @@ int BytesPerTexel(unsigned int format)
       return 16;
   }
 }
+
+// LightSpace.glsl with the kinds of face the lights use defined, so that only their code is
+// compiled; before any face exists, every kind.
+std::string LightSpaceSource(const std::vector<std::vector<deepshadow::ShadowMapFace>>& faces)
+{
+  bool perspective = false, orthographic = false, cubes = false;
+  for (const auto& lightFaces : faces)
+  {
+    cubes = cubes || lightFaces.size() == 6;
+    for (const deepshadow::ShadowMapFace& face : lightFaces)
+    {
+      (face.Perspective ? perspective : orthographic) = true;
+    }
+  }
+  if (!perspective && !orthographic)
+  {
+    perspective = orthographic = cubes = true;
+  }
+  std::string defines;
+  defines += perspective ? "#define LIGHT_SPACE_PERSPECTIVE\n" : "";
+  defines += orthographic ? "#define LIGHT_SPACE_ORTHOGRAPHIC\n" : "";
+  defines += cubes ? "#define LIGHT_SPACE_CUBES\n" : "";
+  return "//@Dec\n" + defines + vtkDeepShadowLightSpace;
+}
 }
 
 vtkDeepShadowLightSpaceTechnique::vtkDeepShadowLightSpaceTechnique()
@@ -371,7 +395,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
   if (!rebuilt.empty() || !maps.Totals || maps.TotalsLayers != layers)
   {
     // This brick's total per texel: the technique's own lookup beyond the texel ray's end.
-    const std::string lookup = "//@Dec\n" + std::string(vtkDeepShadowLightSpace) + self->GetMapLookupSource();
+    const std::string lookup = LightSpaceSource(maps.Faces) + self->GetMapLookupSource();
     if (!Internals::BeginBuildPass(self, maps.TotalsPass, vtkDeepShadowBrickTotalsCS, context, "Lookup", lookup))
     {
       return false;
@@ -429,8 +453,8 @@ std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
   const std::string upstream =
     this->LightMaps->Bricks.Exchanging() ? "//@Dec\n#define LIGHT_SPACE_UPSTREAM\n" : "";
   // Clustered faces: LightSpace.glsl loops over a light's faces.
-  const std::string clusters = this->LightMaps->Clusters.LookupDefines(this->LightMaps->Faces);
-  return upstream + clusters + vtkDeepShadowLightSpace + this->GetMapLookupSource();
+  const std::string clusters = this->LightMaps->Clusters.LookupDefines();
+  return upstream + clusters + LightSpaceSource(this->LightMaps->Faces) + this->GetMapLookupSource();
 }
 
 void vtkDeepShadowLightSpaceTechnique::SetBrickExchange(vtkDeepShadowBrickExchange* exchange)

@@ -3,6 +3,11 @@
 // mapVisibility() there (ShadowMapFace::Project, ShadowMapFaceFor and
 // LightSpaceShadow::Visibility / SurfaceVisibility in Core/Shadows/LightSpace.cxx are the CPU
 // twins). Depths are linear, from the face's near boundary.
+//
+// Only the kinds of face the lights use are compiled (LightSpaceFaceDefines in
+// vtkDeepShadowLightSpaceTechnique.cxx defines LIGHT_SPACE_PERSPECTIVE, _ORTHOGRAPHIC and
+// _CUBES): llvmpipe runs both sides of every branch, masked, so a branch no light takes
+// still costs (the cube and perspective code cost 0.11 of an unshadowed frame on the box).
 //@Dec
 const int MaxShadowLights = 4;
 uniform sampler2DArray u_shadowMap;   // layer ((slot * faces per light) + face) * layers per face + k
@@ -53,13 +58,26 @@ struct LightSpaceFace
   float extent, near;
 };
 
+// Whether the face is perspective; a constant where only one kind is compiled, so the other
+// kind's code folds away.
+bool lightSpacePerspective(LightSpaceFace face)
+{
+#if defined(LIGHT_SPACE_PERSPECTIVE) && defined(LIGHT_SPACE_ORTHOGRAPHIC)
+  return face.perspective;
+#elif defined(LIGHT_SPACE_PERSPECTIVE)
+  return true;
+#else
+  return false;
+#endif
+}
+
 // Texel position and depth of point d (relative to the face's origin) on a face; false
 // behind it.
 bool lightSpaceLocate(LightSpaceFace face, vec3 d, out vec3 at)
 {
   float z = dot(d, face.forward);
   float u, v;
-  if (face.perspective)
+  if (lightSpacePerspective(face))
   {
     if (z <= 0.0)
     {
@@ -87,7 +105,7 @@ bool lightSpaceLocate(LightSpaceFace face, vec3 d, out vec3 at)
 // two steps of a texel's width along it located on the same face.
 vec2 lightSpaceReceiverSlope(LightSpaceFace face, vec3 d, vec3 at, vec3 normal)
 {
-  float z = face.perspective ? dot(d, face.forward) : 1.0;
+  float z = lightSpacePerspective(face) ? dot(d, face.forward) : 1.0;
   float texel = 2.0 * z * face.extent / u_shadowSize;
   vec3 e1 = normalize(cross(normal, abs(normal.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
   vec3 e2 = cross(normal, e1);
@@ -129,7 +147,7 @@ vec3 lightSpaceUpstream(int layer, vec2 xy)
 #ifdef LIGHT_SPACE_CLUSTERS
 // Clustered faces (deepshadow::ClusterFaces): face f of slot s at index s * MaxClusterFaces + f.
 // A light that is not clustered has its one face there, unwindowed (LightSpaceShadow's
-// unclustered lookup); one that needs a cube goes the unclustered way (LIGHT_SPACE_CUBES_TOO).
+// unclustered lookup); one that needs a cube goes the unclustered way (LIGHT_SPACE_CUBES).
 const int MaxClusterFaces = 8;
 uniform int u_shadowClusters[MaxShadowLights]; // faces of the light in the loop; 0: a cube
 uniform int u_shadowClusterWindowed[MaxShadowLights * MaxClusterFaces]; // 0: an unclustered face
@@ -176,18 +194,19 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
 #ifdef LIGHT_SPACE_CLUSTERS
   // One path for every light (a light with one unclustered face is a single whole face):
   // two inlined lookups cost llvmpipe 0.3 of an unshadowed frame even where one never runs.
-#ifdef LIGHT_SPACE_CUBES_TOO
+#ifdef LIGHT_SPACE_CUBES
   if (u_shadowClusters[slot] > 0)
 #endif
   {
     return lightSpaceClusters(slot, position, receiverNormal);
   }
 #endif
-#if !defined(LIGHT_SPACE_CLUSTERS) || defined(LIGHT_SPACE_CUBES_TOO)
+#if !defined(LIGHT_SPACE_CLUSTERS) || defined(LIGHT_SPACE_CUBES)
   LightSpaceFace face = LightSpaceFace(u_shadowPerspective[slot] != 0, u_shadowOrigin[slot],
     u_shadowForward[slot], u_shadowRight[slot], u_shadowUp[slot], u_shadowExtent[slot], u_shadowNear[slot]);
   vec3 d = position - face.origin;
   int cubeFace = 0;
+#ifdef LIGHT_SPACE_CUBES
   if (u_shadowFaceCount[slot] == 6)
   {
     // Cube faces in the order +x, -x, +y, -y, +z, -z.
@@ -211,6 +230,7 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
     face.right = normalize(cross(face.forward, helper));
     face.up = cross(face.right, face.forward);
   }
+#endif
   vec3 at;
   if (!lightSpaceLocate(face, d, at))
   {
