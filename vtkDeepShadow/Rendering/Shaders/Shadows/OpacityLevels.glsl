@@ -9,8 +9,7 @@ uniform vec3 u_levels;
 float levelsVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
-  texel = lightSpaceClamp(texel);
-  vec4 t = texelFetch(u_shadowMap, ivec3(texel, layer), 0);
+  vec4 t = lightSpaceTexel(texel, layer);
   float opacity;
   if (depth < t.x)
   {
@@ -31,7 +30,7 @@ float levelsVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 s
   float visibility = 1.0 - min(opacity, t.w);
   if (u_shadowLayersPerFace > 1)
   {
-    vec4 steps = texelFetch(u_shadowMap, ivec3(texel, layer + 1), 0);
+    vec4 steps = lightSpaceTexel(texel, layer + 1);
     visibility *= depth < steps.x ? 1.0 : depth < steps.z ? steps.y : steps.w;
   }
   return visibility;

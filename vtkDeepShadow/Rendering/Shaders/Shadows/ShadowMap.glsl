@@ -7,7 +7,7 @@ uniform float u_shadowBias; // world units
 float shadowLit(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
-  return depth <= texelFetch(u_shadowMap, ivec3(lightSpaceClamp(texel), layer), 0).r ? 1.0 : 0.0;
+  return depth <= lightSpaceTexel(texel, layer).r ? 1.0 : 0.0;
 }
 
 float filteredShadow(int layer, vec2 xy, float depth, vec2 slope)

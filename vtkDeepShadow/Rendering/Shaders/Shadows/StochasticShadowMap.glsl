@@ -10,11 +10,10 @@ vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
   for (int k = 0; k < CSSM_OFFSETS; ++k)
   {
     ivec2 offsetTexel = nearest + CSSM_OFFSET[k];
-    ivec2 texel = lightSpaceClamp(offsetTexel);
     vec3 texelDepth = vec3(lightSpaceDepthAt(vec2(offsetTexel), xy, depth, slope));
     for (int photon = 0; photon < u_shadowLayersPerFace; ++photon)
     {
-      vec3 stop = texelFetch(u_shadowMap, ivec3(texel, layer + photon), 0).rgb;
+      vec3 stop = lightSpaceTexel(offsetTexel, layer + photon).rgb;
       lit += vec3(greaterThan(stop, texelDepth));
     }
   }

@@ -186,7 +186,7 @@ bool LightSpaceTechniques(Scene& s)
   vtkNew<vtkDeepShadowOpacityLevelsTechnique> levels;
   vtkNew<vtkDeepShadowStochasticShadowMapTechnique> cssm;
   dsmColor->ColoredOn();
-  const char* lookups[] = { "filteredShadow", "dsmTexel", "levelsVisibility", "CSSM_OFFSET",
+  const char* lookups[] = { "filteredShadow", "dsmSearchStep", "levelsVisibility", "CSSM_OFFSET",
     "u_shadowVolume", "feelerTowardsLight" };
   const struct
   {
@@ -196,8 +196,8 @@ bool LightSpaceTechniques(Scene& s)
     std::function<void()> ChangeStructure; // a parameter the maps depend on
     std::function<void()> ChangeLookup;    // one only the lookup depends on (may be none)
   } techniques[] = {
-    { dsm, "dsmTexel", false, [&] { dsm->SetEpsilon(0.05); }, nullptr },
-    { dsmColor, "dsmTexel", true, [&] { dsmColor->SetLayers(4); }, nullptr },
+    { dsm, "dsmSearchStep", false, [&] { dsm->SetEpsilon(0.05); }, nullptr },
+    { dsmColor, "dsmSearchStep", true, [&] { dsmColor->SetLayers(4); }, nullptr },
     { levels, "levelsVisibility", false, [&] { levels->SetLevels(0.2, 0.5, 0.8); }, nullptr },
     { cssm, "CSSM_OFFSET", true, [&] { cssm->SetSeed(3); }, [&] { cssm->SetOffsets(21); } },
   };
