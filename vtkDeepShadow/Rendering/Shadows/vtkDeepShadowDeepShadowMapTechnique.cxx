@@ -65,6 +65,9 @@ public:
   unsigned int Buffer = 0;
   // hit, total, max, overflowed, epsilon bits, then chunks asked for per slot (chunked)
   std::array<unsigned int, 9> Last{};
+  // Per slot, the most nodes a texel of its last build holds (fixed layers): the lookup's
+  // binary search covers no more, as the layers beyond hold only the last value far away.
+  std::vector<int> SearchNodes;
 
   void Release()
   {
@@ -187,6 +190,15 @@ std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(c
   vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
   if (self->ChunkNodes == 0)
   {
+    // Built once and for all: what the lookup searches of these slots' layers (the build's
+    // counters are for all of them together).
+    std::vector<int>& searched = self->Stats->SearchNodes;
+    searched.resize(static_cast<size_t>(slotCount), self->Layers);
+    const int most = std::clamp(static_cast<int>(self->Stats->Last[2]), 1, self->Layers);
+    for (int slot : built)
+    {
+      searched[static_cast<size_t>(slot)] = most;
+    }
     return {};
   }
   Chunks& chunks = *self->Pool;
@@ -258,10 +270,16 @@ void vtkDeepShadowDeepShadowMapTechnique::SayPoolShort()
 void vtkDeepShadowDeepShadowMapTechnique::Hooks::SetMapLookupUniforms(
   deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context)
 {
-  if (this->Technique->ChunkNodes > 0)
+  vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
+  if (self->ChunkNodes > 0)
   {
-    this->Technique->Pool->Pool.BindLookup(sink, context.Window);
+    self->Pool->Pool.BindLookup(sink, context.Window);
+    return;
   }
+  // One count for every light: a computed index costs llvmpipe more than the nodes it saves.
+  const std::vector<int>& searched = self->Stats->SearchNodes;
+  const int most = searched.empty() ? self->Layers : *std::max_element(searched.begin(), searched.end());
+  sink.Set("u_dsmSearchNodes", std::min(most, self->Layers));
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::UnbindLookup()

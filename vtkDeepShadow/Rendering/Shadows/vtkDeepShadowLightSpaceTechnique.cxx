@@ -85,7 +85,7 @@ int BytesPerTexel(unsigned int format)
 }
 
 // LightSpace.glsl with the kinds of face the lights use defined, so that only their code is
-// compiled; before any face exists, every kind.
+// compiled (before any face exists, every kind), and the number of lights that cast shadows.
 std::string LightSpaceSource(const std::vector<std::vector<deepshadow::ShadowMapFace>>& faces)
 {
   bool perspective = false, orthographic = false, cubes = false;
@@ -105,6 +105,7 @@ std::string LightSpaceSource(const std::vector<std::vector<deepshadow::ShadowMap
   defines += perspective ? "#define LIGHT_SPACE_PERSPECTIVE\n" : "";
   defines += orthographic ? "#define LIGHT_SPACE_ORTHOGRAPHIC\n" : "";
   defines += cubes ? "#define LIGHT_SPACE_CUBES\n" : "";
+  defines += "#define LIGHT_SPACE_SLOTS " + std::to_string(std::max<size_t>(faces.size(), 1)) + "\n";
   return "//@Dec\n" + defines + vtkDeepShadowLightSpace;
 }
 }

@@ -22,6 +22,10 @@ vec4 dsmNode(ivec3 at, int k)
   return texelFetch(u_shadowNodes, at.x + 1 + k);
 }
 #else
+// The most nodes a texel of the maps holds: the search covers no more of the layers, whose
+// unused ones repeat the last value far away (u_shadowLayersPerFace of them per face).
+uniform int u_dsmSearchNodes;
+
 vec4 dsmNode(ivec3 at, int k)
 {
   return lightSpaceTexel(at.xy, at.z + k);
@@ -121,7 +125,7 @@ vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 #else
   ivec3 at0 = ivec3(i0, layer), at1 = ivec3(i1, layer), at2 = ivec3(i2, layer), at3 = ivec3(i3, layer);
   bvec4 before = bvec4(false);
-  int count = u_shadowLayersPerFace;
+  int count = u_dsmSearchNodes;
 #endif
   ivec4 first = ivec4(0), remaining = ivec4(count);
   // As many steps as a search of count nodes takes (count, then at most half of it, ...).
