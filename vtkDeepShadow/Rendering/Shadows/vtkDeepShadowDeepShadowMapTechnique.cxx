@@ -190,8 +190,8 @@ std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(c
   vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
   if (self->ChunkNodes == 0)
   {
-    // Built once and for all: what the lookup searches of these slots' layers (the build's
-    // counters are for all of them together).
+    // Fixed layers build no light again. The lookup searches, of these lights' layers, the
+    // most nodes a texel holds (the build's counters are for all of them together).
     std::vector<int>& searched = self->Stats->SearchNodes;
     searched.resize(static_cast<size_t>(slotCount), self->Layers);
     const int most = std::clamp(static_cast<int>(self->Stats->Last[2]), 1, self->Layers);

@@ -4,10 +4,11 @@
 // LightSpaceShadow::Visibility / SurfaceVisibility in Core/Shadows/LightSpace.cxx are the CPU
 // twins). Depths are linear, from the face's near boundary.
 //
-// Only the kinds of face the lights use are compiled (LightSpaceFaceDefines in
+// Only the kinds of face the lights use are compiled (LightSpaceSource in
 // vtkDeepShadowLightSpaceTechnique.cxx defines LIGHT_SPACE_PERSPECTIVE, _ORTHOGRAPHIC and
-// _CUBES): llvmpipe runs both sides of every branch, masked, so a branch no light takes
-// still costs (the cube and perspective code cost 0.11 of an unshadowed frame on the box).
+// _CUBES, and LIGHT_SPACE_SLOTS, the lights casting shadows): llvmpipe runs both sides of
+// every branch, masked, so a branch no light takes still costs (the cube and perspective code
+// cost 0.11 of an unshadowed frame on the box).
 //@Dec
 const int MaxShadowLights = 4;
 uniform sampler2DArray u_shadowMap;   // layer ((slot * faces per light) + face) * layers per face + k

@@ -13,7 +13,7 @@ using deepshadow::testing::Check;
 
 namespace
 {
-// The face kinds the volume's fragment shader defines, e.g. "orthographic perspective".
+// The face kinds the volume's fragment shader defines, e.g. "ORTHOGRAPHIC PERSPECTIVE".
 std::string ComposedKinds(vtkDeepShadowVolumeMapper* mapper)
 {
   const std::string& source = mapper->GetFragmentShaderSource();
