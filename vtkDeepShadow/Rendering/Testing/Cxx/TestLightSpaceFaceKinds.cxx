@@ -1,7 +1,8 @@
 // The light-space lookup compiles only the kinds of face its lights use (LIGHT_SPACE_
-// ORTHOGRAPHIC, _PERSPECTIVE, _CUBES in Shaders/Shadows/LightSpace.glsl): a directional
-// light, a point light outside the volume, one inside it (a cube of faces) and both kinds of
-// light at once each compose their own lookup, and each picture still matches the CPU twin.
+// ORTHOGRAPHIC, _PERSPECTIVE, _CUBES in Shaders/Shadows/LightSpace.glsl) and knows how many
+// lights cast shadows (LIGHT_SPACE_SLOTS): a directional light, a point light outside the
+// volume, one inside it (a cube of faces) and both kinds of light at once each compose their
+// own lookup, and each picture still matches the CPU twin.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -13,7 +14,8 @@ using deepshadow::testing::Check;
 
 namespace
 {
-// The face kinds the volume's fragment shader defines, e.g. "ORTHOGRAPHIC PERSPECTIVE".
+// The face kinds and the count of lights the volume's fragment shader defines, e.g.
+// "ORTHOGRAPHIC PERSPECTIVE SLOTS 2".
 std::string ComposedKinds(vtkDeepShadowVolumeMapper* mapper)
 {
   const std::string& source = mapper->GetFragmentShaderSource();
@@ -24,6 +26,12 @@ std::string ComposedKinds(vtkDeepShadowVolumeMapper* mapper)
     {
       kinds += (kinds.empty() ? "" : " ") + std::string(kind);
     }
+  }
+  const std::string slots = "#define LIGHT_SPACE_SLOTS ";
+  const size_t at = source.find(slots);
+  if (at != std::string::npos)
+  {
+    kinds += " SLOTS " + source.substr(at + slots.size(), source.find('\n', at) - at - slots.size());
   }
   return kinds;
 }
@@ -55,7 +63,7 @@ int TestLightSpaceFaceKinds(int, char*[])
   view.Mapper->SetShadowTechnique(dsm);
   bool ok = true;
 
-  ok = Expect("directional light", view, window, "ORTHOGRAPHIC") && ok;
+  ok = Expect("directional light", view, window, "ORTHOGRAPHIC SLOTS 1") && ok;
 
   const double* centre = view.Volume->GetCenter();
   const double radius = 0.5 * view.Volume->GetLength();
@@ -66,11 +74,11 @@ int TestLightSpaceFaceKinds(int, char*[])
   view.Light->SetFocalPoint(centre);
   view.Light->SetPosition(centre[0] + 3.0 * radius * direction[0], centre[1] + 3.0 * radius * direction[1],
     centre[2] + 3.0 * radius * direction[2]);
-  ok = Expect("point light outside", view, window, "PERSPECTIVE") && ok;
+  ok = Expect("point light outside", view, window, "PERSPECTIVE SLOTS 1") && ok;
 
   view.Light->SetPosition(centre[0] + 0.2 * radius * direction[0], centre[1] + 0.2 * radius * direction[1],
     centre[2] + 0.2 * radius * direction[2]);
-  ok = Expect("point light inside", view, window, "PERSPECTIVE CUBES") && ok;
+  ok = Expect("point light inside", view, window, "PERSPECTIVE CUBES SLOTS 1") && ok;
 
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();
@@ -78,9 +86,9 @@ int TestLightSpaceFaceKinds(int, char*[])
   sun->SetFocalPoint(0.0, 0.0, 0.0);
   sun->SetIntensity(0.5);
   view.Renderer->AddLight(sun);
-  ok = Expect("point light inside and a directional one", view, window, "ORTHOGRAPHIC PERSPECTIVE CUBES") && ok;
+  ok = Expect("point light inside and a directional one", view, window, "ORTHOGRAPHIC PERSPECTIVE CUBES SLOTS 2") && ok;
 
   view.Renderer->RemoveLight(view.Light);
-  ok = Expect("the directional one alone again", view, window, "ORTHOGRAPHIC") && ok;
+  ok = Expect("the directional one alone again", view, window, "ORTHOGRAPHIC SLOTS 1") && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
