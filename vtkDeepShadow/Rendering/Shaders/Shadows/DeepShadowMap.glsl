@@ -74,17 +74,13 @@ vec3 dsmBracketed(int count, int first, bool before, vec4 a, vec4 b, float depth
 }
 
 #ifdef DSM_CHUNKED
-// The chunk of the texel whose start entry is `start` that holds depth (`at`: its nodes), and
-// whether a node of an earlier chunk (`a`) lies at or before depth. Chunks whose last node
-// lies at or before depth are walked past (most texels have one chunk and skip this); links
-// point to higher chunks only, so the walk ends whatever the pool holds.
-void dsmChunkOf(float start, float depth, out ivec3 at, inout vec4 a, out bool before)
+// One step of the walk to the chunk that holds depth, from the chunk `chunk` (while `more`):
+// a chunk whose last node lies at or before depth is walked past, that node becoming `a`, a
+// node before the chunk searched (`before`). Most texels have one chunk and never walk;
+// links point to higher chunks only, so a walk ends whatever the pool holds.
+void dsmWalkStep(float depth, inout int chunk, inout bool more, inout vec4 a, inout bool before)
 {
-  // 2 first chunk + 1 if it has a next one; -1: no chunk (V' = 1, see mapVisibility).
-  int chunk = int(max(start, 0.0)) / 2;
-  before = false;
-  bool more = start > 0.0 && (int(start) & 1) != 0;
-  while (more)
+  if (more)
   {
     int base = chunk * (DsmChunkNodes + 1);
     vec4 last = texelFetch(u_shadowNodes, base + DsmChunkNodes);
@@ -97,7 +93,6 @@ void dsmChunkOf(float start, float depth, out ivec3 at, inout vec4 a, out bool b
       chunk = next;
     }
   }
-  at = ivec3(chunk * (DsmChunkNodes + 1), 0, 0);
 }
 #endif
 
@@ -115,12 +110,20 @@ vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 #ifdef DSM_CHUNKED
   vec4 start = vec4(lightSpaceTexel(i0, layer).r, lightSpaceTexel(i1, layer).r, lightSpaceTexel(i2, layer).r,
     lightSpaceTexel(i3, layer).r);
-  ivec3 at0, at1, at2, at3;
-  bvec4 before;
-  dsmChunkOf(start.x, d.x, at0, a0, before.x);
-  dsmChunkOf(start.y, d.y, at1, a1, before.y);
-  dsmChunkOf(start.z, d.z, at2, a2, before.z);
-  dsmChunkOf(start.w, d.w, at3, a3, before.w);
+  // Start entries: 2 first chunk + 1 if it has a next one; -1: no chunk (V' = 1, below).
+  ivec4 code = ivec4(max(start, vec4(0.0)));
+  ivec4 chunk = code / 2;
+  bvec4 more = notEqual(code & 1, ivec4(0));
+  bvec4 before = bvec4(false);
+  while (any(more))
+  {
+    dsmWalkStep(d.x, chunk.x, more.x, a0, before.x);
+    dsmWalkStep(d.y, chunk.y, more.y, a1, before.y);
+    dsmWalkStep(d.z, chunk.z, more.z, a2, before.z);
+    dsmWalkStep(d.w, chunk.w, more.w, a3, before.w);
+  }
+  ivec4 base = chunk * (DsmChunkNodes + 1);
+  ivec3 at0 = ivec3(base.x, 0, 0), at1 = ivec3(base.y, 0, 0), at2 = ivec3(base.z, 0, 0), at3 = ivec3(base.w, 0, 0);
   const int count = DsmChunkNodes;
 #else
   ivec3 at0 = ivec3(i0, layer), at1 = ivec3(i1, layer), at2 = ivec3(i2, layer), at3 = ivec3(i3, layer);
