@@ -68,6 +68,7 @@ public:
   // Per slot, the most nodes a texel of its last build holds (fixed layers): the lookup's
   // binary search covers no more, as the layers beyond hold only the last value far away.
   std::vector<int> SearchNodes;
+  bool SaidLost = false; // a bound of 1 or more was said, while it lasts
 
   void Release()
   {
@@ -199,6 +200,7 @@ std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(c
     {
       searched[static_cast<size_t>(slot)] = most;
     }
+    self->SayShadowLost();
     return {};
   }
   Chunks& chunks = *self->Pool;
@@ -241,6 +243,21 @@ std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(c
     self->SayPoolShort();
   }
   return doubled;
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::SayShadowLost()
+{
+  // Fixed layers double an overflowing texel's bound until its nodes fit; from a bound of 1
+  // on, one node of 1 fits any visibility, so those texels keep no shadow at all.
+  const double bound = this->GetEpsilonMax();
+  const bool lost = bound >= 1.0 && bound > this->Epsilon;
+  if (lost && !this->Stats->SaidLost)
+  {
+    vtkWarningMacro(<< "the deep shadow map's " << this->Layers << " layers cannot hold the shadow at epsilon "
+                    << this->Epsilon << ": texels that need more nodes were built with a bound of up to "
+                    << bound << ", and a bound of 1 or more keeps no shadow there (raise Layers, or use chunk-nodes)");
+  }
+  this->Stats->SaidLost = lost;
 }
 
 void vtkDeepShadowDeepShadowMapTechnique::SayPoolShort()
@@ -359,14 +376,15 @@ std::string vtkDeepShadowDeepShadowMapTechnique::GetBuildSource() const
 
 int vtkDeepShadowDeepShadowMapTechnique::LookupLoopIterations() const
 {
-  // A binary search over the nodes in each of the four bilinear texels; chunked, over one
-  // chunk's, after the start and (mostly) one link.
-  int steps = this->ChunkNodes > 0 ? 3 : 1;
-  for (int remaining = this->ChunkNodes > 0 ? this->ChunkNodes : this->Layers; remaining > 1; remaining /= 2)
+  // One binary search over the nodes, the four bilinear texels in step (at most Layers
+  // nodes); chunked, over one chunk's, after the walk past full chunks: one pass, and
+  // (mostly) one link.
+  int steps = this->ChunkNodes > 0 ? 2 : 0;
+  for (int remaining = this->ChunkNodes > 0 ? this->ChunkNodes : this->Layers; remaining > 0; remaining /= 2)
   {
     ++steps;
   }
-  return 4 * steps;
+  return steps;
 }
 
 std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const

@@ -108,6 +108,9 @@ protected:
   std::string ChunkDefines() const;
   /** After a chunked build: warns (once) about lights whose nodes the pool could not hold. */
   void SayPoolShort();
+  /** After a fixed-layer build: warns (once while it lasts) when texels that overflowed had
+   * their bound doubled to 1 or more, which keeps no shadow there. */
+  void SayShadowLost();
   std::string GetMapLookupSource() const override;
   int LookupLoopIterations() const override;
   void BeginMapBuild() override;

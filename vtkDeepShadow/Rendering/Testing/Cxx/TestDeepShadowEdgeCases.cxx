@@ -6,6 +6,7 @@
 // - lights at the extremes give the CPU twin's picture: a positional light inside the
 //   volume (a cube of faces), a directional light along a face, a positional light 1e-6
 //   from the volume (near/far 1e-6) and one 1e6 volume sizes away (an orthographic face);
+// - one layer, whose overflowing texels keep no shadow, is said once;
 // - opacity 0 everywhere (nothing drawn) and 1 everywhere (shadows saturate).
 // Tolerance vs CPU twin: as for translucent techniques (RMSE <= 2/255, <= 1% of pixels
 // beyond 12/255).
@@ -134,6 +135,24 @@ int TestDeepShadowEdgeCases(int, char*[])
     }
   }
   ok = Check("no other mapper error", mapperMessages->Errors.size() == 1) && ok;
+
+  // One layer holds no shadow: overflowing texels double their bound past 1, which is said
+  // once while it lasts; the default layers say nothing.
+  light->SetPositional(false);
+  light->SetPosition(0.3, 0.2, 1.0);
+  mapper->SetShadowTechnique(dsm);
+  const size_t heard = capture->Warnings.size();
+  window->Render();
+  ok = Check("8 layers: no bound of 1 or more, nothing said", capture->Warnings.size() == heard) && ok;
+  dsm->SetLayers(1);
+  window->Render();
+  light->SetPosition(0.32, 0.2, 1.0); // rebuilt, the same again
+  window->Render();
+  ok = Check("1 layer: a bound of 1 or more said once over two builds", capture->Warnings.size() == heard + 1 &&
+         capture->Warnings.back().find("keeps no shadow") != std::string::npos && dsm->GetEpsilonMax() >= 1.0) && ok;
+  dsm->SetLayers(8);
+  window->Render();
+  ok = Check("8 layers again: nothing more said", capture->Warnings.size() == heard + 1) && ok;
 
   // Opacity 0 everywhere: nothing to see or to shadow. Opacity 1 everywhere: saturated.
   light->SetPositional(false);
