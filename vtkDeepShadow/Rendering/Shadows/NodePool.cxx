@@ -13,12 +13,6 @@
 namespace deepshadow
 {
 
-namespace
-{
-// Chunk numbers are stored as floats (deepshadow::MaxPoolChunks says why).
-constexpr long long MaxChunks = MaxPoolChunks;
-}
-
 bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> limits, long long start,
   int chunkNodes, bool colored, bool& remade, std::string& problem)
 {
@@ -27,8 +21,9 @@ bool NodePool::Reserve(vtkOpenGLRenderWindow* window, std::vector<long long> lim
   GLint maxEntries = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxEntries);
   const long long slots = std::max<long long>(1, static_cast<long long>(limits.size()));
+  // Chunk numbers are stored as floats (MaxPoolChunks says why).
   const long long allowed =
-    std::min(MaxChunks, static_cast<long long>(maxEntries) / (chunkNodes + 1)) / slots;
+    std::min(MaxPoolChunks, static_cast<long long>(maxEntries) / (chunkNodes + 1)) / slots;
   for (long long& limit : limits)
   {
     if (limit > allowed)

@@ -46,7 +46,7 @@ public:
   }
 
   void SetSlotBuildUniforms(deepshadow::UniformSink& sink, int slot) override;
-  std::vector<int> SlotsToBuildAgain(const std::vector<int>& built, int slotCount) override;
+  std::vector<int> AfterBuild(const std::vector<int>& built, int slotCount) override;
   void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
 private:
@@ -186,7 +186,7 @@ void vtkDeepShadowDeepShadowMapTechnique::Hooks::SetSlotBuildUniforms(deepshadow
   sink.Set("u_poolSlot", slot);
 }
 
-std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::SlotsToBuildAgain(const std::vector<int>& built, int slotCount)
+std::vector<int> vtkDeepShadowDeepShadowMapTechnique::Hooks::AfterBuild(const std::vector<int>& built, int slotCount)
 {
   vtkDeepShadowDeepShadowMapTechnique* self = this->Technique;
   if (self->ChunkNodes == 0)

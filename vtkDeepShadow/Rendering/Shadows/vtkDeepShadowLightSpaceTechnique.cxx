@@ -360,7 +360,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   };
   // A technique may ask for slots again (the deep shadow map's node pool was short).
   for (std::vector<int> building = stale; !building.empty();
-       building = this->SlotsToBuildAgain(building, slots.Count()))
+       building = this->AfterBuild(building, slots.Count()))
   {
     self->BeginMapBuild();
     for (int slot : building)

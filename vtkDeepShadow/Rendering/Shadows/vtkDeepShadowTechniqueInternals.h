@@ -79,10 +79,11 @@ public:
   /** Before the dispatches of slot `slot`'s faces. */
   virtual void SetSlotBuildUniforms(deepshadow::UniformSink&, int /*slot*/) {}
   /**
-   * After a build of the slots `built` (of `slotCount`), read back by EndMapBuild: the slots
-   * to build again (the deep shadow map's node pool ran out); none by default.
+   * After a build of the slots `built` (of `slotCount`), read back by EndMapBuild: keeps what
+   * the build found, and returns the slots to build again (the deep shadow map's node pool
+   * ran out); none by default.
    */
-  virtual std::vector<int> SlotsToBuildAgain(const std::vector<int>& /*built*/, int /*slotCount*/) { return {}; }
+  virtual std::vector<int> AfterBuild(const std::vector<int>& /*built*/, int /*slotCount*/) { return {}; }
   virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
 
   bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;
