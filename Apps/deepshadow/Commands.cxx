@@ -51,6 +51,8 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
   run.FirstFrameMs = RenderFrame(setup.Window);
   RequireDrawn(setup);
   const std::vector<std::string> firstPasses = setup.Mapper->GetLastPasses();
+  // The first frame's analysis (frames of the same view run none).
+  const PageCounts pages = PagesOf(setup.Technique);
   for (int f = 0; f < options.Frames; ++f)
   {
     run.FrameMs.push_back(RenderFrame(setup.Window));
@@ -138,6 +140,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("backend", setup.Window->GetBackendAsString())
     .Set("context", setup.Window->GetContextDescription())
     .Set("gl_renderer", RendererString(setup.Window));
+  SetPageCounts(run.Stats, pages);
   return run;
 }
 

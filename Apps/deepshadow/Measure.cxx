@@ -10,6 +10,7 @@
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
+#include "vtkDeepShadowResolutionMatchedTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
@@ -44,6 +45,35 @@ long long ClusterTexels(vtkDeepShadowTechnique* technique)
 {
   auto* maps = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique);
   return maps ? static_cast<long long>(ClusterCount(technique)) * maps->GetMapSize() * maps->GetMapSize() : 0LL;
+}
+
+PageCounts PagesOf(vtkDeepShadowTechnique* technique)
+{
+  PageCounts pages;
+  if (auto* rmsm = vtkDeepShadowResolutionMatchedTechnique::SafeDownCast(technique))
+  {
+    pages.Requested = rmsm->GetPagesRequested();
+    pages.AfterComponents = rmsm->GetRequestsAfterComponents();
+    pages.Unique = rmsm->GetPagesUnique();
+    pages.Rendered = rmsm->GetPagesRendered();
+    pages.Superpages = rmsm->GetSuperpages();
+    pages.Resident = rmsm->GetPagesResident();
+    pages.FinestLevel = rmsm->GetFinestLevelUsed();
+    pages.AtlasBytes = rmsm->GetAtlasBytes();
+  }
+  return pages;
+}
+
+void SetPageCounts(Json& json, const PageCounts& pages)
+{
+  json.Set("pages_requested", pages.Requested)
+    .Set("requests_after_components", pages.AfterComponents)
+    .Set("pages_unique", pages.Unique)
+    .Set("pages_rendered", pages.Rendered)
+    .Set("superpages", pages.Superpages)
+    .Set("pages_resident", pages.Resident)
+    .Set("finest_level_used", pages.FinestLevel)
+    .Set("atlas_bytes", pages.AtlasBytes);
 }
 
 SceneBench::SceneBench(const Options& options, const std::string& name)
@@ -141,6 +171,7 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
   m.CameraPasses = mapper->GetLastPasses();
   m.Features = mapper->GetShaderFeatures();
   m.RebuiltForCamera = builds() != buildsBefore;
+  m.Pages = PagesOf(technique);
   this->Restore();
   // Every light-moving frame rebuilds: the build time is the median of theirs.
   times.clear();

@@ -33,6 +33,27 @@ namespace deepshadow
 namespace tool
 {
 
+class Json;
+
+/**
+ * Resolution-matched maps' last analysis (vtkDeepShadowResolutionMatchedTechnique); zeros
+ * for other techniques.
+ */
+struct PageCounts
+{
+  long long Requested = 0;
+  long long AfterComponents = 0;
+  int Unique = 0;
+  int Rendered = 0;
+  int Superpages = 0;
+  int Resident = 0;
+  int FinestLevel = 0;
+  long long AtlasBytes = 0;
+};
+PageCounts PagesOf(vtkDeepShadowTechnique* technique);
+/** Adds them to `json` as pages_requested, requests_after_components, pages_unique, ... */
+void SetPageCounts(Json& json, const PageCounts& pages);
+
 /** What one technique (or none) measured on one scene. */
 struct Measurement
 {
@@ -56,6 +77,8 @@ struct Measurement
   // Light-space techniques: clustered faces over all shadowed lights, and their texels.
   int Clusters = 0;
   long long ClusterTexels = 0;
+  // Resolution-matched maps: the analysis of the last camera-only frame.
+  PageCounts Pages;
 };
 
 /** Clustered faces of a light-space technique (0 for others or unclustered) and their texels. */

@@ -152,7 +152,7 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
          "rmse,max_abs,shadow_rmse,shadow_max_abs,pareto_camera,pareto_light,dsm_nodes_avg,"
          "dsm_nodes_max,dsm_texels_overflowed,dsm_epsilon_max,rebuilt_when_camera_moved,"
          "camera_frame_passes,shader_features,clusters,cluster_texels,chunks_used,chunk_bytes,pool_bytes,"
-         "worse_than_none\n";
+         "pages_requested,pages_unique,pages_rendered,superpages,atlas_bytes,worse_than_none\n";
   for (const Row& r : rows)
   {
     csv << CsvField(r.Scene) << ',' << CsvField(r.Technique) << ',' << CsvField(r.Parameters) << ','
@@ -168,7 +168,9 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
         << ',' << Number(r.M.EpsilonMax) << ',' << (r.M.RebuiltForCamera ? 1 : 0) << ','
         << CsvField(Join(r.M.CameraPasses, " ")) << ',' << CsvField(Join(r.M.Features, " ")) << ','
         << r.M.Clusters << ',' << r.M.ClusterTexels << ',' << r.M.ChunksUsed << ',' << r.M.ChunkBytes
-        << ',' << r.M.PoolBytes << ',' << (r.WorseThanNone ? 1 : 0) << '\n';
+        << ',' << r.M.PoolBytes << ',' << r.M.Pages.Requested << ',' << r.M.Pages.Unique << ','
+        << r.M.Pages.Rendered << ',' << r.M.Pages.Superpages << ',' << r.M.Pages.AtlasBytes << ','
+        << (r.WorseThanNone ? 1 : 0) << '\n';
   }
 }
 

@@ -137,6 +137,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   caster.Mask = volume.Mask.get();
   caster.Eye = scene.View.Unproject(0.5 * scene.View.GetWidth(), 0.5 * scene.View.GetHeight(), 0.0);
+  caster.View = &scene.View;
   if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);

@@ -2,6 +2,7 @@
 
 #include "Core/Shadows/DeepShadowMap.h"
 #include "Core/Shadows/OpacityLevels.h"
+#include "Core/Shadows/ResolutionMatched.h"
 #include "Core/Shadows/ShadowMap.h"
 #include "Core/Shadows/StochasticShadowMap.h"
 
@@ -157,6 +158,23 @@ std::vector<ShadowParameterInfo> MakeParameters()
   list.push_back(Field(Numeric("bias", Type::Number, 0.0, Infinity, "B",
                          "depth bias in feeler steps"),
     &ShadowParameters::Bias));
+  auto pageSize = Numeric("page-size", Type::Integer, 16, 128, "N", "rmsm: texels per page side");
+  pageSize.Allowed = { 16, 32, 64, 128 };
+  list.push_back(Field(pageSize, &ShadowParameters::PageSize));
+  list.push_back(Field(Numeric("atlas-size", Type::Integer, 64, 16384, "N",
+                         "rmsm: texels per side of the page atlas"),
+    &ShadowParameters::AtlasSize));
+  auto finest = Numeric("max-resolution", Type::Integer, 1024, 32768, "N",
+    "rmsm: texels per side of the finest level (the virtual map)");
+  finest.Allowed = { 1024, 2048, 4096, 8192, 16384, 32768 };
+  list.push_back(Field(finest, &ShadowParameters::MaxResolution));
+  auto downsample = Numeric("analysis-downsample", Type::Integer, 1, 8, "N",
+    "rmsm: every N-th pixel of the image asks for pages");
+  downsample.Allowed = { 1, 2, 4, 8 };
+  list.push_back(Field(downsample, &ShadowParameters::AnalysisDownsample));
+  list.push_back(Field(Numeric("keep-pages", Type::Integer, 0, 1, "0|1",
+                         "rmsm: keep pages across frames while the light and casters stay"),
+    &ShadowParameters::KeepPages));
   // Keys without a field of their own live in ShadowParameters::Extra.
   for (ShadowParameterInfo& info : list)
   {
@@ -291,6 +309,16 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     return 16 * static_cast<std::uint64_t>(p.Photons);
   };
   list.push_back(cssm);
+
+  // Resolution-matched shadow maps (paper 004): pages of a virtual map, where pixels need them.
+  auto rmsm = Technique("rmsm", "resolution-matched shadow map", ShadowKind::ResolutionMatched,
+    { "pcf", "bias", "page-size", "atlas-size", "max-resolution", "analysis-downsample", "keep-pages" },
+    { { "", true }, { ":max-resolution=4096" }, { ":max-resolution=32768" }, { ":atlas-size=512" },
+      { ":analysis-downsample=4", true }, { ":page-size=64" }, { ":pcf=none" }, { ":keep-pages=0" } });
+  rmsm.Binary = true;
+  rmsm.Defaults = MapDefaults;
+  rmsm.MakeShadow = MakeTwin<ResolutionMatchedShadow>;
+  list.push_back(rmsm);
   return list;
 }
 }

@@ -39,6 +39,7 @@
 namespace deepshadow
 {
 class BoundRegion;
+class Camera;
 class ComponentLookup;
 class IsoCrossings;
 class SurfaceSet;
@@ -56,7 +57,8 @@ enum class ShadowKind : int
   ShadowMap,
   DeepShadowMap,
   OpacityLevels,
-  Stochastic
+  Stochastic,
+  ResolutionMatched
 };
 
 enum class ShadowFilter
@@ -127,6 +129,14 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   int Offsets = 13;         // 7, 13 or 21 (StochasticOffsets)
   unsigned int Seed = 0;
   int Photons = 1;          // photons (independent depth triples) per texel
+
+  // Resolution-matched shadow maps (Core/Shadows/ResolutionMatched.h); Bias and Filter too.
+  int PageSize = 32;        // texels per page side
+  int AtlasSize = 1024;     // texels per side of the atlas the pages live in
+  int MaxResolution = 16384; // texels per side of the finest level (the virtual map)
+  int AnalysisDownsample = 1; // every N-th pixel of the camera image asks for pages
+  /** Keep built pages across frames while the light and casters stay (cached mode). */
+  bool KeepPages = true;
 
   /**
    * Parameters of techniques that have no field above, by registry key (a technique added
@@ -225,6 +235,11 @@ struct ShadowCaster
    * objects that look larger from there clusters of their own (Core/Shadows/Clusters.h).
    */
   std::optional<glm::dvec3> Eye;
+  /**
+   * Optional: the camera whose pixels resolution-matched maps serve
+   * (Core/Shadows/ResolutionMatched.h); without it they build their base level alone.
+   */
+  const Camera* View = nullptr;
 
   /**
    * The sample at continuous voxel index `index` of a light ray whose crossings `crossings`

@@ -440,6 +440,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X0, &frame.Y0);
   frame.View = adapter::MakeCamera(renderer);
   frame.Context.Eye = frame.View.Unproject(0.5 * frame.View.GetWidth(), 0.5 * frame.View.GetHeight(), 0.0);
+  frame.Context.View = frame.View;
   frame.Shade = !projection && property->GetShade(0) != 0;
   frame.ShadowTerm = !projection && this->OutputMode == OutputShadowTerm;
   frame.Lit = frame.Shade || (!projection && this->ShadowTechnique) || frame.ShadowTerm;

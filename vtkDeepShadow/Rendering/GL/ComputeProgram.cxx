@@ -87,6 +87,11 @@ void ComputeProgram::Set(const char* name, const glm::vec2& value)
   glUniform2fv(this->Location(name), 1, glm::value_ptr(value));
 }
 
+void ComputeProgram::Set(const char* name, const glm::ivec2& value)
+{
+  glUniform2iv(this->Location(name), 1, glm::value_ptr(value));
+}
+
 void ComputeProgram::Set(const char* name, const glm::ivec3& value)
 {
   glUniform3iv(this->Location(name), 1, glm::value_ptr(value));

@@ -35,6 +35,7 @@ public:
   void Set(const char* name, int value);
   void Set(const char* name, float value);
   void Set(const char* name, const glm::vec2& value);
+  void Set(const char* name, const glm::ivec2& value);
   void Set(const char* name, const glm::ivec3& value);
   void Set(const char* name, const glm::vec3& value);
   void Set(const char* name, const glm::vec4& value);

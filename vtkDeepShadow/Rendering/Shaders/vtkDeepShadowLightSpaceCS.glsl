@@ -47,6 +47,37 @@ void deferTexel()
   u_deferred.texels[atomicAdd(u_deferred.count, 1u)] = uint(g_texel.x) | (uint(g_texel.y) << 16);
 }
 //DeepShadow::Build::Dec
+#if defined(LIGHT_SPACE_PAGES)
+// Resolution-matched maps (Core/Shadows/ResolutionMatched.h): one invocation per texel of a
+// page's slot, apron included, one page per z; a dispatch covers one superpage (one face,
+// one level: u_size is the level's texels per side). g_texel is the texel of the level.
+layout(std430, binding = 3) readonly buffer Pages
+{
+  uint pages[]; // (key, slot) per page (deepshadow::EncodePage)
+} u_pages;
+uniform int u_pageOffset;
+uniform int u_pageSize;
+uniform int u_apron;
+uniform int u_slotsPerSide;
+ivec2 g_store; // the texel's place in the atlas
+#elif defined(LIGHT_SPACE_CAMERA)
+// The receivers the camera's pixels show, for resolution-matched maps' page requests: the
+// ray of every u_downsample-th pixel (deepshadow::Camera::RayThrough) takes a texel's place.
+uniform mat4 u_inverseViewProjection;
+uniform vec2 u_viewport;
+uniform int u_downsample;
+uniform ivec2 u_analysisSize;
+#endif
+
+// Where a build stores its texel's value (ShadowMapBuild.glsl).
+ivec3 lightSpaceOutputTexel()
+{
+#ifdef LIGHT_SPACE_PAGES
+  return ivec3(g_store, 0);
+#else
+  return ivec3(g_texel, u_layer);
+#endif
+}
 #ifdef LIGHT_SPACE_CLIP
 // A clustered face (deepshadow::ClusteredFaces) marches its cluster's box, and of it only its
 // cluster's blocks (label u_clipLabel; 0: an unclustered face, every occupied block) and,
@@ -135,6 +166,30 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
 
 void main()
 {
+#if defined(LIGHT_SPACE_PAGES)
+  int slotSize = u_pageSize + 2 * u_apron;
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(local, ivec2(slotSize))))
+  {
+    return;
+  }
+  uint index = uint(u_pageOffset) + gl_GlobalInvocationID.z;
+  uint key = u_pages.pages[2u * index];
+  int slot = int(u_pages.pages[2u * index + 1u]);
+  g_texel = ivec2(key & 2047u, (key >> 11) & 2047u) * u_pageSize + local - u_apron;
+  g_store = ivec2(slot % u_slotsPerSide, slot / u_slotsPerSide) * slotSize + local;
+#elif defined(LIGHT_SPACE_CAMERA)
+  g_texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(g_texel, u_analysisSize)))
+  {
+    return;
+  }
+  vec2 ndc = 2.0 * (vec2(g_texel) + 0.5) * float(u_downsample) / u_viewport - 1.0;
+  vec4 nearPoint = u_inverseViewProjection * vec4(ndc, -1.0, 1.0);
+  vec4 farPoint = u_inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 cameraOrigin = nearPoint.xyz / nearPoint.w;
+  vec3 cameraDirection = normalize(farPoint.xyz / farPoint.w - cameraOrigin);
+#else
   if (u_deferredPass != 0)
   {
     uint index = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
@@ -152,8 +207,13 @@ void main()
       return;
     }
   }
-  vec2 uv = 2.0 * (vec2(g_texel) + 0.5) / float(u_size) - 1.0;
+#endif
   vec3 origin, direction;
+#ifdef LIGHT_SPACE_CAMERA
+  origin = cameraOrigin;
+  direction = cameraDirection;
+#else
+  vec2 uv = 2.0 * (vec2(g_texel) + 0.5) / float(u_size) - 1.0;
   if (u_perspective != 0)
   {
     direction = normalize(u_forward + uv.x * u_extent * u_right + uv.y * u_extent * u_up);
@@ -164,6 +224,7 @@ void main()
     origin = u_origin + uv.x * u_extent * u_right + uv.y * u_extent * u_up;
     direction = u_forward;
   }
+#endif
   vec3 indexOrigin = (u_worldToIndex * vec4(origin, 1.0)).xyz;
   vec3 indexDirection = (u_worldToIndex * vec4(direction, 0.0)).xyz;
 #ifdef LIGHT_SPACE_CLIP

@@ -5,9 +5,9 @@
 #include "Volume/ShadowContext.h"
 #include "LightSpaceBricks.h"
 #include "LightSpaceClusters.h"
+#include "LightSpaceFaces.h"
 #include "ShadowSlots.h"
 #include "vtkDeepShadowBrickTotalsCS.h"
-#include "vtkDeepShadowLightSpace.h"
 #include "vtkDeepShadowLightSpaceCS.h"
 
 #include "vtkDeepShadowBrickExchange.h"
@@ -82,31 +82,6 @@ int BytesPerTexel(unsigned int format)
     default:
       return 16;
   }
-}
-
-// LightSpace.glsl with the kinds of face the lights use defined, so that only their code is
-// compiled (before any face exists, every kind), and the number of lights that cast shadows.
-std::string LightSpaceSource(const std::vector<std::vector<deepshadow::ShadowMapFace>>& faces)
-{
-  bool perspective = false, orthographic = false, cubes = false;
-  for (const auto& lightFaces : faces)
-  {
-    cubes = cubes || lightFaces.size() == 6;
-    for (const deepshadow::ShadowMapFace& face : lightFaces)
-    {
-      (face.Perspective ? perspective : orthographic) = true;
-    }
-  }
-  if (!perspective && !orthographic)
-  {
-    perspective = orthographic = cubes = true;
-  }
-  std::string defines;
-  defines += perspective ? "#define LIGHT_SPACE_PERSPECTIVE\n" : "";
-  defines += orthographic ? "#define LIGHT_SPACE_ORTHOGRAPHIC\n" : "";
-  defines += cubes ? "#define LIGHT_SPACE_CUBES\n" : "";
-  defines += "#define LIGHT_SPACE_SLOTS " + std::to_string(std::max<size_t>(faces.size(), 1)) + "\n";
-  return "//@Dec\n" + defines + vtkDeepShadowLightSpace;
 }
 }
 
@@ -396,7 +371,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
   if (!rebuilt.empty() || !maps.Totals || maps.TotalsLayers != layers)
   {
     // This brick's total per texel: the technique's own lookup beyond the texel ray's end.
-    const std::string lookup = LightSpaceSource(maps.Faces) + self->GetMapLookupSource();
+    const std::string lookup = deepshadow::LightSpaceSource(maps.Faces) + self->GetMapLookupSource();
     if (!Internals::BeginBuildPass(self, maps.TotalsPass, vtkDeepShadowBrickTotalsCS, context, "Lookup", lookup))
     {
       return false;
@@ -455,7 +430,7 @@ std::string vtkDeepShadowLightSpaceTechnique::GetLookupSource() const
     this->LightMaps->Bricks.Exchanging() ? "//@Dec\n#define LIGHT_SPACE_UPSTREAM\n" : "";
   // Clustered faces: LightSpace.glsl loops over a light's faces.
   const std::string clusters = this->LightMaps->Clusters.LookupDefines();
-  return upstream + clusters + LightSpaceSource(this->LightMaps->Faces) + this->GetMapLookupSource();
+  return upstream + clusters + deepshadow::LightSpaceSource(this->LightMaps->Faces) + this->GetMapLookupSource();
 }
 
 void vtkDeepShadowLightSpaceTechnique::SetBrickExchange(vtkDeepShadowBrickExchange* exchange)
@@ -488,31 +463,8 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + maps.Unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
   sink.Set("u_shadowMap", maps.Unit);
-  std::vector<int> faceCount, perspective;
-  std::vector<glm::vec3> origin, forward, right, up;
-  std::vector<float> extent, nearDistance;
-  for (const auto& faces : maps.Faces)
-  {
-    faceCount.push_back(static_cast<int>(faces.size()));
-    perspective.push_back(faces.front().Perspective ? 1 : 0);
-    origin.emplace_back(faces.front().Origin);
-    forward.emplace_back(faces.front().Forward);
-    right.emplace_back(faces.front().Right);
-    up.emplace_back(faces.front().Up);
-    extent.push_back(static_cast<float>(faces.front().Extent));
-    nearDistance.push_back(static_cast<float>(faces.front().Near));
-  }
-  sink.Set("u_shadowFaceCount", faceCount);
-  sink.Set("u_shadowPerspective", perspective);
-  sink.Set("u_shadowOrigin", origin);
-  sink.Set("u_shadowForward", forward);
-  sink.Set("u_shadowRight", right);
-  sink.Set("u_shadowUp", up);
-  sink.Set("u_shadowExtent", extent);
-  sink.Set("u_shadowNear", nearDistance);
-  sink.Set("u_shadowSize", static_cast<float>(self->MapSize));
-  sink.Set("u_shadowFacesPerLight", maps.FacesPerLight);
-  sink.Set("u_shadowLayersPerFace", maps.LayersPerFace);
+  deepshadow::SetLightSpaceFaceUniforms(
+    sink, maps.Faces, static_cast<float>(self->MapSize), maps.FacesPerLight, maps.LayersPerFace);
   maps.Clusters.SetLookupUniforms(sink, maps.Faces);
   if (maps.Bricks.Exchanging())
   {

@@ -95,7 +95,7 @@ int vtkDeepShadowShadowMapTechnique::LookupLoopIterations() const
   return this->Filter == PCF3x3 ? 12 : this->Filter == PoissonDisc ? static_cast<int>(deepshadow::PoissonDisc().size()) : 0;
 }
 
-std::string vtkDeepShadowShadowMapTechnique::GetMapLookupSource() const
+std::string vtkDeepShadowShadowMapTechnique::GetFilterSource(int filter, bool pages)
 {
   // The filter and the Poisson disc come from Core, the CPU twin's tables.
   std::vector<std::string> disc;
@@ -103,8 +103,14 @@ std::string vtkDeepShadowShadowMapTechnique::GetMapLookupSource() const
   {
     disc.push_back("vec2(" + std::to_string(tap.x) + ", " + std::to_string(tap.y) + ")");
   }
-  return "//@Dec\n#define SHADOW_FILTER " + std::to_string(this->Filter) + "\n" +
+  return "//@Dec\n#define SHADOW_FILTER " + std::to_string(filter) + "\n" +
+    (pages ? "#define SHADOW_MAP_PAGES\n" : "") +
     deepshadow::GlslConstantArray("vec2", "POISSON_DISC", "POISSON_TAPS", disc) + vtkDeepShadowShadowMap;
+}
+
+std::string vtkDeepShadowShadowMapTechnique::GetMapLookupSource() const
+{
+  return GetFilterSource(this->Filter);
 }
 
 void vtkDeepShadowShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

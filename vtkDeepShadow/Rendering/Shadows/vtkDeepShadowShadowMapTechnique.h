@@ -43,6 +43,13 @@ public:
   vtkGetMacro(Filter, int);
   ///@}
 
+  /**
+   * The percentage-closer filter's GLSL (Shadows/ShadowMap.glsl with its filter and Poisson
+   * disc defined from Core's tables), for `filter`; with `pages`, for resolution-matched
+   * maps (SHADOW_MAP_PAGES).
+   */
+  static std::string GetFilterSource(int filter, bool pages = false);
+
   deepshadow::ShadowParameters GetParameters() const override;
   void SetParameters(const deepshadow::ShadowParameters& parameters) override;
 

@@ -217,6 +217,12 @@ bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext&
     }
   }
 
+  if (!impl.TechniqueHooks->FollowView(context, impl.Slots, rebuilt, key))
+  {
+    impl.Slots.Invalidate();
+    return false;
+  }
+
   if (!impl.TechniqueHooks->ExchangeStructures(context, impl.Slots, rebuilt, key))
   {
     return false;

@@ -52,6 +52,16 @@ public:
     return true;
   }
   /**
+   * Every frame, after the builds: the structures that follow the camera (the
+   * resolution-matched maps' pages). Adds the slots it built anything for to `rebuilt`, and
+   * to `cacheKey` whatever the lookup now depends on.
+   */
+  virtual bool FollowView(deepshadow::ShadowContext&, const deepshadow::ShadowSlots&,
+    std::set<int>& /*rebuilt*/, std::vector<double>& /*cacheKey*/)
+  {
+    return true;
+  }
+  /**
    * After the builds of a frame, whether or not a slot was rebuilt (`rebuilt`): what the
    * structures take from outside the process (vtkDeepShadowBrickExchange). Appends to
    * `cacheKey` whatever the lookup now depends on.

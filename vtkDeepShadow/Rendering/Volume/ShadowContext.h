@@ -7,6 +7,7 @@
 #include "GL/UniformSink.h"
 #include "Core/Light.h"
 #include "ShaderComposer.h"
+#include "Core/Camera.h"
 #include "Core/Components.h"
 #include "Core/EmptySpace.h"
 #include "Core/GradientOpacity.h"
@@ -140,6 +141,8 @@ struct ShadowContext
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
   /** The centre of the camera's near plane (world): clustered maps weigh objects by it. */
   glm::dvec3 Eye{ 0.0 };
+  /** The camera and viewport of the frame: resolution-matched maps build the pages its pixels need. */
+  Camera View;
 
   /**
    * The content of Transfer (opacity, and colours if asked), IsoValues, the gradient opacity

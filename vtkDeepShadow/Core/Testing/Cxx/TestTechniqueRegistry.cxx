@@ -13,7 +13,7 @@ TEST(TechniqueRegistry, EveryNameRoundTripsThroughItsParameters)
   const std::vector<std::string> expected{ "none", "rays", "rays-cached", "rays-opaque",
     "rays-opaque-cached", "rays-color", "rays-color-cached", "shadowmap", "shadowmap-cached",
     "dsm", "dsm-cached", "dsm-color", "dsm-color-cached", "dsm-clustered", "dsm-clustered-cached",
-    "dsm3", "dsm3-cached", "cssm", "cssm-cached" };
+    "dsm3", "dsm3-cached", "cssm", "cssm-cached", "rmsm", "rmsm-cached" };
   EXPECT_EQ(ShadowTechniqueNames(), expected);
   for (const std::string& name : expected)
   {

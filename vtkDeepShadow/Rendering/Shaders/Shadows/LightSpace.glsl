@@ -46,11 +46,14 @@ vec4 lightSpaceBilinear(vec2 xy, out ivec2 i0)
   return vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
 }
 
+#ifndef LIGHT_SPACE_LOCATE_ONLY
 // The technique's lookup at texel position xy (texel centres at integers) of the face whose
 // texels start at `layer`, for a point at `depth`; on a receiving surface, `slope` is its
 // plane's depth change per texel (MapPoint::Slope), and texel t is compared at
-// lightSpaceDepthAt(t).
+// lightSpaceDepthAt(t). (Without it, LIGHT_SPACE_LOCATE_ONLY: where points fall, for
+// resolution-matched maps' page requests.)
 vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope);
+#endif
 
 float lightSpaceDepthAt(vec2 texel, vec2 xy, float depth, vec2 slope)
 {
@@ -177,6 +180,42 @@ vec2 lightSpaceReceiverSlope(LightSpaceFace face, vec3 d, vec3 at, vec3 normal)
   return length2 > steepest * steepest ? slope * (steepest / sqrt(length2)) : slope;
 }
 
+// Where `position` falls on the faces of light slot `slot` (unclustered): its face (a cube's
+// face picked by the major axis, in the order +x, -x, +y, -y, +z, -z), d relative to its
+// origin, the cube face's index (0 otherwise) and its texel position and depth; false behind.
+bool lightSpacePoint(int slot, vec3 position, out LightSpaceFace face, out vec3 d, out int cubeFace, out vec3 at)
+{
+  face = lightSpaceFaceOf(slot);
+  d = position - face.origin;
+  cubeFace = 0;
+#ifdef LIGHT_SPACE_CUBES
+  if (lightSpaceFaceCountOf(slot) == 6)
+  {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z)
+    {
+      cubeFace = d.x >= 0.0 ? 0 : 1;
+    }
+    else if (a.y >= a.z)
+    {
+      cubeFace = d.y >= 0.0 ? 2 : 3;
+    }
+    else
+    {
+      cubeFace = d.z >= 0.0 ? 4 : 5;
+    }
+    vec3 axes[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
+      vec3(0, 0, 1), vec3(0, 0, -1));
+    face.forward = axes[cubeFace];
+    vec3 helper = abs(face.forward.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    face.right = normalize(cross(face.forward, helper));
+    face.up = cross(face.right, face.forward);
+  }
+#endif
+  return lightSpaceLocate(face, d, at);
+}
+
+#ifndef LIGHT_SPACE_LOCATE_ONLY
 #ifdef LIGHT_SPACE_UPSTREAM
 // The bricks of this volume that lie between this one and the light, drawn by other
 // processes (vtkDeepShadowBrickExchange): their total transmittance per texel, one layer per
@@ -257,36 +296,10 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
   }
 #endif
 #if !defined(LIGHT_SPACE_CLUSTERS) || defined(LIGHT_SPACE_CUBES)
-  LightSpaceFace face = lightSpaceFaceOf(slot);
-  vec3 d = position - face.origin;
-  int cubeFace = 0;
-#ifdef LIGHT_SPACE_CUBES
-  if (lightSpaceFaceCountOf(slot) == 6)
-  {
-    // Cube faces in the order +x, -x, +y, -y, +z, -z.
-    vec3 a = abs(d);
-    if (a.x >= a.y && a.x >= a.z)
-    {
-      cubeFace = d.x >= 0.0 ? 0 : 1;
-    }
-    else if (a.y >= a.z)
-    {
-      cubeFace = d.y >= 0.0 ? 2 : 3;
-    }
-    else
-    {
-      cubeFace = d.z >= 0.0 ? 4 : 5;
-    }
-    vec3 axes[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
-      vec3(0, 0, 1), vec3(0, 0, -1));
-    face.forward = axes[cubeFace];
-    vec3 helper = abs(face.forward.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-    face.right = normalize(cross(face.forward, helper));
-    face.up = cross(face.right, face.forward);
-  }
-#endif
-  vec3 at;
-  if (!lightSpaceLocate(face, d, at))
+  LightSpaceFace face;
+  vec3 d, at;
+  int cubeFace;
+  if (!lightSpacePoint(slot, position, face, d, cubeFace, at))
   {
     return vec3(1.0);
   }
@@ -298,3 +311,4 @@ vec3 lightVisibility(int slot, vec3 position, vec3 toLight, float lightDistance,
   return visibility;
 #endif
 }
+#endif

@@ -1,13 +1,24 @@
 // Lookup of "shadowmap": the depth of the first sample above the threshold per texel,
 // percentage-closer filtered (FilterShadowMap in Core/Shadows/ShadowMap.cxx is the CPU twin).
-// SHADOW_FILTER and the Poisson disc are defined by the technique from Core's tables.
+// SHADOW_FILTER and the Poisson disc are defined by the technique from Core's tables. The
+// filter is the resolution-matched map's too (SHADOW_MAP_PAGES: `layer` is then a page's slot,
+// Shadows/ResolutionMatched.glsl, which defines shadowMapDepth and mapVisibility).
 //@Dec
 uniform float u_shadowBias; // world units
+
+#ifdef SHADOW_MAP_PAGES
+float shadowMapDepth(int layer, ivec2 texel);
+#else
+float shadowMapDepth(int layer, ivec2 texel)
+{
+  return lightSpaceTexel(texel, layer).r;
+}
+#endif
 
 float shadowLit(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
-  return depth <= lightSpaceTexel(texel, layer).r ? 1.0 : 0.0;
+  return depth <= shadowMapDepth(layer, texel) ? 1.0 : 0.0;
 }
 
 float filteredShadow(int layer, vec2 xy, float depth, vec2 slope)
@@ -40,7 +51,9 @@ float filteredShadow(int layer, vec2 xy, float depth, vec2 slope)
 #endif
 }
 
+#ifndef SHADOW_MAP_PAGES
 vec3 mapVisibility(int layer, vec2 xy, float depth, vec2 slope)
 {
   return vec3(filteredShadow(layer, xy, depth - u_shadowBias, slope));
 }
+#endif

@@ -37,5 +37,5 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   g_depth = NoHit;
   g_transmittance = 1.0;
   marchTexel(indexOrigin, indexDirection, tEnter, tExit);
-  imageStore(u_output, ivec3(g_texel, u_layer), vec4(g_depth));
+  imageStore(u_output, lightSpaceOutputTexel(), vec4(g_depth));
 }

@@ -11,6 +11,7 @@
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowShadowMapTechnique.h"
+#include "vtkDeepShadowTechniqueFactory.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkLight.h"
@@ -64,7 +65,8 @@ int TestShadowTechniques(int argc, char* argv[])
     { "shadowmap, no filter", Map(vtkDeepShadowShadowMapTechnique::NoFilter), true },
     { "shadowmap, 2x2", Map(vtkDeepShadowShadowMapTechnique::PCF2x2), true },
     { "shadowmap, 3x3", Map(vtkDeepShadowShadowMapTechnique::PCF3x3), true },
-    { "shadowmap, Poisson", Map(vtkDeepShadowShadowMapTechnique::PoissonDisc), true } };
+    { "shadowmap, Poisson", Map(vtkDeepShadowShadowMapTechnique::PoissonDisc), true },
+    { "rmsm", vtkDeepShadowTechniqueFactory::New("rmsm"), true } };
   bool ok = true;
   for (const Case& c : cases)
   {

@@ -1,0 +1,150 @@
+// Resolution-matched shadow maps (vtkDeepShadowResolutionMatchedTechnique, paper 004) on the
+// GPU: the shadow scene's volume, a small caster, over a large ground mesh, the camera close
+// to the ground where the volume's shadow ends. The GPU matches its CPU twin (which makes the
+// same page requests from the same camera) within the binary tolerances of
+// TestShadowTechniques; against exact opaque visibility (the CPU's opaque rays) its error is
+// well below a 512^2 shadow map's; a second frame builds no page, a turned camera only the
+// pages it newly needs, and without kept pages every frame builds them all (the same
+// picture); an atlas too small for the pages coarsens the finest level; one too small for
+// the base level is a clear error.
+#include "DeepShadowTestUtilities.h"
+#include "vtkDeepShadowPass.h"
+#include "vtkDeepShadowPolyDataMapper.h"
+#include "vtkDeepShadowRayTechnique.h"
+#include "vtkDeepShadowResolutionMatchedTechnique.h"
+#include "vtkDeepShadowShadowMapTechnique.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkPlaneSource.h"
+#include "vtkProperty.h"
+
+#include <cmath>
+#include <string>
+
+using deepshadow::testing::Check;
+using deepshadow::testing::Grab;
+using deepshadow::testing::WithinTolerance;
+
+namespace
+{
+double Rmse(const deepshadow::Image& a, const deepshadow::Image& b)
+{
+  double sum = 0.0;
+  for (int y = 0; y < a.Height; ++y)
+    for (int x = 0; x < a.Width; ++x)
+    {
+      const glm::dvec3 d = a.At(x, y) - b.At(x, y);
+      sum += glm::dot(d, d) / 3.0;
+    }
+  return std::sqrt(sum / (static_cast<double>(a.Width) * a.Height));
+}
+
+std::string Counts(vtkDeepShadowResolutionMatchedTechnique* rmsm)
+{
+  return std::to_string(rmsm->GetPagesRequested()) + " requests, " + std::to_string(rmsm->GetRequestsAfterComponents()) +
+    " after components, " + std::to_string(rmsm->GetPagesUnique()) + " unique, " +
+    std::to_string(rmsm->GetPagesRendered()) + " built in " + std::to_string(rmsm->GetSuperpages()) +
+    " superpages, " + std::to_string(rmsm->GetPagesResident()) + " resident";
+}
+}
+
+int TestResolutionMatchedShadows(int argc, char* argv[])
+{
+  deepshadow::testing::ShadowScene scene;
+  vtkDeepShadowRenderWindow* window = scene.Window;
+  vtkRenderer* renderer = scene.Renderer;
+  bool ok = true;
+  vtkNew<vtkDeepShadowPass> pass;
+  renderer->SetPass(pass);
+  // The volume spans [-47, 47]^3; the ground, 8 times as wide, lies just under it.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-400.0, -400.0, -52.0);
+  plane->SetPoint1(400.0, -400.0, -52.0);
+  plane->SetPoint2(-400.0, 400.0, -52.0);
+  vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
+  groundMapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> ground;
+  ground->SetMapper(groundMapper);
+  ground->GetProperty()->SetColor(0.85, 0.85, 0.8);
+  renderer->AddActor(ground);
+  // Close to the ground by the volume's corner, looking along the edge of its shadow.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(40.0, -110.0, -30.0);
+  camera->SetFocalPoint(30.0, -40.0, -52.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+  window->SetSize(160, 160);
+
+  vtkNew<vtkDeepShadowResolutionMatchedTechnique> rmsm;
+  deepshadow::Image gpu;
+  ok = scene.MatchesTwin("rmsm vs CPU twin", rmsm, 4.0 / 255.0, 24.0 / 255.0, 0.03, gpu) && ok;
+  const int pagesBuilt = rmsm->GetPagesRendered();
+  ok = Check("one analysis per frame, though the pass and the mapper both prepare", rmsm->GetAnalyses() == 1) && ok;
+  ok = Check("the analysis deduplicates (" + Counts(rmsm) + ")",
+         rmsm->GetPagesRequested() > 160 * 160 / 4 && rmsm->GetRequestsAfterComponents() < rmsm->GetPagesRequested() / 4 &&
+           rmsm->GetPagesUnique() > 0 && rmsm->GetPagesUnique() <= rmsm->GetRequestsAfterComponents() &&
+           pagesBuilt == rmsm->GetPagesResident() && pagesBuilt > 16 && rmsm->GetSuperpages() >= 1) && ok;
+  ok = Check("the finest level is used (" + std::to_string(rmsm->GetFinestLevelUsed()) + ")",
+         rmsm->GetFinestLevelUsed() == 9) && ok;
+
+  // Against exact opaque visibility: the error is the 512^2 map's at most half.
+  vtkNew<vtkDeepShadowRayTechnique> exact;
+  exact->OpaqueOn();
+  scene.Mapper->SetShadowTechnique(exact);
+  const deepshadow::Image truth = deepshadow::testing::Reference(renderer, false);
+  vtkNew<vtkDeepShadowShadowMapTechnique> map;
+  scene.Mapper->SetShadowTechnique(map);
+  window->Render();
+  const double mapError = Rmse(Grab(window), truth), rmsmError = Rmse(gpu, truth);
+  char text[160];
+  std::snprintf(text, sizeof(text), "against exact visibility: RMSE %.4f, the 512^2 map's %.4f", rmsmError, mapError);
+  ok = Check(text, rmsmError < 0.5 * mapError) && ok;
+
+  // Kept pages: the same view builds none, a turned camera only the pages it newly needs.
+  scene.Mapper->SetShadowTechnique(rmsm);
+  window->Render();
+  const int builds = rmsm->GetBuildCount();
+  const int analyses = rmsm->GetAnalyses();
+  window->Render();
+  ok = Check("the same view runs no analysis and builds no page",
+         rmsm->GetAnalyses() == analyses && rmsm->GetBuildCount() == builds) && ok;
+  camera->Azimuth(3.0);
+  window->Render();
+  const deepshadow::Image turned = Grab(window);
+  ok = Check("a turned camera builds only new pages (" + Counts(rmsm) + ")",
+         rmsm->GetPagesRendered() > 0 && rmsm->GetPagesRendered() < rmsm->GetPagesResident() &&
+           rmsm->GetBuildCount() == builds + 1) && ok;
+  ok = WithinTolerance("rmsm, turned, vs CPU twin", turned, deepshadow::testing::Reference(renderer, true), 4.0 / 255.0,
+         24.0 / 255.0, 0.03) && ok;
+  // Without kept pages every frame builds all it needs: the same picture.
+  vtkNew<vtkDeepShadowResolutionMatchedTechnique> fresh;
+  fresh->KeepPagesOff();
+  scene.Mapper->SetShadowTechnique(fresh);
+  window->Render();
+  window->Render();
+  ok = Check("without kept pages every frame builds them all (" + Counts(fresh) + ")",
+         fresh->GetPagesRendered() == fresh->GetPagesResident() && fresh->GetPagesRendered() > 16) && ok;
+  ok = Check("and draws the same picture", Rmse(Grab(window), turned) == 0.0) && ok;
+
+  // An atlas of 8 x 8 slots cannot hold the finest pages: a coarser finest level.
+  fresh->SetAtlasSize(8 * 34);
+  window->Render();
+  ok = Check("a small atlas coarsens the finest level (" + std::to_string(fresh->GetFinestLevelUsed()) + ", " +
+      Counts(fresh) + ")",
+         fresh->GetFinestLevelUsed() < 9 && fresh->GetPagesResident() <= 64 && scene.Mapper->GetLastError().empty()) && ok;
+  // One slot cannot hold the base level's 16 pages: said, nothing shadowed.
+  fresh->SetAtlasSize(64);
+  vtkNew<deepshadow::testing::MessageCapture> messages;
+  messages->Watch(scene.Mapper);
+  window->Render();
+  ok = Check("an atlas too small for the base level is said (" + scene.Mapper->GetLastError() + ")",
+         scene.Mapper->GetLastError().find("atlas") != std::string::npos) && ok;
+
+  scene.Mapper->SetShadowTechnique(rmsm);
+  camera->Azimuth(-3.0);
+  window->Render();
+  const int result = deepshadow::testing::RegressionTestImage(window, argc, argv);
+  return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
