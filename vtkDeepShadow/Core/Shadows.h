@@ -134,7 +134,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   int PageSize = 32;        // texels per page side
   int AtlasSize = 1024;     // texels per side of the atlas the pages live in
   int MaxResolution = 16384; // texels per side of the finest level (the virtual map)
-  int AnalysisDownsample = 1; // every N-th pixel of the camera image asks for pages
+  int AnalysisDownsample = 4; // every N-th pixel (each way) of the camera image asks for pages
   /** Keep built pages across frames while the light and casters stay (cached mode). */
   bool KeepPages = true;
 

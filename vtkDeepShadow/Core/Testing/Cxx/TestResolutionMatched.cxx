@@ -297,6 +297,7 @@ TEST(ResolutionMatched, TheCameraAsksForFinePagesNearItAndSharpensTheShadow)
   ShadowCaster caster = scene.Caster;
   caster.View = &camera;
   ShadowParameters p = Rmsm(8192);
+  p.AnalysisDownsample = 1;
   const auto shadow = MakeLightShadow(p, caster, light, step, 2);
   const auto* twin = dynamic_cast<const ResolutionMatchedShadow*>(shadow.get());
   ASSERT_NE(twin, nullptr);

@@ -83,7 +83,7 @@ int TestResolutionMatchedShadows(int argc, char* argv[])
   const int pagesBuilt = rmsm->GetPagesRendered();
   ok = Check("one analysis per frame, though the pass and the mapper both prepare", rmsm->GetAnalyses() == 1) && ok;
   ok = Check("the analysis deduplicates (" + Counts(rmsm) + ")",
-         rmsm->GetPagesRequested() > 160 * 160 / 4 && rmsm->GetRequestsAfterComponents() < rmsm->GetPagesRequested() / 4 &&
+         rmsm->GetPagesRequested() > 40 * 40 / 4 && rmsm->GetRequestsAfterComponents() < rmsm->GetPagesRequested() / 4 &&
            rmsm->GetPagesUnique() > 0 && rmsm->GetPagesUnique() <= rmsm->GetRequestsAfterComponents() &&
            pagesBuilt == rmsm->GetPagesResident() && pagesBuilt > 16 && rmsm->GetSuperpages() >= 1) && ok;
   ok = Check("the finest level is used (" + std::to_string(rmsm->GetFinestLevelUsed()) + ")",
