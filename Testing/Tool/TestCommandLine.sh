@@ -45,6 +45,12 @@ expect 2 "--chunk-nodes beyond 64" "chunk-nodes" -- "$tool" render --technique d
 expect 0 "sparse with 4 objects, chunked deep shadow map" -- "$tool" render --scene sparse --scale 0.25 --objects 4 \
   --technique dsm --chunk-nodes 4 --size 32x32 --frames 1 --out x.png --json x.json
 grep -q '"chunks_used": [1-9]' x.json || fail "chunked render: chunks_used in its JSON"
+expect 2 "rmsm page size not a power of 2" "page-size" -- "$tool" render --technique rmsm --page-size 33 --out x.png
+expect 2 "rmsm virtual size not allowed" "max-resolution" -- "$tool" render --technique rmsm --max-resolution 5000 --out x.png
+expect 2 "rmsm atlas too small for the base level" "raise the atlas size" -- "$tool" render --technique rmsm --atlas-size 100 --out x.png
+expect 0 "rmsm on the box" -- "$tool" render --scene box --scale 0.25 --technique rmsm --size 48x48 --frames 1 \
+  --out x.png --json x.json
+grep -q '"pages_unique": [1-9]' x.json && grep -q '"superpages": [1-9]' x.json || fail "rmsm render: its pages in its JSON"
 expect 2 "unknown scene" -- "$tool" render --scene teapot --out x.png
 expect 2 "unknown technique" -- "$tool" render --technique magic --out x.png
 expect 2 "threshold out of range" -- "$tool" render --technique shadowmap --shadow-threshold 2 --out x.png
