@@ -17,7 +17,8 @@ tool="$build/bin/deepshadow"
 scenes=$("$tool" scenes | awk 'NF > 1 && $1 !~ /:$/ && $1 ~ /^[a-z0-9-]+$/ {print $1}')
 techniques="none rays rays-opaque rays-color shadowmap dsm dsm-color dsm3 cssm
   rays-cached shadowmap-cached dsm-cached dsm3-cached cssm-cached
-  shadowmap:pcf=poisson dsm:layers=2:epsilon=0.05 rays-opaque:threshold-on=opacity dsm-clustered dsm:chunk-nodes=4"
+  shadowmap:pcf=poisson dsm:layers=2:epsilon=0.05 rays-opaque:threshold-on=opacity dsm-clustered dsm:chunk-nodes=4
+  rmsm rmsm:pcf=poisson"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -206,6 +206,64 @@ std::vector<std::uint32_t> FitPages(
   return pages;
 }
 
+SlotAssignment AssignSlots(const std::vector<std::uint32_t>& pages, std::map<std::uint32_t, int>& resident, int capacity)
+{
+  SlotAssignment assignment;
+  assignment.SlotOf.assign(pages.size(), -1);
+  // Per slot: 0 free, 1 holding a page not needed now, 2 taken.
+  std::vector<char> taken(static_cast<size_t>(capacity), 0);
+  for (const auto& [page, slot] : resident)
+  {
+    taken[static_cast<size_t>(slot)] = 1;
+  }
+  for (size_t i = 0; i < pages.size(); ++i)
+  {
+    const auto kept = resident.find(pages[i]);
+    if (kept != resident.end())
+    {
+      assignment.SlotOf[i] = kept->second;
+      taken[static_cast<size_t>(kept->second)] = 2;
+    }
+  }
+  // Free slots first, then those of pages not needed now.
+  for (char below = 1; below <= 2; ++below)
+  {
+    size_t free = 0;
+    for (size_t i = 0; i < pages.size(); ++i)
+    {
+      if (assignment.SlotOf[i] >= 0)
+      {
+        continue;
+      }
+      while (free < taken.size() && taken[free] >= below)
+      {
+        ++free;
+      }
+      if (free == taken.size())
+      {
+        break;
+      }
+      assignment.SlotOf[i] = static_cast<int>(free);
+      taken[free] = 2;
+      assignment.Build.emplace_back(pages[i], static_cast<int>(free));
+    }
+  }
+  std::vector<char> rebuilt(taken.size(), 0);
+  for (const auto& entry : assignment.Build)
+  {
+    rebuilt[static_cast<size_t>(entry.second)] = 1;
+  }
+  for (auto page = resident.begin(); page != resident.end();)
+  {
+    page = rebuilt[static_cast<size_t>(page->second)] ? resident.erase(page) : std::next(page);
+  }
+  for (const auto& [page, slot] : assignment.Build)
+  {
+    resident[page] = slot;
+  }
+  return assignment;
+}
+
 std::vector<std::uint32_t> BuildPageTable(const std::vector<std::uint32_t>& pages, const std::vector<int>& slots,
   int faces, const PageLayout& layout)
 {
@@ -304,8 +362,6 @@ ResolutionMatchedShadow::ResolutionMatchedShadow(const ShadowParameters& paramet
   const int slotSize = this->Layout.SlotSize();
   const size_t slotTexels = static_cast<size_t>(slotSize) * slotSize;
   this->Depths.assign(this->Pages.size() * slotTexels, NoHit);
-  const bool skipEmpty = parameters.Mode != ThresholdMode::Scalar;
-  const EmptySpaceMap* empty = skipEmpty ? caster.Empty : nullptr;
   ParallelFor(
     static_cast<int>(this->Pages.size()),
     [&](int page) {
@@ -320,26 +376,8 @@ ResolutionMatchedShadow::ResolutionMatchedShadow(const ShadowParameters& paramet
           const int vy = py * this->Layout.PageSize + sy - this->Layout.Apron;
           glm::dvec3 origin, direction;
           this->Faces[f].TexelRay(2.0 * (vx + 0.5) / levelSize - 1.0, 2.0 * (vy + 0.5) / levelSize - 1.0, origin, direction);
-          float& depth = this->Depths[static_cast<size_t>(page) * slotTexels + static_cast<size_t>(sy) * slotSize + sx];
-          OccluderTest occluder(caster, parameters, step);
-          MarchTexelRay(
-            caster, origin, direction, step, empty,
-            [&](long, double t, const CastSample& sample, bool skipped) {
-              if (!skipped && occluder.Sample(sample))
-              {
-                depth = static_cast<float>(t);
-                return false;
-              }
-              return true;
-            },
-            [&](double t, int surface) {
-              if (occluder.Surface(surface))
-              {
-                depth = static_cast<float>(t);
-                return false;
-              }
-              return true;
-            });
+          this->Depths[static_cast<size_t>(page) * slotTexels + static_cast<size_t>(sy) * slotSize + sx] =
+            FirstOccluder(caster, parameters, step, caster.Empty, origin, direction);
         }
       }
     },
@@ -352,8 +390,6 @@ void ResolutionMatchedShadow::Analyse(const Camera& view, int threads)
   const int width = (view.GetWidth() + downsample - 1) / downsample;
   const int height = (view.GetHeight() + downsample - 1) / downsample;
   std::vector<AnalysisTexel> texels(static_cast<size_t>(width) * height);
-  const bool skipEmpty = this->Parameters.Mode != ThresholdMode::Scalar;
-  const EmptySpaceMap* empty = skipEmpty ? this->Caster.Empty : nullptr;
   ParallelFor(
     height,
     [&](int j) {
@@ -361,31 +397,12 @@ void ResolutionMatchedShadow::Analyse(const Camera& view, int threads)
       {
         // The receiver the pixel shows: the first occluder along its ray, as a texel's.
         const Ray ray = view.RayThrough((i + 0.5) * downsample, (j + 0.5) * downsample);
-        double hit = -1.0;
-        OccluderTest occluder(this->Caster, this->Parameters, this->Step);
-        MarchTexelRay(
-          this->Caster, ray.Origin, ray.Direction, this->Step, empty,
-          [&](long, double t, const CastSample& sample, bool skipped) {
-            if (!skipped && occluder.Sample(sample))
-            {
-              hit = static_cast<double>(static_cast<float>(t));
-              return false;
-            }
-            return true;
-          },
-          [&](double t, int surface) {
-            if (occluder.Surface(surface))
-            {
-              hit = static_cast<double>(static_cast<float>(t));
-              return false;
-            }
-            return true;
-          });
-        if (hit < 0.0)
+        const float hit = FirstOccluder(this->Caster, this->Parameters, this->Step, this->Caster.Empty, ray.Origin, ray.Direction);
+        if (hit == NoHit)
         {
           continue;
         }
-        const glm::dvec3 p = ray.Origin + hit * ray.Direction;
+        const glm::dvec3 p = ray.Origin + static_cast<double>(hit) * ray.Direction;
         AnalysisTexel& texel = texels[static_cast<size_t>(j) * width + i];
         texel.Receiver = p;
         texel.Face = ShadowMapFaceFor(this->Faces, p - this->Faces[0].Origin);

@@ -31,6 +31,8 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace deepshadow
@@ -114,6 +116,21 @@ VTKDEEPSHADOWCORE_EXPORT std::vector<std::uint32_t> UniquePages(std::vector<std:
  */
 VTKDEEPSHADOWCORE_EXPORT std::vector<std::uint32_t> FitPages(
   const std::vector<std::uint32_t>& unique, const std::vector<int>& faces, const PageLayout& layout, int& finest);
+
+/** Where pages go in the atlas (AssignSlots). */
+struct SlotAssignment
+{
+  std::vector<int> SlotOf; // per page
+  std::vector<std::pair<std::uint32_t, int>> Build; // the pages to build (key, slot), in order
+};
+
+/**
+ * The atlas slots of `pages` (at most `capacity`) when built pages are kept: a page in
+ * `resident` (page -> slot) keeps its slot; a new one takes a free slot, then one whose page
+ * is not among `pages` (evicting it). `resident` becomes exactly what the slots hold.
+ */
+VTKDEEPSHADOWCORE_EXPORT SlotAssignment AssignSlots(
+  const std::vector<std::uint32_t>& pages, std::map<std::uint32_t, int>& resident, int capacity);
 
 /** A page table entry: the slot of the page and its level. */
 inline std::uint32_t PageTableEntry(int slot, int level)

@@ -81,31 +81,41 @@ ShadowMapShadow::ShadowMapShadow(const ShadowParameters& parameters, const Shado
   : LightSpaceShadow(parameters, caster, light, step)
 {
   this->Depths.assign(this->TexelCount(), NoHit);
-  // Zero-opacity blocks hold no occluder, unless the threshold is on the scalar.
-  const bool skipEmpty = parameters.Mode != ThresholdMode::Scalar;
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
-    const EmptySpaceMap* empty = skipEmpty ? this->FaceCaster(f).Empty : nullptr;
-    float& depth = this->Depths[this->Texel(f, x, y)];
-    OccluderTest occluder(caster, parameters, step);
-    MarchTexelRay(
-      this->FaceCaster(f), origin, direction, step, empty,
-      [&](long, double t, const CastSample& scalar, bool skipped) {
-        if (!skipped && occluder.Sample(scalar))
-        {
-          depth = static_cast<float>(t);
-          return false;
-        }
-        return true;
-      },
-      [&](double t, int surface) {
-        if (occluder.Surface(surface))
-        {
-          depth = static_cast<float>(t);
-          return false;
-        }
-        return true;
-      });
+    this->Depths[this->Texel(f, x, y)] =
+      FirstOccluder(this->FaceCaster(f), parameters, step, this->FaceCaster(f).Empty, origin, direction);
   });
+}
+
+float FirstOccluder(const ShadowCaster& caster, const ShadowParameters& parameters, double step,
+  const EmptySpaceMap* empty, const glm::dvec3& origin, const glm::dvec3& direction)
+{
+  // Zero-opacity blocks hold no occluder, unless the threshold is on the scalar.
+  if (parameters.Mode == ThresholdMode::Scalar)
+  {
+    empty = nullptr;
+  }
+  float depth = NoHit;
+  OccluderTest occluder(caster, parameters, step);
+  MarchTexelRay(
+    caster, origin, direction, step, empty,
+    [&](long, double t, const CastSample& scalar, bool skipped) {
+      if (!skipped && occluder.Sample(scalar))
+      {
+        depth = static_cast<float>(t);
+        return false;
+      }
+      return true;
+    },
+    [&](double t, int surface) {
+      if (occluder.Surface(surface))
+      {
+        depth = static_cast<float>(t);
+        return false;
+      }
+      return true;
+    });
+  return depth;
 }
 
 glm::dvec3 ShadowMapShadow::MapVisibility(const MapPoint& point) const

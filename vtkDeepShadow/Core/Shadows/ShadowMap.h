@@ -28,6 +28,14 @@ VTKDEEPSHADOWCORE_EXPORT const std::vector<glm::dvec2>& PoissonDisc();
 VTKDEEPSHADOWCORE_EXPORT double FilterShadowMap(const float* depths, int size, double x,
   double y, double depth, ShadowFilter filter, const glm::dvec2& slope = glm::dvec2(0.0));
 
+/**
+ * The shadow map's occluder along a ray (MarchTexelRay, OccluderTest): the depth of the
+ * first sample or casting-surface crossing that blocks it, NoHit if none does. `empty`
+ * blocks are skipped (not with the threshold on the scalar).
+ */
+VTKDEEPSHADOWCORE_EXPORT float FirstOccluder(const ShadowCaster& caster, const ShadowParameters& parameters,
+  double step, const EmptySpaceMap* empty, const glm::dvec3& origin, const glm::dvec3& direction);
+
 class VTKDEEPSHADOWCORE_EXPORT ShadowMapShadow : public LightSpaceShadow
 {
 public:

@@ -49,13 +49,16 @@ void deferTexel()
 //DeepShadow::Build::Dec
 #if defined(LIGHT_SPACE_PAGES)
 // Resolution-matched maps (Core/Shadows/ResolutionMatched.h): one invocation per texel of a
-// page's slot, apron included, one page per z; a dispatch covers one superpage (one face,
-// one level: u_size is the level's texels per side). g_texel is the texel of the level.
+// page's slot, apron included, the slots' texels one after the other, 64 to a group (a
+// slot of 34^2 in groups of 8 x 8 would leave 28 % of the lanes idle); a dispatch covers
+// one superpage (one face, one level: u_size is the level's texels per side). g_texel is
+// the texel of the level.
 layout(std430, binding = 3) readonly buffer Pages
 {
   uint pages[]; // (key, slot) per page (deepshadow::EncodePage)
 } u_pages;
-uniform int u_pageOffset;
+uniform int u_pageOffset; // the superpage's first page in the list
+uniform int u_pageCount;  // its pages
 uniform int u_pageSize;
 uniform int u_apron;
 uniform int u_slotsPerSide;
@@ -168,12 +171,13 @@ void main()
 {
 #if defined(LIGHT_SPACE_PAGES)
   int slotSize = u_pageSize + 2 * u_apron;
-  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(local, ivec2(slotSize))))
+  int texel = int(gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex);
+  if (texel >= u_pageCount * slotSize * slotSize)
   {
     return;
   }
-  uint index = uint(u_pageOffset) + gl_GlobalInvocationID.z;
+  ivec2 local = ivec2(texel % slotSize, (texel / slotSize) % slotSize);
+  uint index = uint(u_pageOffset + texel / (slotSize * slotSize));
   uint key = u_pages.pages[2u * index];
   int slot = int(u_pages.pages[2u * index + 1u]);
   g_texel = ivec2(key & 2047u, (key >> 11) & 2047u) * u_pageSize + local - u_apron;

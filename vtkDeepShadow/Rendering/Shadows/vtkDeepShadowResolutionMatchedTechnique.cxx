@@ -6,11 +6,11 @@
 #include "Core/Shadows/ResolutionMatched.h"
 #include "Core/Shadows/ShadowMap.h"
 #include "GL/ComputeProgram.h"
+#include "GL/GLObjects.h"
 #include "LightSpaceFaces.h"
-#include "ShaderComposer.h"
+#include "PageAnalysis.h"
 #include "Volume/ShadowContext.h"
 #include "vtkDeepShadowLightSpaceCS.h"
-#include "vtkDeepShadowPageRequestsCS.h"
 #include "vtkDeepShadowResolutionMatched.h"
 #include "vtkDeepShadowShadowMapBuild.h"
 
@@ -32,60 +32,6 @@ namespace
 {
 // Superpages are 1024^2 texels (section 3.3.3): pages of one face and level within one.
 constexpr int SuperpageTexels = 1024;
-
-unsigned int NewTexture(vtkOpenGLRenderWindow* window, unsigned int format, int width, int height, int layers)
-{
-  unsigned int texture = 0;
-  glGenTextures(1, &texture);
-  // Bound on a unit of our own, chosen through VTK's state (which caches the active unit).
-  vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  const int unit = units->Allocate();
-  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
-  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, width, height, layers);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  units->Free(unit);
-  return texture;
-}
-
-void DeleteTexture(unsigned int& texture)
-{
-  if (texture)
-  {
-    glDeleteTextures(1, &texture);
-    texture = 0;
-  }
-}
-
-// A shader storage buffer of at least `bytes` (grown, never shrunk).
-void EnsureBuffer(unsigned int& buffer, long long& allocated, long long bytes)
-{
-  if (!buffer)
-  {
-    glGenBuffers(1, &buffer);
-    allocated = 0;
-  }
-  if (allocated < bytes)
-  {
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
-    allocated = bytes;
-  }
-}
-
-int NextPowerOfTwo(int n)
-{
-  int p = 1;
-  while (p < n)
-  {
-    p <<= 1;
-  }
-  return p;
-}
 
 // The nearest value the registry allows `key` (a power of two), warning if it is not `value`.
 int Allowed(vtkObject* self, const char* name, const char* key, int value)
@@ -121,12 +67,10 @@ public:
   unsigned int Atlas = 0; // AtlasSize^2 R32F, one layer
   unsigned int Table = 0; // TableSize^2 R32UI per face layer
   int TableLayers = 0;
-  unsigned int Hits = 0;  // the analysis pixels' first-occluder distances, R32F
-  glm::ivec2 HitsSize{ 0 };
-  unsigned int Requests = 0, List = 0, Unique = 0, PageList = 0;
-  long long RequestsBytes = 0, ListBytes = 0, UniqueBytes = 0, PageListBytes = 0;
-  deepshadow::ComputeProgram CameraPass, PageBuild;
-  deepshadow::ComputeProgram Stages[4];
+  deepshadow::PageAnalysis Requests; // the analysis
+  unsigned int PageList = 0;          // the pages to build: (key, slot) each
+  long long PageListBytes = 0;
+  deepshadow::ComputeProgram PageBuild;
   std::map<std::uint32_t, int> Resident; // page -> slot
   std::vector<std::uint32_t> TablePages; // what the table was built from
   std::vector<int> TableSlots;
@@ -143,26 +87,12 @@ public:
 
   void Release()
   {
-    DeleteTexture(this->Atlas);
-    DeleteTexture(this->Table);
-    DeleteTexture(this->Hits);
-    for (unsigned int* buffer : { &this->Requests, &this->List, &this->Unique, &this->PageList })
-    {
-      if (*buffer)
-      {
-        glDeleteBuffers(1, buffer);
-        *buffer = 0;
-      }
-    }
-    this->RequestsBytes = this->ListBytes = this->UniqueBytes = this->PageListBytes = 0;
-    this->HitsSize = glm::ivec2(0);
+    deepshadow::DeleteTexture(this->Atlas);
+    deepshadow::DeleteTexture(this->Table);
+    deepshadow::DeleteBuffer(this->PageList, this->PageListBytes);
     this->TableLayers = 0;
-    this->CameraPass.Release();
+    this->Requests.Release();
     this->PageBuild.Release();
-    for (deepshadow::ComputeProgram& stage : this->Stages)
-    {
-      stage.Release();
-    }
     this->Resident.clear();
     this->TablePages.clear();
     this->TableSlots.clear();
@@ -188,9 +118,6 @@ public:
   void BindLookup(deepshadow::UniformSink& sink, const deepshadow::ShadowContext& context) override;
 
 private:
-  /** The unique pages the analysis pixels request, sorted; false (LastError) on failure. */
-  bool Analyse(deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots,
-    std::vector<std::uint32_t>& unique);
   /** Builds `pages` (key, slot pairs, sorted by key) superpage by superpage. */
   bool BuildPages(deepshadow::ShadowContext& context, const std::vector<std::pair<std::uint32_t, int>>& pages);
 
@@ -410,15 +337,15 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::AllocateStructures(
   {
     // errors of earlier GL calls are not ours to report
   }
-  DeleteTexture(state.Atlas);
-  DeleteTexture(state.Table);
-  state.Atlas = NewTexture(context.Window, GL_R32F, layout.AtlasSize, layout.AtlasSize, 1);
-  state.Table = NewTexture(context.Window, GL_R32UI, layout.TableSize(), layout.TableSize(), tableLayers);
+  deepshadow::DeleteTexture(state.Atlas);
+  deepshadow::DeleteTexture(state.Table);
+  state.Atlas = deepshadow::NewArrayTexture(context.Window, GL_R32F, layout.AtlasSize, layout.AtlasSize, 1);
+  state.Table = deepshadow::NewArrayTexture(context.Window, GL_R32UI, layout.TableSize(), layout.TableSize(), tableLayers);
   if (glGetError() != GL_NO_ERROR)
   {
     self->LastError = "the GL could not allocate the page atlas (" + std::to_string(layout.AtlasSize) + "^2) and table";
-    DeleteTexture(state.Atlas);
-    DeleteTexture(state.Table);
+    deepshadow::DeleteTexture(state.Atlas);
+    deepshadow::DeleteTexture(state.Table);
     return false;
   }
   state.Layout = layout;
@@ -445,143 +372,6 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::BuildStructures(
   }
   state.TablePages.clear();
   state.Dirty = true;
-  return true;
-}
-
-bool vtkDeepShadowResolutionMatchedTechnique::Hooks::Analyse(deepshadow::ShadowContext& context,
-  const deepshadow::ShadowSlots& slots, std::vector<std::uint32_t>& unique)
-{
-  vtkDeepShadowResolutionMatchedTechnique* self = this->Self;
-  Pages& state = *self->State;
-  const deepshadow::PageLayout& layout = state.Layout;
-  const int downsample = self->AnalysisDownsample;
-  const glm::ivec2 viewport(context.View.GetWidth(), context.View.GetHeight());
-  const glm::ivec2 size = (viewport + downsample - 1) / downsample;
-  const glm::mat4 inverseViewProjection(context.View.GetInverseViewProjection());
-
-  // 1. The receiver each analysis pixel shows: the first occluder along its ray.
-  if (!state.Hits || state.HitsSize != size)
-  {
-    DeleteTexture(state.Hits);
-    state.Hits = NewTexture(context.Window, GL_R32F, size.x, size.y, 1);
-    state.HitsSize = size;
-  }
-  if (!Internals::BeginBuildPass(self, state.CameraPass, vtkDeepShadowLightSpaceCS, context, "Build",
-        "//@Dec\n#define LIGHT_SPACE_CAMERA\n" + std::string(vtkDeepShadowShadowMapBuild)))
-  {
-    return false;
-  }
-  state.CameraPass.Set("u_inverseViewProjection", inverseViewProjection);
-  state.CameraPass.Set("u_viewport", glm::vec2(viewport));
-  state.CameraPass.Set("u_downsample", downsample);
-  state.CameraPass.Set("u_analysisSize", size);
-  state.CameraPass.Set("u_layer", 0);
-  state.CameraPass.Set("u_deferredPass", 0);
-  glBindImageTexture(0, state.Hits, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  state.CameraPass.Dispatch(glm::ivec3(size, 1), glm::ivec3(8, 8, 1));
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  Internals::EndBuildPass(self, context);
-  self->LastPasses.emplace_back("page-analysis");
-
-  // 2. Requests, deduplicated: one program per stage of vtkDeepShadowPageRequestsCS.
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  runtime["Locate"] = deepshadow::ShaderFeature(
-    "Locate", "//@Dec\n#define LIGHT_SPACE_LOCATE_ONLY\n" + deepshadow::LightSpaceSource(state.Faces));
-  const std::string composed = deepshadow::ComposeShader(vtkDeepShadowPageRequestsCS, {}, runtime);
-  const size_t version = composed.find('\n') + 1;
-  for (int stage = 0; stage < 4; ++stage)
-  {
-    std::string source = composed;
-    source.insert(version, "#define PAGE_STAGE " + std::to_string(stage) + "\n");
-    if (!state.Stages[stage].Build(source))
-    {
-      self->LastError = state.Stages[stage].Error();
-      return false;
-    }
-  }
-  const long long requests = static_cast<long long>(size.x) * size.y * slots.Count();
-  const int padded = NextPowerOfTwo(static_cast<int>(std::max<long long>(requests, 2)));
-  EnsureBuffer(state.Requests, state.RequestsBytes, 4 * requests);
-  EnsureBuffer(state.List, state.ListBytes, 4 * (1 + static_cast<long long>(padded)));
-  EnsureBuffer(state.Unique, state.UniqueBytes, 4 * (2 + requests));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, state.Requests);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, state.List);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, state.Unique);
-  const GLuint zeros[2] = { 0, 0 };
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.Unique);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(zeros), zeros);
-  // The list's keys beyond its count sort last.
-  const GLuint noPage = deepshadow::NoPage;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.List);
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &noPage);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), zeros);
-
-  deepshadow::ComputeProgram& requestPass = state.Stages[0];
-  requestPass.Use();
-  deepshadow::UniformSink sink(&requestPass);
-  deepshadow::SetLightSpaceFaceUniforms(
-    sink, state.Faces, static_cast<float>(layout.MaxResolution), state.FacesPerLight, 1);
-  vtkTextureUnitManager* units = context.Window->GetTextureUnitManager();
-  const int unit = units->Allocate();
-  context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, state.Hits);
-  requestPass.Set("u_hits", unit);
-  requestPass.Set("u_inverseViewProjection", inverseViewProjection);
-  requestPass.Set("u_viewport", glm::vec2(viewport));
-  requestPass.Set("u_downsample", downsample);
-  requestPass.Set("u_analysisSize", size);
-  requestPass.Set("u_pageSize", layout.PageSize);
-  requestPass.Set("u_finestLevel", layout.FinestLevel());
-  requestPass.Set("u_baseLevel", layout.BaseLevel());
-  requestPass.Dispatch(glm::ivec3(size, 1), glm::ivec3(8, 8, 1));
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  units->Free(unit);
-
-  state.Stages[1].Use();
-  state.Stages[1].Set("u_analysisSize", size);
-  state.Stages[1].Dispatch(glm::ivec3(size, slots.Count()), glm::ivec3(8, 8, 1));
-  GLuint listed = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.List);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(listed), &listed);
-
-  // Bitonic sort of the listed requests, padded with NoPage to a power of two.
-  const int length = NextPowerOfTwo(static_cast<int>(std::max<GLuint>(listed, 2)));
-  state.Stages[2].Use();
-  state.Stages[2].Set("u_length", length);
-  for (int k = 2; k <= length; k <<= 1)
-  {
-    for (int j = k >> 1; j > 0; j >>= 1)
-    {
-      state.Stages[2].Set("u_k", k);
-      state.Stages[2].Set("u_j", j);
-      state.Stages[2].Dispatch(glm::ivec3(length, 1, 1), glm::ivec3(64, 1, 1));
-    }
-  }
-  if (listed > 0)
-  {
-    state.Stages[3].Use();
-    state.Stages[3].Dispatch(glm::ivec3(static_cast<int>(listed), 1, 1), glm::ivec3(64, 1, 1));
-  }
-  GLuint header[2] = { 0, 0 };
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.Unique);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
-  unique.assign(header[0], 0u);
-  if (header[0] > 0)
-  {
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, sizeof(header), 4 * static_cast<GLsizeiptr>(header[0]), unique.data());
-  }
-  for (int binding = 0; binding < 3; ++binding)
-  {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
-  }
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  context.Window->GetShaderCache()->ReleaseCurrentShader();
-  self->LastPasses.emplace_back("page-requests");
-  // The unique pass appends in any order.
-  std::sort(unique.begin(), unique.end());
-  state.Requested = header[1];
-  state.AfterComponents = listed;
-  state.UniqueCount = static_cast<int>(unique.size());
   return true;
 }
 
@@ -612,7 +402,7 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::BuildPages(
     list.push_back(key);
     list.push_back(static_cast<GLuint>(slot));
   }
-  EnsureBuffer(state.PageList, state.PageListBytes, 4 * static_cast<long long>(list.size()));
+  deepshadow::EnsureStorageBuffer(state.PageList, state.PageListBytes, 4 * static_cast<long long>(list.size()));
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, state.PageList);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * static_cast<GLsizeiptr>(list.size()), list.data());
 
@@ -650,7 +440,9 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::BuildPages(
     build.Set("u_extent", static_cast<float>(face.Extent));
     build.Set("u_near", static_cast<float>(face.Near));
     build.Set("u_pageOffset", static_cast<int>(first));
-    build.Dispatch(glm::ivec3(layout.SlotSize(), layout.SlotSize(), static_cast<int>(last - first)), glm::ivec3(8, 8, 1));
+    build.Set("u_pageCount", static_cast<int>(last - first));
+    const int texels = layout.SlotSize() * layout.SlotSize() * static_cast<int>(last - first);
+    build.Dispatch(glm::ivec3(texels, 1, 1), glm::ivec3(64, 1, 1));
     ++state.Superpages;
     first = last;
   }
@@ -683,11 +475,18 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::FollowView(deepshadow::Shad
   state.Rendered = 0;
   state.Superpages = 0;
   std::vector<std::uint32_t> unique;
-  if (!this->Analyse(context, slots, unique))
+  std::string error;
+  if (!state.Requests.Analyse(self, context, state.Faces, state.FacesPerLight, state.Layout,
+        self->AnalysisDownsample, unique, error))
   {
+    self->LastError = error;
     state.Dirty = true;
     return false;
   }
+  self->LastPasses.insert(self->LastPasses.end(), { "page-analysis", "page-requests" });
+  state.Requested = state.Requests.GetCounts().Requested;
+  state.AfterComponents = state.Requests.GetCounts().AfterComponents;
+  state.UniqueCount = static_cast<int>(unique.size());
   std::vector<int> faces;
   for (int slot = 0; slot < slots.Count(); ++slot)
   {
@@ -698,70 +497,14 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::FollowView(deepshadow::Shad
   }
   const std::vector<std::uint32_t> pages = deepshadow::FitPages(unique, faces, state.Layout, state.Finest);
 
-  // Slots: the pages kept keep theirs; new pages take free ones, then those of kept pages
-  // this frame does not need.
+  // Kept pages keep their slots; new ones take free slots, then those of pages not needed.
   if (!self->KeepPages)
   {
     state.Resident.clear();
   }
-  std::vector<int> slotOf(pages.size(), -1);
-  std::vector<char> taken(static_cast<size_t>(state.Layout.Capacity()), 0);
-  for (size_t i = 0; i < pages.size(); ++i)
-  {
-    const auto kept = state.Resident.find(pages[i]);
-    if (kept != state.Resident.end())
-    {
-      slotOf[i] = kept->second;
-      taken[static_cast<size_t>(kept->second)] = 2; // needed
-    }
-  }
-  for (const auto& [page, slot] : state.Resident)
-  {
-    taken[static_cast<size_t>(slot)] = std::max<char>(taken[static_cast<size_t>(slot)], 1); // kept, unneeded
-  }
-  std::vector<std::pair<std::uint32_t, int>> build;
-  size_t free = 0;
-  for (int pass = 0; pass < 2; ++pass)
-  {
-    free = 0;
-    for (size_t i = 0; i < pages.size(); ++i)
-    {
-      if (slotOf[i] >= 0)
-      {
-        continue;
-      }
-      while (free < taken.size() && taken[free] > pass)
-      {
-        ++free;
-      }
-      if (free == taken.size())
-      {
-        break;
-      }
-      slotOf[i] = static_cast<int>(free);
-      taken[free] = 2;
-      build.emplace_back(pages[i], static_cast<int>(free));
-    }
-  }
-  // The resident set is now exactly what the slots hold.
-  std::vector<char> rebuiltSlot(taken.size(), 0);
-  for (const auto& entry : build)
-  {
-    rebuiltSlot[static_cast<size_t>(entry.second)] = 1;
-  }
-  std::map<std::uint32_t, int> resident;
-  for (const auto& [page, slot] : state.Resident)
-  {
-    if (!rebuiltSlot[static_cast<size_t>(slot)])
-    {
-      resident.emplace(page, slot);
-    }
-  }
-  for (const auto& [page, slot] : build)
-  {
-    resident[page] = slot;
-  }
-  state.Resident = std::move(resident);
+  const deepshadow::SlotAssignment assignment = deepshadow::AssignSlots(pages, state.Resident, state.Layout.Capacity());
+  const std::vector<int>& slotOf = assignment.SlotOf;
+  const std::vector<std::pair<std::uint32_t, int>>& build = assignment.Build;
 
   if (!build.empty())
   {

@@ -196,6 +196,34 @@ TEST(ResolutionMatched, FittingTheAtlasCoarsensTheFinestLevelAndKeepsTheBase)
   EXPECT_EQ(FitPages({}, { 0, 6 }, roomy, finest).size(), 32u);
 }
 
+TEST(ResolutionMatched, KeptPagesKeepTheirSlotsAndNewOnesEvictOnlyWhenFull)
+{
+  std::map<std::uint32_t, int> resident;
+  const std::vector<std::uint32_t> first{ 10, 20, 30 };
+  SlotAssignment a = AssignSlots(first, resident, 4);
+  EXPECT_EQ(a.SlotOf, (std::vector<int>{ 0, 1, 2 }));
+  EXPECT_EQ(a.Build.size(), 3u);
+  // The view moves: 20 and 30 stay where they are, 40 takes the free slot, nothing is built again.
+  a = AssignSlots({ 20, 30, 40 }, resident, 4);
+  EXPECT_EQ(a.SlotOf, (std::vector<int>{ 1, 2, 3 }));
+  ASSERT_EQ(a.Build.size(), 1u);
+  EXPECT_EQ(a.Build[0], std::make_pair(std::uint32_t(40), 3));
+  EXPECT_EQ(resident.size(), 4u); // 10 is kept while there is room
+  // Full: 50 and 60 take the slots of 10 and 20, which this view does not need.
+  a = AssignSlots({ 30, 40, 50, 60 }, resident, 4);
+  EXPECT_EQ(a.SlotOf, (std::vector<int>{ 2, 3, 0, 1 }));
+  EXPECT_EQ(a.Build.size(), 2u);
+  EXPECT_EQ(resident, (std::map<std::uint32_t, int>{ { 30, 2 }, { 40, 3 }, { 50, 0 }, { 60, 1 } }));
+  // The view comes back: 10 and 20 are built again.
+  a = AssignSlots({ 10, 20, 30 }, resident, 4);
+  EXPECT_EQ(a.Build.size(), 2u);
+  EXPECT_EQ(resident.size(), 4u);
+  for (size_t i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(resident.at(std::vector<std::uint32_t>{ 10, 20, 30 }[i]), a.SlotOf[i]);
+  }
+}
+
 TEST(ResolutionMatched, PageTableNamesTheFinestPageOverEachCell)
 {
   const PageLayout layout = Layout(1024); // finest 5: 32 x 32 cells
