@@ -52,11 +52,13 @@ std::uint64_t ShadowBytes(const Options& options)
   const std::uint64_t texel = ShadowTechniqueOf(parameters).TexelBytes(parameters);
   const std::uint64_t mapSize = static_cast<std::uint64_t>(parameters.MapSize);
   std::uint64_t total = 0;
+  int faces = 0;
   const size_t lights = std::max<size_t>(options.Lights.size(), 1);
   for (size_t l = 0; l < std::min<size_t>(lights, texel ? 4 : 8); ++l)
   {
     // A positional light inside the volume's bounding sphere gets a cube of six faces.
     const bool positional = l < options.Lights.size() && options.Lights[l].Kind != LightSpec::Directional;
+    faces += positional ? 6 : 1;
     total = SaturatingProduct(SaturatingProduct(mapSize * mapSize, texel), positional ? 6 : 1) + total;
     if (parameters.Cached)
     {
@@ -64,7 +66,8 @@ std::uint64_t ShadowBytes(const Options& options)
       total += nodes * nodes * nodes * (parameters.IsColored() ? 8 : 2);
     }
   }
-  return total;
+  const ShadowTechniqueInfo& technique = ShadowTechniqueOf(parameters);
+  return total + (technique.FixedBytes ? technique.FixedBytes(parameters, faces) : 0);
 }
 
 std::uint64_t VolumeBytes(vtkImageData* data)

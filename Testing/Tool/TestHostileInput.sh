@@ -58,6 +58,7 @@ echo "== The frame: OSMesa died at about 15 GB"
 expect 2 "--size 16384x16384" "would take 17179869184 bytes" -- "$tool" render --scene box --size 16384x16384 --memory-budget 8G --out x.png
 expect 2 "--size beyond --memory-budget" "memory budget of 1048576 bytes" -- "$tool" "${box[@]}" --size 256x256 --memory-budget 1M --out x.png
 expect 2 "a 16384^2 deep shadow map" "shadow structures" -- "$tool" "${box[@]}" --technique dsm --shadow-map-size 16384 --memory-budget 8G --out x.png
+expect 2 "an rmsm atlas of 16384^2" "shadow structures" -- "$tool" "${box[@]}" --technique rmsm --atlas-size 16384 --memory-budget 512M --out x.png
 
 echo "== Volumes: exit 0 with a wrong or blank picture before"
 head -c 2000 seeds/volume-raw.vti > truncated.vti

@@ -213,6 +213,7 @@ ShadowTechniqueInfo Technique(const char* name, const char* summary, ShadowKind 
   info.Keys = std::move(keys);
   info.Sweep = std::move(sweep);
   info.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 0; };
+  info.FixedBytes = [](const ShadowParameters&, int) -> std::uint64_t { return 0; };
   return info;
 }
 
@@ -318,6 +319,12 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   rmsm.Binary = true;
   rmsm.Defaults = MapDefaults;
   rmsm.MakeShadow = MakeTwin<ResolutionMatchedShadow>;
+  rmsm.FixedBytes = [](const ShadowParameters& p, int faces) -> std::uint64_t {
+    // The atlas, shared by every light, and a page table per face (a 32-bit entry per cell).
+    const PageLayout layout = PageLayout::Of(p);
+    const std::uint64_t cells = static_cast<std::uint64_t>(layout.TableSize()) * layout.TableSize();
+    return 4 * static_cast<std::uint64_t>(layout.AtlasSize) * layout.AtlasSize + 4 * cells * faces;
+  };
   list.push_back(rmsm);
   return list;
 }

@@ -80,6 +80,11 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
     MakeShadow;
   /** Bytes per light-space texel (0: no light-space map), for the memory budget. */
   std::function<std::uint64_t(const ShadowParameters&)> TexelBytes;
+  /**
+   * Bytes of what the map size does not size, for `faces` light faces in all (rmsm's atlas
+   * and page tables); 0 by default. For the memory budget.
+   */
+  std::function<std::uint64_t(const ShadowParameters&, int faces)> FixedBytes;
   std::vector<ShadowSweepEntry> Sweep;
 
   /** Whether it reads `key` (its own keys or a shared one). */
