@@ -1,6 +1,7 @@
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "GL/ComputeProgram.h"
+#include "GL/GLObjects.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Volume/ShadowContext.h"
 #include "LightSpaceBricks.h"
@@ -202,35 +203,22 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   }
   if (!sameShape || maps.Slabs != slabs || maps.FacesPerLight != facesPerLight)
   {
-    if (maps.Texture)
-    {
-      glDeleteTextures(1, &maps.Texture);
-    }
+    deepshadow::DeleteTexture(maps.Texture);
     while (glGetError() != GL_NO_ERROR)
     {
       // errors of earlier GL calls are not ours to report
     }
-    glGenTextures(1, &maps.Texture);
-    // Bound on a unit of our own, chosen through VTK's state: VTK caches the active unit and
-    // what its textures are bound to (ParaView warns every frame when they change behind it).
-    vtkTextureUnitManager* units = context.Window->GetTextureUnitManager();
-    const int unit = units->Allocate();
-    context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
-    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format, self->MapSize, self->MapSize, static_cast<GLsizei>(layers));
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    units->Free(unit);
+    // Bound on a unit of our own while it is made, chosen through VTK's state: VTK caches the
+    // active unit and what its textures are bound to (ParaView warns every frame when they
+    // change behind it).
+    maps.Texture = deepshadow::NewArrayTexture(
+      context.Window, format, self->MapSize, self->MapSize, static_cast<int>(layers));
     if (glGetError() != GL_NO_ERROR)
     {
       self->LastError = "the GL could not allocate " +
         std::to_string(layers * self->MapSize * self->MapSize * BytesPerTexel(format)) +
         " bytes of light-space maps";
-      glDeleteTextures(1, &maps.Texture);
-      maps.Texture = 0;
+      deepshadow::DeleteTexture(maps.Texture);
       return false;
     }
     maps.Format = format;
