@@ -16,6 +16,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkLight.h"
 #include "vtkPlaneSource.h"
 #include "vtkProperty.h"
 
@@ -141,6 +142,29 @@ int TestResolutionMatchedShadows(int argc, char* argv[])
   window->Render();
   ok = Check("an atlas too small for the base level is said (" + scene.Mapper->GetLastError() + ")",
          scene.Mapper->GetLastError().find("atlas") != std::string::npos) && ok;
+
+  // Several lights at once: a positional one outside (a perspective face), one inside the
+  // casters' bounding sphere (a cube of six faces) and the directional one; each light's
+  // pages on its own faces, GPU against twin.
+  vtkNew<vtkLight> outside, inside;
+  outside->SetLightTypeToSceneLight();
+  outside->SetPositional(true);
+  outside->SetConeAngle(180.0);
+  outside->SetPosition(-60.0, -200.0, 150.0);
+  outside->SetDiffuseColor(0.5, 0.7, 1.0);
+  inside->SetLightTypeToSceneLight();
+  inside->SetPositional(true);
+  inside->SetConeAngle(180.0);
+  inside->SetPosition(20.0, -60.0, 10.0);
+  inside->SetIntensity(0.6);
+  renderer->AddLight(outside);
+  renderer->AddLight(inside);
+  vtkNew<vtkDeepShadowResolutionMatchedTechnique> lights;
+  ok = scene.MatchesTwin("rmsm, three lights (a cube among them), vs CPU twin", lights, 4.0 / 255.0, 24.0 / 255.0,
+         0.03, gpu) && ok;
+  ok = Check("pages on the faces of three lights (" + Counts(lights) + ")", lights->GetPagesResident() > 16 * 8) && ok;
+  renderer->RemoveLight(outside);
+  renderer->RemoveLight(inside);
 
   scene.Mapper->SetShadowTechnique(rmsm);
   camera->Azimuth(-3.0);
