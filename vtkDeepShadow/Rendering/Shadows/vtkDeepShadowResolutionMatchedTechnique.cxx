@@ -32,28 +32,6 @@ namespace
 {
 // Superpages are 1024^2 texels (section 3.3.3): pages of one face and level within one.
 constexpr int SuperpageTexels = 1024;
-
-// The nearest value the registry allows `key` (a power of two), warning if it is not `value`.
-int Allowed(vtkObject* self, const char* name, const char* key, int value)
-{
-  const deepshadow::ShadowParameterInfo* info = deepshadow::FindShadowParameter(key);
-  int best = value;
-  double distance = 1e300;
-  for (const double allowed : info->Allowed)
-  {
-    const double d = std::abs(std::log2(std::max(1, value)) - std::log2(allowed));
-    if (d < distance)
-    {
-      distance = d;
-      best = static_cast<int>(allowed);
-    }
-  }
-  if (best != value)
-  {
-    vtkWarningWithObjectMacro(self, << name << " " << value << " is not one of " << info->RangeText() << "; using " << best);
-  }
-  return best;
-}
 }
 
 // The pages, the atlas and page table they live in, and the passes that fill them.
@@ -149,12 +127,7 @@ void vtkDeepShadowResolutionMatchedTechnique::SetFilter(int filter)
 
 void vtkDeepShadowResolutionMatchedTechnique::SetPageSize(int size)
 {
-  const int allowed = Allowed(this, "PageSize", "page-size", size);
-  if (allowed != this->PageSize)
-  {
-    this->PageSize = allowed;
-    this->Modified();
-  }
+  this->SetAllowed("page-size", this->PageSize, size);
 }
 
 void vtkDeepShadowResolutionMatchedTechnique::SetAtlasSize(int size)
@@ -164,22 +137,12 @@ void vtkDeepShadowResolutionMatchedTechnique::SetAtlasSize(int size)
 
 void vtkDeepShadowResolutionMatchedTechnique::SetMaxResolution(int size)
 {
-  const int allowed = Allowed(this, "MaxResolution", "max-resolution", size);
-  if (allowed != this->MaxResolution)
-  {
-    this->MaxResolution = allowed;
-    this->Modified();
-  }
+  this->SetAllowed("max-resolution", this->MaxResolution, size);
 }
 
 void vtkDeepShadowResolutionMatchedTechnique::SetAnalysisDownsample(int n)
 {
-  const int allowed = Allowed(this, "AnalysisDownsample", "analysis-downsample", n);
-  if (allowed != this->AnalysisDownsample)
-  {
-    this->AnalysisDownsample = allowed;
-    this->Modified();
-  }
+  this->SetAllowed("analysis-downsample", this->AnalysisDownsample, n);
 }
 
 deepshadow::ShadowParameters vtkDeepShadowResolutionMatchedTechnique::GetParameters() const

@@ -53,7 +53,7 @@ public:
   ///@}
 
   ///@{
-  /** Texels per page side: 16, 32 (default), 64 or 128. */
+  /** Texels per page side: 16, 32 (default), 64 or 128; others are an error, the old value kept. */
   void SetPageSize(int size);
   vtkGetMacro(PageSize, int);
   ///@}
@@ -65,16 +65,20 @@ public:
   ///@}
 
   ///@{
-  /** Texels per side of the finest level, the virtual map (default 16384; 1024 to 32768, a power of 2). */
+  /**
+   * Texels per side of the finest level, the virtual map (default 16384; a power of 2 from
+   * 1024 to 32768; others are an error, the old value kept).
+   */
   void SetMaxResolution(int size);
   vtkGetMacro(MaxResolution, int);
   ///@}
 
   ///@{
   /**
-   * Every N-th pixel of the image, each way, asks for pages: 1, 2, 4 (default) or 8. On the
-   * hybrid-sparse scene at 512^2, 4 loses nothing against 1 (the shadow edges' RMSE against
-   * exact visibility is 0.0700 either way; 8: 0.0732) and its analysis costs a sixteenth.
+   * Every N-th pixel of the image, each way, asks for pages: 1, 2, 4 (default) or 8 (others
+   * are an error, the old value kept). On the hybrid-sparse scene at 512^2, 4 loses nothing
+   * against 1 (the shadow edges' RMSE against exact visibility is 0.0700 either way; 8:
+   * 0.0732) and its analysis costs a sixteenth.
    */
   void SetAnalysisDownsample(int n);
   vtkGetMacro(AnalysisDownsample, int);

@@ -52,18 +52,7 @@ static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshado
 
 void vtkDeepShadowStochasticShadowMapTechnique::SetOffsets(int offsets)
 {
-  const std::string problem =
-    deepshadow::FindShadowParameter("cssm-offsets")->Check({ static_cast<double>(offsets) });
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< problem << ", not " << offsets << "; keeping " << this->Offsets);
-    return;
-  }
-  if (offsets != this->Offsets)
-  {
-    this->Offsets = offsets;
-    this->Modified();
-  }
+  this->SetAllowed("cssm-offsets", this->Offsets, offsets);
 }
 
 void vtkDeepShadowStochasticShadowMapTechnique::SetPhotons(int photons)

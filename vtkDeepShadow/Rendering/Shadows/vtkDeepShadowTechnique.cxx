@@ -95,6 +95,21 @@ void vtkDeepShadowTechnique::RegistryRange(const char* key, double& low, double&
   high = parameter->High;
 }
 
+void vtkDeepShadowTechnique::SetAllowed(const char* key, int& member, int value)
+{
+  const std::string problem = deepshadow::FindShadowParameter(key)->Check({ static_cast<double>(value) });
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem << ", not " << value << "; keeping " << member);
+    return;
+  }
+  if (value != member)
+  {
+    member = value;
+    this->Modified();
+  }
+}
+
 void vtkDeepShadowTechnique::SetParameters(const deepshadow::ShadowParameters& parameters)
 {
   this->SetStepFactor(parameters.StepFactor);

@@ -236,6 +236,13 @@ protected:
   }
   static void RegistryRange(const char* key, double& low, double& high);
 
+  /**
+   * Sets `member` to `value` if the technique registry allows it for `key` (a whole number
+   * among its allowed values: CSSM offsets, rmsm's powers of two); else one vtkErrorMacro and
+   * the old value kept.
+   */
+  void SetAllowed(const char* key, int& member, int value);
+
   /** The common part of GetParameters(). */
   void FillParameters(deepshadow::ShadowParameters& parameters) const;
   void ActivateFeelerTable();

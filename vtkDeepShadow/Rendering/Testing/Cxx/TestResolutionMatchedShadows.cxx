@@ -135,6 +135,12 @@ int TestResolutionMatchedShadows(int argc, char* argv[])
   ok = Check("a small atlas coarsens the finest level (" + std::to_string(fresh->GetFinestLevelUsed()) + ", " +
       Counts(fresh) + ")",
          fresh->GetFinestLevelUsed() < 9 && fresh->GetPagesResident() <= 64 && scene.Mapper->GetLastError().empty()) && ok;
+  // A page size that is no power of 2 is refused, the old one kept.
+  vtkNew<deepshadow::testing::MessageCapture> refused;
+  refused->Watch(fresh);
+  fresh->SetPageSize(50);
+  ok = Check("a page size of 50 is an error, 32 kept",
+         fresh->GetPageSize() == 32 && refused->ErrorContains("page-size must be 16, 32, 64 or 128")) && ok;
   // One slot cannot hold the base level's 16 pages: said, nothing shadowed.
   fresh->SetAtlasSize(64);
   vtkNew<deepshadow::testing::MessageCapture> messages;
