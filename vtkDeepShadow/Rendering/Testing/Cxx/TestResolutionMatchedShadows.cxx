@@ -20,7 +20,6 @@
 #include "vtkPlaneSource.h"
 #include "vtkProperty.h"
 
-#include <cmath>
 #include <string>
 
 using deepshadow::testing::Check;
@@ -29,18 +28,6 @@ using deepshadow::testing::WithinTolerance;
 
 namespace
 {
-double Rmse(const deepshadow::Image& a, const deepshadow::Image& b)
-{
-  double sum = 0.0;
-  for (int y = 0; y < a.Height; ++y)
-    for (int x = 0; x < a.Width; ++x)
-    {
-      const glm::dvec3 d = a.At(x, y) - b.At(x, y);
-      sum += glm::dot(d, d) / 3.0;
-    }
-  return std::sqrt(sum / (static_cast<double>(a.Width) * a.Height));
-}
-
 std::string Counts(vtkDeepShadowResolutionMatchedTechnique* rmsm)
 {
   return std::to_string(rmsm->GetPagesRequested()) + " requests, " + std::to_string(rmsm->GetRequestsAfterComponents()) +
@@ -98,7 +85,7 @@ int TestResolutionMatchedShadows(int argc, char* argv[])
   vtkNew<vtkDeepShadowShadowMapTechnique> map;
   scene.Mapper->SetShadowTechnique(map);
   window->Render();
-  const double mapError = Rmse(Grab(window), truth), rmsmError = Rmse(gpu, truth);
+  const double mapError = deepshadow::Compare(Grab(window), truth).RMSE, rmsmError = deepshadow::Compare(gpu, truth).RMSE;
   char text[160];
   std::snprintf(text, sizeof(text), "against exact visibility: RMSE %.4f, the 512^2 map's %.4f", rmsmError, mapError);
   ok = Check(text, rmsmError < 0.5 * mapError) && ok;
@@ -127,7 +114,7 @@ int TestResolutionMatchedShadows(int argc, char* argv[])
   window->Render();
   ok = Check("without kept pages every frame builds them all (" + Counts(fresh) + ")",
          fresh->GetPagesRendered() == fresh->GetPagesResident() && fresh->GetPagesRendered() > 16) && ok;
-  ok = Check("and draws the same picture", Rmse(Grab(window), turned) == 0.0) && ok;
+  ok = Check("and draws the same picture", deepshadow::Compare(Grab(window), turned).MaxAbs == 0.0) && ok;
 
   // An atlas of 8 x 8 slots cannot hold the finest pages: a coarser finest level.
   fresh->SetAtlasSize(8 * 34);
