@@ -23,7 +23,6 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 
 vtkStandardNewMacro(vtkDeepShadowResolutionMatchedTechnique);
