@@ -487,7 +487,6 @@ bool vtkDeepShadowResolutionMatchedTechnique::Hooks::FollowView(deepshadow::Shad
     const int unit = units->Allocate();
     context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, state.Table);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, state.Layout.TableSize(), state.Layout.TableSize(),
       state.TableLayers, GL_RED_INTEGER, GL_UNSIGNED_INT, table.data());
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
