@@ -52,31 +52,46 @@ void storeEntry(int chunk, int entry, vec4 value)
 #endif
 }
 
-// Node k of the texel into its chunks, a new chunk every ChunkNodes nodes.
-void placeNode(int k, vec4 value)
+// A chunk after the texel's last one (linked from it, or its first), or none once the pool
+// ran out: the texel then keeps the chunks it has.
+void takeChunk()
 {
-  int entry = k % ChunkNodes;
-  if (entry == 0)
+  uint asked = atomicAdd(u_statistics.chunksRequested[u_poolSlot], 1u);
+  if (!g_poolOut && asked < uint(u_chunkCapacity))
   {
-    uint asked = atomicAdd(u_statistics.chunksRequested[u_poolSlot], 1u);
-    if (!g_poolOut && asked < uint(u_chunkCapacity))
+    int chunk = u_chunkBase + int(asked);
+    storeEntry(chunk, 0, vec4(-1.0));
+    if (g_chunk < 0)
     {
-      int chunk = u_chunkBase + int(asked);
-      storeEntry(chunk, 0, vec4(-1.0));
-      if (g_chunk < 0)
-      {
-        g_firstChunk = chunk;
-      }
-      else
-      {
-        storeEntry(g_chunk, 0, vec4(float(chunk)));
-      }
-      g_chunk = chunk;
+      g_firstChunk = chunk;
     }
     else
     {
-      g_poolOut = true;
+      storeEntry(g_chunk, 0, vec4(float(chunk)));
     }
+    g_chunk = chunk;
+  }
+  else
+  {
+    g_poolOut = true;
+  }
+}
+
+// Node k of the texel into its chunks, a new chunk every ChunkNodes nodes. Node 0 waits for
+// node 1 (buildTexel stores it last), but its chunk is taken with node 1's, in the order the
+// twin takes them.
+void placeNode(int k, vec4 value)
+{
+  int entry = k % ChunkNodes;
+#if DSM_CHUNK_NODES == 1
+  if (k == 1)
+  {
+    takeChunk(); // node 0's own
+  }
+#endif
+  if (entry == 0 || k == 1)
+  {
+    takeChunk();
   }
   if (!g_poolOut)
   {
@@ -128,11 +143,12 @@ Value g_transmittance;
 void emitNode(float depth, Value value)
 {
 #ifdef DSM_CHUNKED
-  // Node 0 waits for node 1 (a texel with one node of 1 takes no chunk); node 1 places both.
+  // Node 0 waits for node 1 (a texel with one node of 1 takes no chunk). One placeNode here:
+  // it is inlined wherever a segment starts, and storing node 0 too cost 0.1 of the build.
   vec4 stored = node(depth, value);
-  for (int k = g_nodes == 1 ? 0 : g_nodes; k <= g_nodes && g_nodes > 0; ++k)
+  if (g_nodes > 0)
   {
-    placeNode(k, k == g_nodes ? stored : g_firstNode);
+    placeNode(g_nodes, stored);
   }
   g_firstNode = g_nodes == 0 ? stored : g_firstNode;
 #else
@@ -289,6 +305,10 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   if (g_nodes == 1 && feelerLargest(Value(1.0) - g_lastStored) > 0.0)
   {
     placeNode(0, g_firstNode);
+  }
+  else if (g_firstChunk >= 0)
+  {
+    storeEntry(g_firstChunk, 1, g_firstNode); // node 0, which waited for node 1
   }
   if (g_chunk >= 0 && !g_poolOut && g_nodes % ChunkNodes != 0)
   {
