@@ -2,6 +2,7 @@
 
 #include "Look.h"
 #include "Measure.h"
+#include "Messages.h"
 
 #include "Json.h"
 #include "Outputs.h"
@@ -141,6 +142,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("context", setup.Window->GetContextDescription())
     .Set("gl_renderer", RendererString(setup.Window));
   SetPageCounts(run.Stats, pages);
+  run.Stats.Set("warnings", ModuleWarnings());
   return run;
 }
 

@@ -222,7 +222,8 @@ OUTPUT:
   --frames N              timed frames after one warm-up frame (default 5); report: 0
                           measures errors only (the guard against no shadows, no timing)
   --verbose               also print VTK's own error and warning messages (more output;
-                          the exit code and the error line are the same)
+                          the exit code and the error line are the same); the module's
+                          warnings ("deepshadow: warning: ...") are printed without it
   --memory-budget BYTES   the most memory the frame, the shadow structures and the volume
                           may take (suffix K, M, G, T; default half the machine's memory or
                           of `ulimit -v`); beyond it the command exits with code 2 naming

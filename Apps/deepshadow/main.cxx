@@ -1,10 +1,9 @@
 // deepshadow: the command-line tool of vtkDeepShadow. See `deepshadow --help`.
 #include "Commands.h"
+#include "Messages.h"
 #include "Options.h"
 #include "Outputs.h"
 
-#include "vtkLogger.h"
-#include "vtkOutputWindow.h"
 #include "vtkVersionMacros.h"
 
 #include <cstdio>
@@ -14,19 +13,6 @@
 
 namespace
 {
-// Errors reach the user as the tool's one line; VTK's own log only with --verbose. Only the
-// printing is switched off: VTK's global warning flag stays on, because in VTK 9.1 it also
-// gates the error events that the readers' collectors listen to, so the exit code and the
-// line never depend on --verbose.
-void QuietVTK(bool verbose)
-{
-  if (!verbose)
-  {
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
-  }
-}
-
 int Run(const deepshadow::tool::Options& options)
 {
   using namespace deepshadow::tool;
@@ -97,8 +83,13 @@ int main(int argc, char* argv[])
   try
   {
     const Options options = Options::Parse(argc, argv);
-    QuietVTK(options.Verbose);
-    return Run(options);
+    RouteMessages(options.Verbose);
+    const int code = Run(options);
+    if (code != 2) // a refusal says its one line only
+    {
+      PrintModuleWarnings();
+    }
+    return code;
   }
   catch (const UsageError& error)
   {

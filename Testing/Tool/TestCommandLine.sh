@@ -45,6 +45,17 @@ expect 2 "--chunk-nodes beyond 64" "chunk-nodes" -- "$tool" render --technique d
 expect 0 "sparse with 4 objects, chunked deep shadow map" -- "$tool" render --scene sparse --scale 0.25 --objects 4 \
   --technique dsm --chunk-nodes 4 --size 32x32 --frames 1 --out x.png --json x.json
 grep -q '"chunks_used": [1-9]' x.json || fail "chunked render: chunks_used in its JSON"
+# A pool too small for the shadow degrades it (the bound doubled): the module says so, and
+# without --verbose the tool prints it once and lists it in the JSON; a pool that fits says nothing.
+expect 0 "chunked deep shadow map, a pool too small" -- "$tool" render --scene box --scale 0.25 --technique dsm \
+  --chunk-nodes 4 --node-pool-mb 0.01 --size 32x32 --frames 1 --out x.png --json x.json
+[ "$(grep -c "^deepshadow: warning: the deep shadow map's node pool" err.txt)" = 1 ] ||
+  fail "a pool too small: one warning line on stderr"
+grep -q '"warnings": \["the deep shadow map.s node pool' x.json || fail "a pool too small: the warning in the JSON"
+expect 0 "chunked deep shadow map, a pool that fits" -- "$tool" render --scene box --scale 0.25 --technique dsm \
+  --chunk-nodes 4 --size 32x32 --frames 1 --out x.png --json x.json
+[ -s err.txt ] && fail "a pool that fits: stderr not empty"
+grep -q '"warnings": \[\]' x.json || fail "a pool that fits: no warning in the JSON"
 expect 2 "rmsm page size not a power of 2" "page-size" -- "$tool" render --technique rmsm --page-size 33 --out x.png
 expect 2 "rmsm virtual size not allowed" "max-resolution" -- "$tool" render --technique rmsm --max-resolution 5000 --out x.png
 expect 2 "rmsm atlas too small for the base level" "raise the atlas size" -- "$tool" render --technique rmsm --atlas-size 100 --out x.png

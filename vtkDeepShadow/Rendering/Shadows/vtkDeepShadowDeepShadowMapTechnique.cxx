@@ -274,7 +274,8 @@ void vtkDeepShadowDeepShadowMapTechnique::SayPoolShort()
           << chunks.Pool.Limit(static_cast<int>(slot)) * chunks.Pool.ChunkBytes() / 1048576.0
           << " MB cannot hold light " << slot << "'s nodes at epsilon " << this->Epsilon << ": "
           << (chunks.Cut[slot] ? "texels keep the chunks they got at a bound of " : "built with a bound of ")
-          << chunks.Bound[slot] << " (node-pool-mb raises it)";
+          << chunks.Bound[slot] << (chunks.Bound[slot] >= 1.0 ? ", which keeps no shadow" : "")
+          << " (node-pool-mb raises it)";
     }
   }
   if (!say.str().empty() && say.str() != chunks.SaidShort)
