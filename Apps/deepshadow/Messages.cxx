@@ -72,7 +72,8 @@ std::string ModuleWarningOf(const std::string& text)
 {
   const size_t line = text.find('\n');
   const size_t start = line == std::string::npos ? 0 : line + 1;
-  if (text.compare(start, 13, "vtkDeepShadow") != 0)
+  const std::string module = "vtkDeepShadow"; // the module's class names begin so
+  if (text.compare(start, module.size(), module) != 0)
   {
     return std::string();
   }

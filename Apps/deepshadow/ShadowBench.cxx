@@ -83,8 +83,7 @@ int RunShadowBench(const Options& options)
       std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", name.c_str(),
         technique.c_str(), m.CameraMs, m.CameraMs / baseline, m.LightMs / baseline, m.BuildMs,
         m.ShadowBytes, error.RMSE, error.MaxAbs, nodes,
-        // Resolution-matched maps build the pages a moved camera newly needs, by design.
-        m.RebuiltForCamera && m.Pages.AtlasBytes == 0 ? "  (rebuilt when the camera moved!)" : "");
+        m.RebuiltForCamera && !ShadowTechniqueOf(shadow->GetParameters()).FollowsView ? "  (rebuilt when the camera moved!)" : "");
       std::fflush(stdout);
       Json row;
       row.Set("scene", name)

@@ -317,6 +317,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     { { "", true }, { ":max-resolution=4096" }, { ":max-resolution=32768" }, { ":atlas-size=512" },
       { ":analysis-downsample=4", true }, { ":page-size=64" }, { ":pcf=none" }, { ":keep-pages=0" } });
   rmsm.Binary = true;
+  rmsm.FollowsView = true;
   rmsm.Defaults = MapDefaults;
   rmsm.MakeShadow = MakeTwin<ResolutionMatchedShadow>;
   rmsm.FixedBytes = [](const ShadowParameters& p, int faces) -> std::uint64_t {

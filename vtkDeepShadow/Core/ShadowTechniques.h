@@ -70,6 +70,8 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
   bool Clustered = false; // its maps are clustered (ShadowParameters::Clusters > 0)
   /** A hard shadow (lit or not, by the threshold), not a translucent one. */
   bool Binary = false;
+  /** Its structures follow the camera (rmsm's pages): a moved camera may build some. */
+  bool FollowsView = false;
   /** Parameter keys it reads besides the shared ones (SharedShadowParameterKeys()). */
   std::vector<std::string> Keys;
   /** Its defaults where they differ from ShadowParameters{} (e.g. a smaller cache). */
