@@ -46,7 +46,12 @@ double PiecewiseLinear::Evaluate(double x) const
   }
   const auto& b = *it;
   const auto& a = *(it - 1);
-  const double t = (x - a.first) / (b.first - a.first);
+  double t = (x - a.first) / (b.first - a.first);
+  if (!std::isfinite(b.first - a.first))
+  {
+    // Nodes more than DBL_MAX apart (e.g. at -+1.7e308): the same ratio from halves, exact.
+    t = (0.5 * x - 0.5 * a.first) / (0.5 * b.first - 0.5 * a.first);
+  }
   return a.second + t * (b.second - a.second);
 }
 

@@ -31,6 +31,35 @@ bool CSGNode::Evaluate(uint32_t leafStates) const
   return false;
 }
 
+double CSGNode::TriangleWork(const std::vector<double>& leafTriangles, double* resultTriangles) const
+{
+  if (this->Operation == CSGOperation::Leaf)
+  {
+    const size_t leaf = static_cast<size_t>(this->Leaf);
+    if (resultTriangles)
+    {
+      *resultTriangles = leaf < leafTriangles.size() ? leafTriangles[leaf] : 0.0;
+    }
+    return 0.0;
+  }
+  double work = 0.0, accumulated = 0.0;
+  for (size_t i = 0; i < this->Operands.size(); ++i)
+  {
+    double operand = 0.0;
+    work += this->Operands[i].TriangleWork(leafTriangles, &operand);
+    if (i > 0)
+    {
+      work += accumulated + operand;
+    }
+    accumulated += operand;
+  }
+  if (resultTriangles)
+  {
+    *resultTriangles = accumulated;
+  }
+  return work;
+}
+
 int CSGNode::MaxLeaf() const
 {
   int result = this->Operation == CSGOperation::Leaf ? this->Leaf : -1;

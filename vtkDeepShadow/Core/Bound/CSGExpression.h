@@ -36,6 +36,13 @@ struct VTKDEEPSHADOWCORE_EXPORT CSGNode
   bool Evaluate(uint32_t leafStates) const;
   /** Highest leaf index used, -1 if none. */
   int MaxLeaf() const;
+  /**
+   * The triangles the Boolean operations of this node take, all told, given each leaf's
+   * triangle count: an n-ary operation folds left, each binary step taking both operands'
+   * triangles and its result counted as their sum (an upper bound a corefinement rarely
+   * exceeds). A leaf takes nothing: it is only converted and checked.
+   */
+  double TriangleWork(const std::vector<double>& leafTriangles, double* resultTriangles = nullptr) const;
   /** The expression written back, e.g. "union(A,difference(B,C))". */
   std::string ToString() const;
 };

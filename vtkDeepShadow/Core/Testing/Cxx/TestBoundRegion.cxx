@@ -123,6 +123,21 @@ TEST(CSGExpression, BadTextIsAClearError)
   EXPECT_FALSE(CSGExpression::Parse("A", 0, e, error));
 }
 
+TEST(CSGExpression, TriangleWorkCountsEveryOperationsOperands)
+{
+  CSGExpression e;
+  std::string error;
+  ASSERT_TRUE(CSGExpression::Parse("union(A,diff(B,C))", 3, e, error)) << error;
+  // diff(B,C): 20 + 30; then union(A, that): 10 + 50.
+  EXPECT_DOUBLE_EQ(e.Root().TriangleWork({ 10, 20, 30 }), 110.0);
+  // n-ary folds left: union(A,A,A) is (A u A) u A: 2 + 3 triangles of A.
+  ASSERT_TRUE(CSGExpression::Parse("union(A,A,A)", 1, e, error)) << error;
+  EXPECT_DOUBLE_EQ(e.Root().TriangleWork({ 1000 }), 5000.0);
+  // One leaf: nothing to combine.
+  ASSERT_TRUE(CSGExpression::Parse("A", 1, e, error)) << error;
+  EXPECT_DOUBLE_EQ(e.Root().TriangleWork({ 1000 }), 0.0);
+}
+
 TEST(CSGExpression, DeepNestingIsRefusedNotAStackOverflow)
 {
   auto nested = [](int depth) {

@@ -37,6 +37,16 @@ TEST(PiecewiseLinear, EqualAbscissaeMakeARightContinuousStep)
   EXPECT_DOUBLE_EQ(f.MaxOver(4.9, 5.0), 1.0);
 }
 
+TEST(PiecewiseLinear, NodesFartherApartThanADoubleSpansInterpolateExactly)
+{
+  // -+1.7e308: their distance overflows to infinity; the data between them was black.
+  PiecewiseLinear f({ { -1.7e308, 0.0 }, { 1.7e308, 1.0 } });
+  EXPECT_DOUBLE_EQ(f.Evaluate(0.0), 0.5);
+  EXPECT_DOUBLE_EQ(f.Evaluate(255.0), 0.5);
+  EXPECT_DOUBLE_EQ(f.Evaluate(0.85e308), 0.75);
+  EXPECT_DOUBLE_EQ(f.Evaluate(1.7e308), 1.0);
+}
+
 TEST(PiecewiseLinear, MaxOverIsTheExactMaximum)
 {
   std::mt19937 random(7);
