@@ -1,13 +1,14 @@
 // The one translation unit that includes CGAL (see CGALBoolean.h).
 #include "CGALBoolean.h"
 
+#include "Core/Geometry/PolygonTriangulation.h"
+
 #include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -80,28 +81,33 @@ std::size_t CountBorderEdges(const Mesh& mesh)
   return border;
 }
 
-// The polygons and strips of `input` as triangles (vtkTriangleFilter where needed), over the
-// same points.
-vtkSmartPointer<vtkPolyData> TriangleSurface(vtkPolyData* input)
+// The polygons (Core's triangulation: a fan when convex) and strips of `input` as triangles
+// over its points; false with `problem` for a polygon that cannot be triangulated.
+bool SurfaceTriangles(vtkPolyData* input, std::vector<std::array<vtkIdType, 3>>& triangles, std::string& problem)
 {
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
   vtkCellArray* polys = input->GetPolys();
-  const bool onlyTriangles = input->GetNumberOfStrips() == 0 &&
-    (input->GetNumberOfPolys() == 0 || (polys && polys->GetMaxCellSize() == 3));
-  if (onlyTriangles)
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType points = input->GetNumberOfPoints();
+  for (vtkCellArray* cells : { polys, strips })
   {
-    return surface;
+    double range[2] = { 0.0, 0.0 };
+    if (cells->GetNumberOfConnectivityIds() > 0)
+    {
+      cells->GetConnectivityArray()->GetRange(range, 0);
+    }
+    if (!cells->IsValid() || range[0] < 0.0 || range[1] >= static_cast<double>(points))
+    {
+      problem = "has cells whose point ids are out of range (" + std::to_string(points) +
+        " points) or inconsistent";
+      return false;
+    }
   }
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(surface);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  surface = triangulate->GetOutput();
-  return surface;
+  if (!deepshadow::TriangulateCells(input, triangles, problem))
+  {
+    problem = "has " + problem;
+    return false;
+  }
+  return true;
 }
 
 // Checks that the mesh is closed; `problem` gives the number of border edges if not.
@@ -251,45 +257,28 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
   }
 
   // Triangles over exactly merged points; faces with a repeated vertex are dropped.
-  vtkSmartPointer<vtkPolyData> surface = TriangleSurface(input);
-  vtkCellArray* triangles = surface->GetPolys();
-  if (!triangles || !surface->GetPoints())
+  std::vector<std::array<vtkIdType, 3>> cells;
+  if (!SurfaceTriangles(input, cells, problem))
   {
-    problem = "is empty";
     return false;
   }
-  const vtkIdType surfacePoints = surface->GetNumberOfPoints();
   std::unordered_map<Coordinates, std::size_t, CoordinatesHash> merged;
-  std::vector<std::size_t> soupIndex(static_cast<std::size_t>(surfacePoints), SIZE_MAX);
+  std::vector<std::size_t> soupIndex(static_cast<std::size_t>(numberOfPoints), SIZE_MAX);
   std::vector<Point> points;
   std::vector<Triangle> soup;
-  soup.reserve(static_cast<std::size_t>(triangles->GetNumberOfCells()));
+  soup.reserve(cells.size());
   vtkIdType referenced = 0;
-  auto cell = vtk::TakeSmartPointer(triangles->NewIterator());
-  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+  for (const auto& pts : cells)
   {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    cell->GetCurrentCell(npts, pts);
-    if (npts != 3)
-    {
-      continue; // vtkTriangleFilter gives triangles only
-    }
     Triangle triangle;
     for (int k = 0; k < 3; ++k)
     {
-      if (pts[k] < 0 || pts[k] >= surfacePoints)
-      {
-        problem = "has a cell with the point id " + std::to_string(pts[k]) + " out of range (" +
-          std::to_string(surfacePoints) + " points)";
-        return false;
-      }
       std::size_t& index = soupIndex[static_cast<std::size_t>(pts[k])];
       if (index == SIZE_MAX)
       {
         ++referenced;
         double p[3];
-        surface->GetPoint(pts[k], p);
+        input->GetPoint(pts[k], p);
         const Coordinates key{ p[0] == 0.0 ? 0.0 : p[0], p[1] == 0.0 ? 0.0 : p[1],
           p[2] == 0.0 ? 0.0 : p[2] };
         auto found = merged.emplace(key, points.size());

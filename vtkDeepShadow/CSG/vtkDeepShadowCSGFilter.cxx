@@ -4,12 +4,15 @@
 #include "Core/Bound/CSGExpression.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkDeepShadowCSGFilter);
@@ -55,6 +58,7 @@ int vtkDeepShadowCSGFilter::RequestData(
   this->ResultIsEmpty = false;
   this->LastMilliseconds = 0.0;
   this->LastOperations = 0;
+  this->LastTriangleWork = 0.0;
 
   const int count = inputVector[0]->GetNumberOfInformationObjects();
   if (count == 0)
@@ -73,6 +77,34 @@ int vtkDeepShadowCSGFilter::RequestData(
   if (!deepshadow::CSGExpression::Parse(this->Expression, count, expression, error))
   {
     this->Fail(error);
+    return 0;
+  }
+
+  // Bounded before CGAL starts: each operation's corefinement takes time in its operands'
+  // triangles, and an expression may name a bound any number of times.
+  std::vector<double> leafTriangles;
+  for (vtkPolyData* bound : bounds)
+  {
+    double triangles = 0.0;
+    if (bound)
+    {
+      for (vtkCellArray* cells : { bound->GetPolys(), bound->GetStrips() })
+      {
+        triangles += static_cast<double>(cells->GetNumberOfConnectivityIds()) -
+          2.0 * static_cast<double>(cells->GetNumberOfCells());
+      }
+    }
+    leafTriangles.push_back(std::max(triangles, 0.0));
+  }
+  this->LastTriangleWork = expression.Root().TriangleWork(leafTriangles);
+  if (this->MaximumTriangleWork > 0.0 && this->LastTriangleWork > this->MaximumTriangleWork)
+  {
+    std::ostringstream message;
+    message << "the expression " << expression.ToString().substr(0, 60)
+            << " would take CGAL about " << this->LastTriangleWork << " triangles of work (its "
+            << "operations' operands, summed), more than the limit of " << this->MaximumTriangleWork
+            << " (7 to 130 s a million here; SetMaximumTriangleWork, the tool's --csg-max-work)";
+    this->Fail(message.str());
     return 0;
   }
 
@@ -110,6 +142,8 @@ int vtkDeepShadowCSGFilter::RequestData(
 void vtkDeepShadowCSGFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaximumTriangleWork: " << this->MaximumTriangleWork << "\n";
+  os << indent << "LastTriangleWork: " << this->LastTriangleWork << "\n";
   os << indent << "Expression: " << (this->Expression.empty() ? "(union of all inputs)" : this->Expression)
      << "\n";
   os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError) << "\n";
