@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <sys/stat.h>
 #include <vector>
 
 namespace deepshadow
@@ -16,13 +17,9 @@ namespace
 {
 using vtksys::SystemTools;
 
-// Headers are read from the first bytes only: the pixel data, most of a file, is not read.
-constexpr std::uint64_t HeaderBytes = 4 << 20;
-
 struct DicomHeader
 {
   std::string Problem; // "" when the header was read
-  bool Unknown = false; // the header goes on past HeaderBytes: not checked
   std::string TransferSyntax;
   std::string SeriesUID;
   int Rows = 0, Columns = 0, BitsAllocated = 0, SamplesPerPixel = 1;
@@ -30,21 +27,20 @@ struct DicomHeader
   bool HasPixels = false;
 };
 
-std::uint16_t U16(const std::vector<unsigned char>& b, std::uint64_t at)
+std::uint32_t Little(const unsigned char* b, int bytes)
 {
-  return static_cast<std::uint16_t>(b[at] | (b[at + 1] << 8));
+  std::uint32_t value = 0;
+  for (int i = bytes - 1; i >= 0; --i)
+  {
+    value = (value << 8) | b[i];
+  }
+  return value;
 }
 
-std::uint32_t U32(const std::vector<unsigned char>& b, std::uint64_t at)
+std::string Text(std::ifstream& in, std::uint32_t length)
 {
-  return static_cast<std::uint32_t>(b[at]) | (static_cast<std::uint32_t>(b[at + 1]) << 8) |
-    (static_cast<std::uint32_t>(b[at + 2]) << 16) | (static_cast<std::uint32_t>(b[at + 3]) << 24);
-}
-
-std::string Text(const std::vector<unsigned char>& b, std::uint64_t at, std::uint32_t length)
-{
-  std::string text(b.begin() + static_cast<std::ptrdiff_t>(at),
-    b.begin() + static_cast<std::ptrdiff_t>(at + length));
+  std::string text(length, '\0');
+  in.read(&text[0], length);
   while (!text.empty() && (text.back() == '\0' || text.back() == ' '))
   {
     text.pop_back();
@@ -52,52 +48,55 @@ std::string Text(const std::vector<unsigned char>& b, std::uint64_t at, std::uin
   return text;
 }
 
-// The elements the checks need. Undefined-length sequences are skipped to their delimiter.
+// The elements the checks need, read element by element from the file (values the checks do
+// not need are skipped, whatever their size: a header of any length is read whole, never
+// more of it than its elements' tags). Undefined-length sequences are walked into.
 DicomHeader ReadHeader(const std::string& path)
 {
   DicomHeader h;
-  const std::uint64_t fileSize = SystemTools::FileLength(path);
-  std::vector<unsigned char> b(static_cast<size_t>(std::min(fileSize, HeaderBytes)));
+  const std::uint64_t size = SystemTools::FileLength(path);
   std::ifstream in(path, std::ios::binary);
-  in.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
-  b.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
-  const std::uint64_t size = b.size();
-  const bool whole = size == fileSize;
   std::uint64_t at = 132;
   bool explicitVR = true;
+  unsigned char tag[12];
   while (at + 8 <= size)
   {
-    const std::uint16_t group = U16(b, at), element = U16(b, at + 2);
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(reinterpret_cast<char*>(tag), 8))
+    {
+      break;
+    }
+    const std::uint32_t group = Little(tag, 2), element = Little(tag + 2, 2);
     if (group != 0x0002 && h.TransferSyntax == "1.2.840.10008.1.2")
     {
       explicitVR = false;
     }
     std::uint32_t length;
     std::uint64_t value;
-    const char vr[3] = { static_cast<char>(b[at + 4]), static_cast<char>(b[at + 5]), 0 };
+    const char vr[3] = { static_cast<char>(tag[4]), static_cast<char>(tag[5]), 0 };
     const bool longForm = std::string("OB OW OF SQ UT UN OD OL UC UR").find(vr) != std::string::npos;
     if (group == 0xFFFE) // item and delimiters: no VR
     {
-      length = U32(b, at + 4);
+      length = Little(tag + 4, 4);
       value = at + 8;
     }
     else if (explicitVR && longForm)
     {
-      if (at + 12 > size)
+      if (at + 12 > size || !in.read(reinterpret_cast<char*>(tag + 8), 4))
       {
         break;
       }
-      length = U32(b, at + 8);
+      length = Little(tag + 8, 4);
       value = at + 12;
     }
     else if (explicitVR)
     {
-      length = U16(b, at + 6);
+      length = Little(tag + 6, 2);
       value = at + 8;
     }
     else
     {
-      length = U32(b, at + 4);
+      length = Little(tag + 4, 4);
       value = at + 8;
     }
     if (group == 0x7FE0 && element == 0x0010)
@@ -114,31 +113,29 @@ DicomHeader ReadHeader(const std::string& path)
     }
     if (value + length > size)
     {
-      if (whole)
-      {
-        h.Problem = "its header is cut short";
-      }
-      h.Unknown = !whole;
+      h.Problem = "its header is cut short";
       return h;
     }
+    in.seekg(static_cast<std::streamoff>(value));
     if (group == 0x0002 && element == 0x0010)
     {
-      h.TransferSyntax = Text(b, value, length);
+      h.TransferSyntax = Text(in, length);
     }
     else if (group == 0x0020 && element == 0x000E)
     {
-      h.SeriesUID = Text(b, value, length);
+      h.SeriesUID = Text(in, std::min<std::uint32_t>(length, 256));
     }
     else if (group == 0x0028 && length == 2 &&
       (element == 0x0010 || element == 0x0011 || element == 0x0100 || element == 0x0002))
     {
-      const int v = U16(b, value);
+      unsigned char word[2];
+      in.read(reinterpret_cast<char*>(word), 2);
+      const int v = static_cast<int>(Little(word, 2));
       (element == 0x0010 ? h.Rows : element == 0x0011 ? h.Columns
         : element == 0x0100 ? h.BitsAllocated : h.SamplesPerPixel) = v;
     }
     at = value + length;
   }
-  h.Unknown = !whole; // the header runs past what was read
   return h;
 }
 
@@ -150,26 +147,58 @@ bool HasPreamble(const std::string& path)
 }
 }
 
-std::string CheckDicomDirectory(const std::string& directory)
+std::vector<std::string> DicomDirectoryFiles(const std::string& directory, std::string* problem)
 {
   vtksys::Directory listing;
+  std::vector<std::string> files;
   if (!listing.Load(directory))
   {
-    return "cannot list the directory";
+    if (problem)
+    {
+      *problem = "cannot list the directory";
+    }
+    return files;
   }
-  std::vector<std::string> files;
-  unsigned long others = 0;
   for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
   {
     const std::string name = listing.GetFile(i);
     const std::string path = directory + "/" + name;
-    if (name == "." || name == ".." || SystemTools::FileIsDirectory(path))
+    struct stat info;
+    if (name == "." || name == ".." || (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)))
     {
       continue;
     }
+    if (stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+    {
+      // VTK's reader opens every entry: a named pipe with no writer blocks it for ever.
+      if (problem && problem->empty())
+      {
+        *problem = "'" + name + "' in the directory is not a regular file (a pipe, device or "
+          "broken link; the reader would open it and could wait for ever)";
+      }
+      continue;
+    }
+    files.push_back(path);
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string CheckDicomDirectory(const std::string& directory)
+{
+  std::string problem;
+  const std::vector<std::string> entries = DicomDirectoryFiles(directory, &problem);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  std::vector<std::string> files;
+  unsigned long others = 0;
+  for (const std::string& path : entries)
+  {
     if (HasPreamble(path))
     {
-      files.push_back(name);
+      files.push_back(path.substr(directory.size() + 1));
     }
     else
     {
@@ -192,10 +221,6 @@ std::string CheckDicomDirectory(const std::string& directory)
     if (!h.Problem.empty())
     {
       return where + ": " + h.Problem;
-    }
-    if (h.Unknown)
-    {
-      continue; // a header over HeaderBytes: left to VTK's reader
     }
     const std::string& ts = h.TransferSyntax;
     if (ts != "1.2.840.10008.1.2" && ts != "1.2.840.10008.1.2.1")

@@ -437,7 +437,25 @@ std::string CheckOBJ(const std::string& fileName, std::uint64_t& bytes)
     words >> key;
     if (key == "v")
     {
+      // VTK's OBJ reader reads "nan" as 0 and a missing coordinate as 0: the mesh then had
+      // points the file never gave.
       ++points;
+      std::string word;
+      int coordinates = 0;
+      for (; coordinates < 3 && words >> word; ++coordinates)
+      {
+        char* end = nullptr;
+        const double value = std::strtod(word.c_str(), &end);
+        if (*end != '\0' || !std::isfinite(value))
+        {
+          return "line " + std::to_string(number) + " gives the vertex coordinate '" +
+            word.substr(0, 30) + "', not a finite number";
+        }
+      }
+      if (coordinates < 3)
+      {
+        return "line " + std::to_string(number) + " gives a vertex fewer than 3 coordinates";
+      }
     }
     else if (key == "vt")
     {

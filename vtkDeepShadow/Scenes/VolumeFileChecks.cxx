@@ -1,7 +1,7 @@
 #include "VolumeFileChecks.h"
 #include "DicomSeriesChecks.h"
-
-#include "vtk_zlib.h"
+#include "NiftiFileChecks.h"
+#include "XMLFileChecks.h"
 
 #include "HeaderText.h"
 #include "vtkDeepShadowMemoryBudget.h"
@@ -11,13 +11,13 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkInformation.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkXMLDataElement.h"
-#include "vtkXMLDataParser.h"
 
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -25,6 +25,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
 #include <vector>
 
 namespace deepshadow
@@ -304,31 +305,6 @@ std::string CheckNrrdHeader(const std::string& fileName)
   return "";
 }
 
-// Bytes of a VTK XML data array type, 0 if not a numeric type.
-std::uint64_t XMLTypeSize(const std::string& type)
-{
-  static const std::map<std::string, std::uint64_t> sizes = { { "Int8", 1 }, { "UInt8", 1 },
-    { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 }, { "UInt32", 4 }, { "Int64", 8 },
-    { "UInt64", 8 }, { "Float32", 4 }, { "Float64", 8 } };
-  const auto it = sizes.find(type);
-  return it == sizes.end() ? 0 : it->second;
-}
-
-// Reads one header word (4 or 8 bytes, the file's byte order); false past the end.
-bool ReadWord(std::ifstream& in, int size, bool bigEndian, std::uint64_t& value)
-{
-  unsigned char bytes[8] = { 0 };
-  if (!in.read(reinterpret_cast<char*>(bytes), size))
-  {
-    return false;
-  }
-  value = 0;
-  for (int b = 0; b < size; ++b)
-  {
-    value |= static_cast<std::uint64_t>(bytes[bigEndian ? size - 1 - b : b]) << (8 * b);
-  }
-  return true;
-}
 }
 
 Format FormatOf(const std::string& fileName)
@@ -361,8 +337,15 @@ Format FormatOf(const std::string& fileName)
 
 std::string CheckHeader(Format format, const std::string& fileName)
 {
-  return format == Format::Meta ? CheckMetaHeader(fileName)
-    : format == Format::Nrrd    ? CheckNrrdHeader(fileName)
+  if (format == Format::Meta || format == Format::Nrrd)
+  {
+    // The data files too: VTK's readers expand a file pattern with sprintf as they read the
+    // header (a "%n" in it aborted the process).
+    const std::string header = format == Format::Meta ? CheckMetaHeader(fileName) : CheckNrrdHeader(fileName);
+    return header.empty() ? CheckDataLayout(format, fileName) : header;
+  }
+  return format == Format::Nifti ? CheckNiftiHeader(fileName)
+    : format == Format::XML     ? xmlfile::CheckStructure(fileName)
     : format == Format::Dicom   ? CheckDicomDirectory(fileName)
                                 : std::string();
 }
@@ -446,75 +429,92 @@ std::string CheckInformation(vtkInformation* info, std::uint64_t budget)
   return CheckMemoryBudget(image.str(), ScalarBytes(info), budget);
 }
 
-// NRRD and MetaImage data files that are missing, or raw (uncompressed) data shorter than the
-// image: VTK's readers only print a warning (MetaIO writes to std::cerr) and may return
-// garbage, so this is checked from the header before reading. Returns "" when the data look
-// complete or the layout is one this check does not cover (compressed or ASCII sizes, skips,
-// lists of files).
 namespace
 {
-// NIfTI: the data after a header of at least 348 bytes (352 with its extension flag) must be
-// in the file; gzip's trailer holds the uncompressed size modulo 2^32.
-std::string CheckNiftiSize(const std::string& fileName, std::uint64_t needed)
+// Where a MetaImage or NRRD header keeps its data: after the header in the same file (local),
+// in one file it names, or in a list or numbered pattern of files (one 2D slice each).
+struct DataLayout
 {
-  const std::uint64_t header = 352;
-  const std::uint64_t bytes = SystemTools::FileLength(fileName);
-  const bool gzipped = SystemTools::LowerCase(fileName).rfind(".gz") == fileName.size() - 3;
-  std::uint64_t holds = bytes;
-  if (gzipped)
+  bool Local = true;
+  bool Raw = true;          // uncompressed: sizes can be checked
+  bool Skips = false;       // byte or line skips, a header size: sizes not checked
+  std::uint64_t HeaderEnd = 0;
+  std::vector<std::string> Files; // resolved paths of the files named (none when local)
+  bool Several = false;     // a list or pattern: one slice a file
+  std::uint64_t Slices = 0; // the last size (DimSize / sizes), for several files
+  std::string Problem;      // a list or pattern VTK would misread
+};
+
+// Files a data file pattern names: "NAME%03d.raw MIN MAX STEP", one integer conversion.
+std::vector<std::string> PatternFiles(const std::vector<std::string>& words, const std::string& base,
+  std::string& problem)
+{
+  long long first = 0, last = 0, step = 0;
+  if (words.size() < 4 || !IsInteger(words[1], -2147483647, 2147483647, &first) ||
+    !IsInteger(words[2], -2147483647, 2147483647, &last) || !IsInteger(words[3], 1, 2147483647, &step) ||
+    last < first)
   {
-    // Decompressed up to what is needed: gzip's trailer cannot be trusted in a cut file, and
-    // VTK's reader fills what a cut stream lacks with zeros without a word.
-    gzFile in = gzopen(fileName.c_str(), "rb");
-    if (!in)
-    {
-      return "the gzip stream cannot be opened";
-    }
-    std::vector<char> buffer(1 << 20);
-    holds = 0;
-    int got = 0;
-    while (holds < header + needed &&
-      (got = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()))) > 0)
-    {
-      holds += static_cast<std::uint64_t>(got);
-    }
-    int code = Z_OK;
-    const char* text = gzerror(in, &code);
-    const std::string message = text && *text ? text : "zlib error"; // gzclose frees it
-    gzclose(in);
-    if (holds < header + needed && code != Z_OK && code != Z_STREAM_END)
-    {
-      return "its gzip stream is broken (" + message + ") after " + std::to_string(holds) +
-        " bytes (truncated?)";
-    }
+    problem = "its data file pattern '" + words[0] + "' is not followed by first, last and step";
+    return {};
   }
-  if (holds < header + needed)
+  // VTK passes the pattern to sprintf: exactly one integer conversion, no other '%'.
+  const std::string& pattern = words[0];
+  int conversions = 0;
+  for (size_t i = 0; i < pattern.size(); ++i)
   {
-    std::ostringstream problem;
-    problem << "the file holds " << holds << (gzipped ? " uncompressed" : "")
-            << " bytes, its header and data need at least " << header + needed
-            << " (truncated?)";
-    return problem.str();
+    if (pattern[i] != '%')
+    {
+      continue;
+    }
+    size_t j = i + 1;
+    while (j < pattern.size() && std::strchr("0-+ #", pattern[j]))
+    {
+      ++j;
+    }
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])))
+    {
+      ++j;
+    }
+    if (j - i > 6 || j >= pattern.size() || !std::strchr("diuxXo", pattern[j]))
+    {
+      problem = "its data file pattern '" + pattern + "' is not a name with one %d";
+      return {};
+    }
+    ++conversions;
+    i = j;
   }
-  return "";
-}
+  const long long count = (last - first) / step + 1;
+  if (conversions != 1 || count > MaxDataFiles)
+  {
+    problem = conversions != 1
+      ? "its data file pattern '" + pattern + "' is not a name with one %d"
+      : "its data file pattern names " + std::to_string(count) + " files, more than " +
+        std::to_string(MaxDataFiles);
+    return {};
+  }
+  std::vector<std::string> files;
+  for (long long n = first; n <= last; n += step)
+  {
+    char name[4096];
+    std::snprintf(name, sizeof(name), pattern.c_str(), static_cast<int>(n));
+    files.push_back(SystemTools::CollapseFullPath(name, base));
+  }
+  return files;
 }
 
-std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed)
+DataLayout ReadLayout(Format format, const std::string& fileName)
 {
-  if (format == Format::Nifti)
-  {
-    return CheckNiftiSize(fileName, needed);
-  }
+  DataLayout layout;
   std::ifstream in(fileName, std::ios::binary);
+  const std::string base = SystemTools::GetFilenamePath(fileName);
   std::string line, dataFile;
-  std::uint64_t headerEnd = 0;
-  bool raw = true;
+  long long dimension = 0;
+  std::vector<std::string> sizes;
   while (std::getline(in, line))
   {
     if (format == Format::Nrrd && Trim(line).empty())
     {
-      headerEnd = static_cast<std::uint64_t>(in.tellg());
+      layout.HeaderEnd = static_cast<std::uint64_t>(in.tellg());
       break;
     }
     const size_t at = line.find(format == Format::Nrrd ? ':' : '=');
@@ -525,212 +525,128 @@ std::string CheckDataFile(Format format, const std::string& fileName, std::uint6
     const std::string key = SystemTools::LowerCase(Trim(line.substr(0, at)));
     const std::string value = Trim(line.substr(at + 1));
     const std::string lower = SystemTools::LowerCase(value);
-    if (format == Format::Nrrd)
+    if (key == "encoding")
     {
-      if (key == "encoding")
-      {
-        raw = lower == "raw";
-      }
-      else if (key == "data file" || key == "datafile")
-      {
-        dataFile = value;
-      }
-      else if (key == "byte skip" || key == "byteskip" || key == "line skip" || key == "lineskip")
-      {
-        return "";
-      }
+      layout.Raw = lower == "raw";
     }
-    else
+    else if (key == "compresseddata")
     {
-      if (key == "compresseddata")
+      layout.Raw = lower != "true";
+    }
+    else if (key == "byte skip" || key == "byteskip" || key == "line skip" || key == "lineskip" ||
+      key == "headersize")
+    {
+      layout.Skips = true;
+    }
+    else if (key == "sizes" || key == "dimsize")
+    {
+      sizes = Words(value);
+    }
+    else if (key == "data file" || key == "datafile" || key == "elementdatafile")
+    {
+      dataFile = value;
+      layout.HeaderEnd = static_cast<std::uint64_t>(in.tellg());
+      if (format == Format::Meta)
       {
-        raw = lower != "true";
-      }
-      else if (key == "headersize")
-      {
-        return "";
-      }
-      else if (key == "elementdatafile")
-      {
-        dataFile = value;
-        headerEnd = static_cast<std::uint64_t>(in.tellg());
-        break;
+        break; // the last field; a .mha's data follow
       }
     }
   }
-  const bool local =
-    format == Format::Nrrd ? dataFile.empty() : SystemTools::LowerCase(dataFile) == "local";
-  if (!local &&
-    (dataFile.empty() || SystemTools::LowerCase(dataFile) == "list" ||
-      dataFile.find_first_of(" %") != std::string::npos))
+  // No data file named (or a header that cannot be read): the data would follow the header.
+  layout.Local = dataFile.empty() || (format == Format::Meta && SystemTools::LowerCase(dataFile) == "local");
+  if (layout.Local)
   {
-    return ""; // no data file named, or a list or pattern of files
+    return layout;
   }
-  std::string path = fileName;
-  if (!local)
+  const std::vector<std::string> words = Words(dataFile);
+  layout.Several = words.size() > 1 || SystemTools::LowerCase(words.front()) == "list";
+  if (!sizes.empty())
   {
-    path = SystemTools::CollapseFullPath(dataFile, SystemTools::GetFilenamePath(fileName));
+    IsInteger(sizes.back(), 1, 2147483647, &dimension);
+    layout.Slices = static_cast<std::uint64_t>(std::max(dimension, 0LL));
+  }
+  if (SystemTools::LowerCase(words.front()) == "list")
+  {
+    // The file names follow, one a line, to the end of the header file.
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(layout.HeaderEnd));
+    while (std::getline(in, line) && layout.Files.size() <= MaxDataFiles)
+    {
+      if (!Trim(line).empty())
+      {
+        layout.Files.push_back(SystemTools::CollapseFullPath(Trim(line), base));
+      }
+    }
+    if (layout.Files.size() > MaxDataFiles)
+    {
+      layout.Problem = "its list names more than " + std::to_string(MaxDataFiles) + " data files";
+    }
+  }
+  else if (layout.Several)
+  {
+    layout.Files = PatternFiles(words, base, layout.Problem);
+  }
+  else
+  {
+    layout.Files.push_back(SystemTools::CollapseFullPath(dataFile, base));
+  }
+  return layout;
+}
+}
+
+std::vector<std::string> DataFiles(Format format, const std::string& fileName)
+{
+  return format == Format::Meta || format == Format::Nrrd ? ReadLayout(format, fileName).Files
+                                                          : std::vector<std::string>();
+}
+
+std::string CheckDataLayout(Format format, const std::string& fileName)
+{
+  const DataLayout layout = ReadLayout(format, fileName);
+  if (!layout.Problem.empty())
+  {
+    return layout.Problem;
+  }
+  if (layout.Several && layout.Files.size() != layout.Slices)
+  {
+    // VTK reads one slice a file and past its list otherwise (a list of 2 for 16 slices crashed it).
+    return "its data file list names " + std::to_string(layout.Files.size()) + " files for " +
+      std::to_string(layout.Slices) + " slices (one slice a file)";
+  }
+  for (const std::string& path : layout.Files)
+  {
     if (!SystemTools::FileExists(path, true))
     {
       return "its data file '" + path + "' does not exist";
     }
+    struct stat info;
+    if (stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+    {
+      return "its data file '" + path + "' is not a regular file";
+    }
   }
-  if (!raw)
-  {
-    return "";
-  }
-  const std::uint64_t size = SystemTools::FileLength(path);
-  const std::uint64_t available = local ? (size > headerEnd ? size - headerEnd : 0) : size;
-  if (available >= needed)
-  {
-    return "";
-  }
-  std::ostringstream problem;
-  problem << "its raw data " << (local ? "" : "file '" + path + "' ") << "holds " << available
-          << " bytes where the image needs " << needed << " (truncated?)";
-  return problem.str();
+  return "";
 }
 
-std::string CheckXMLImage(vtkXMLDataParser* parser, const std::string& fileName)
+std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed)
 {
-  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
-  vtkXMLDataElement* image = root ? root->FindNestedElementWithName("ImageData") : nullptr;
-  if (!image)
+  const DataLayout layout = ReadLayout(format, fileName);
+  if (!layout.Raw || layout.Skips)
   {
     return "";
   }
-  // Every piece within the whole extent (VTK copies a piece into the image by its extent,
-  // unchecked: a piece from -2^31 crashed it).
-  int whole[6];
-  if (image->GetVectorAttribute("WholeExtent", 6, whole) != 6)
+  // Raw data: each file (or the data after the header) holds its share of the image.
+  const std::uint64_t share = layout.Files.empty() ? needed : needed / layout.Files.size();
+  for (const std::string& path : layout.Local ? std::vector<std::string>{ fileName } : layout.Files)
   {
-    return "its ImageData has no WholeExtent of six numbers";
-  }
-  for (int p = 0; p < image->GetNumberOfNestedElements(); ++p)
-  {
-    vtkXMLDataElement* piece = image->GetNestedElement(p);
-    int extent[6];
-    if (std::string(piece->GetName()) != "Piece")
+    const std::uint64_t size = SystemTools::FileLength(path);
+    const std::uint64_t available = layout.Local ? (size > layout.HeaderEnd ? size - layout.HeaderEnd : 0) : size;
+    if (available < share)
     {
-      continue;
-    }
-    if (piece->GetVectorAttribute("Extent", 6, extent) != 6)
-    {
-      return "its piece " + std::to_string(p) + " has no Extent of six numbers";
-    }
-    for (int a = 0; a < 3; ++a)
-    {
-      if (extent[2 * a] < whole[2 * a] || extent[2 * a + 1] > whole[2 * a + 1] ||
-        extent[2 * a] > extent[2 * a + 1])
-      {
-        return "its piece " + std::to_string(p) + "'s extent is not within its WholeExtent";
-      }
-    }
-  }
-  vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
-  if (!appended)
-  {
-    return ""; // no appended data: inline data that the XML parser checks
-  }
-  const char* encoding = appended->GetAttribute("encoding");
-  if (!encoding || std::string(encoding) != "raw")
-  {
-    return ""; // base64: not covered
-  }
-  const char* headerType = root->GetAttribute("header_type");
-  const int word = headerType && std::string(headerType) == "UInt64" ? 8 : 4;
-  const char* byteOrder = root->GetAttribute("byte_order");
-  const bool bigEndian = byteOrder && std::string(byteOrder) == "BigEndian";
-  const bool compressed = root->GetAttribute("compressor") != nullptr;
-  const std::uint64_t fileSize = SystemTools::FileLength(fileName);
-  const std::uint64_t start = static_cast<std::uint64_t>(parser->GetAppendedDataPosition());
-  std::ifstream in(fileName, std::ios::binary);
-  for (int p = 0; p < image->GetNumberOfNestedElements(); ++p)
-  {
-    vtkXMLDataElement* piece = image->GetNestedElement(p);
-    int extent[6];
-    if (std::string(piece->GetName()) != "Piece" || piece->GetVectorAttribute("Extent", 6, extent) != 6)
-    {
-      continue;
-    }
-    for (int g = 0; g < piece->GetNumberOfNestedElements(); ++g)
-    {
-      vtkXMLDataElement* group = piece->GetNestedElement(g);
-      const std::string groupName = group->GetName();
-      if (groupName != "PointData" && groupName != "CellData")
-      {
-        continue;
-      }
-      const int cell = groupName == "CellData" ? 1 : 0;
-      std::uint64_t tuples = 1;
-      for (int a = 0; a < 3; ++a)
-      {
-        const std::int64_t n = std::max<std::int64_t>(
-          static_cast<std::int64_t>(extent[2 * a + 1]) - extent[2 * a] + 1 - cell, cell ? 1 : 0);
-        tuples = SaturatingProduct(tuples, static_cast<std::uint64_t>(std::max<std::int64_t>(n, 0)));
-      }
-      for (int d = 0; d < group->GetNumberOfNestedElements(); ++d)
-      {
-        vtkXMLDataElement* array = group->GetNestedElement(d);
-        const char* format = array->GetAttribute("format");
-        const char* type = array->GetAttribute("type");
-        unsigned long long offset = 0;
-        if (!format || std::string(format) != "appended" || !type ||
-          !array->GetScalarAttribute("offset", offset))
-        {
-          continue;
-        }
-        int components = 1;
-        array->GetScalarAttribute("NumberOfComponents", components);
-        const std::string name = array->GetAttribute("Name") ? array->GetAttribute("Name") : "?";
-        const std::uint64_t needed = SaturatingProduct(
-          SaturatingProduct(tuples, static_cast<std::uint64_t>(std::max(components, 1))),
-          XMLTypeSize(type));
-        const std::uint64_t at = start + offset;
-        std::uint64_t header = 0, data = 0, blocks = 0;
-        in.clear();
-        in.seekg(static_cast<std::streamoff>(std::min<std::uint64_t>(at, fileSize)));
-        bool complete = at < fileSize && ReadWord(in, word, bigEndian, blocks);
-        if (complete && !compressed)
-        {
-          header = word;
-          data = blocks; // the one word is the byte count
-        }
-        else if (complete)
-        {
-          // Blocks, block size, last block size, then each block's compressed size.
-          std::uint64_t blockSize = 0, lastSize = 0;
-          complete = ReadWord(in, word, bigEndian, blockSize) && ReadWord(in, word, bigEndian, lastSize) &&
-            SaturatingProduct(blocks + 3, static_cast<std::uint64_t>(word)) <= fileSize - at;
-          header = (blocks + 3) * static_cast<std::uint64_t>(word);
-          for (std::uint64_t b = 0; complete && b < blocks; ++b)
-          {
-            std::uint64_t size = 0;
-            complete = ReadWord(in, word, bigEndian, size);
-            data = std::min(data + size, fileSize);
-          }
-          const std::uint64_t raw = blocks == 0 ? 0
-            : SaturatingProduct(blocks - 1, blockSize) + (lastSize ? lastSize : blockSize);
-          if (complete && raw < needed)
-          {
-            std::ostringstream problem;
-            problem << "its array '" << name << "' decompresses to " << raw
-                    << " bytes where the image needs " << needed;
-            return problem.str();
-          }
-        }
-        if (complete && !compressed && data < needed)
-        {
-          std::ostringstream problem;
-          problem << "its array '" << name << "' holds " << data << " bytes where the image needs "
-                  << needed;
-          return problem.str();
-        }
-        if (!complete || header + data > fileSize - std::min(at, fileSize))
-        {
-          return "the file ends inside the appended data of its array '" + name + "' (truncated?)";
-        }
-      }
+      std::ostringstream problem;
+      problem << "its raw data " << (layout.Local ? "" : "file '" + path + "' ") << "holds " << available
+              << " bytes where the image needs " << share << " (truncated?)";
+      return problem.str();
     }
   }
   return "";

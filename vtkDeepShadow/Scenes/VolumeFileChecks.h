@@ -10,9 +10,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 class vtkInformation;
-class vtkXMLDataParser;
 
 namespace deepshadow
 {
@@ -35,7 +35,8 @@ Format FormatOf(const std::string& fileName);
 /**
  * The header fields VTK's MetaImage and NRRD readers misread without a word: counts that do
  * not match the number of dimensions, numbers that are not numbers, unknown element types,
- * and NRRD's ASCII encoding (VTK 9.1 reads it wrong).
+ * and NRRD's ASCII encoding (VTK 9.1 reads it wrong); NIfTI's header (NiftiFileChecks.h);
+ * VTK XML's structure (XMLFileChecks.h); a DICOM folder (DicomSeriesChecks.h).
  */
 std::string CheckHeader(Format format, const std::string& fileName);
 
@@ -48,19 +49,24 @@ std::string CheckInformation(vtkInformation* info, std::uint64_t budget);
 /** Bytes of the point scalars the information announces (saturating), 0 if unknown. */
 std::uint64_t ScalarBytes(vtkInformation* info);
 
-/**
- * NRRD and MetaImage: a data file that is missing, or raw data shorter than `needed` bytes.
- * NIfTI: a file shorter than its header and `needed` bytes (for .nii.gz, the uncompressed
- * size gzip records).
- */
-std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed);
+/** Data files a list or pattern may name (VTK reads one slice from each). */
+constexpr std::uint64_t MaxDataFiles = 65536;
 
 /**
- * VTK XML image data: every piece's extent within the whole extent, and with appended data
- * (raw, compressed or not) every array's block within the file and holding the bytes its
- * piece's extent needs. `parser` is the delegate's, after its information was read.
+ * MetaImage and NRRD: the detached data files the header names (one, a LIST of them, or a
+ * numbered pattern), resolved against the header's folder; none for data in the same file.
  */
-std::string CheckXMLImage(vtkXMLDataParser* parser, const std::string& fileName);
+std::vector<std::string> DataFiles(Format format, const std::string& fileName);
+
+/**
+ * MetaImage and NRRD, with the header (CheckHeader runs it): a data file that is missing or
+ * not a regular file, a list or pattern that does not name one file a slice, or a pattern
+ * VTK would pass to sprintf unsafely (anything but one integer conversion).
+ */
+std::string CheckDataLayout(Format format, const std::string& fileName);
+
+/** MetaImage and NRRD: raw data (each file of a list its share) shorter than `needed` bytes. */
+std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed);
 
 }
 }

@@ -1,6 +1,7 @@
 #include "vtkDeepShadowMeshReader.h"
 
 #include "MeshFileChecks.h"
+#include "XMLFileChecks.h"
 #include "ReaderMessages.h"
 #include "vtkDeepShadowMemoryBudget.h"
 
@@ -75,7 +76,11 @@ int vtkDeepShadowMeshReader::RequestData(
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".vtp")
   {
-    problem = deepshadow::meshfile::CheckVTP(name, bytes);
+    problem = deepshadow::xmlfile::CheckStructure(name);
+    if (problem.empty())
+    {
+      problem = deepshadow::meshfile::CheckVTP(name, bytes);
+    }
     auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     xml->SetFileName(name.c_str());
     reader = xml;

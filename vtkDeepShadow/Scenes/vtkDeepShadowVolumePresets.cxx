@@ -8,6 +8,7 @@
 
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -188,6 +189,13 @@ std::vector<double> NodeArray(const Json::Value& value, const char* key, std::st
     error = std::string("\"") + key + "\" is not an array of numbers";
     return nodes;
   }
+  if (value.size() / 4 > static_cast<Json::ArrayIndex>(vtkDeepShadowVolumePresets::MaximumNodes))
+  {
+    error = std::string("\"") + key + "\" has " + std::to_string(value.size() / 4) +
+      " nodes; at most " + std::to_string(vtkDeepShadowVolumePresets::MaximumNodes) +
+      " are loaded (VTK sorts its nodes again at each one added)";
+    return nodes;
+  }
   for (Json::ArrayIndex i = 0; i < value.size(); ++i)
   {
     if (!value[i].isNumeric() || !std::isfinite(value[i].asDouble()))
@@ -248,9 +256,20 @@ bool vtkDeepShadowVolumePresets::IsPresetName(const std::string& name)
 
 void vtkDeepShadowVolumePresets::SetWindowLevel(double window, double level)
 {
+  this->LastError.clear();
   if (!std::isfinite(window) || !std::isfinite(level) || window <= 0.0)
   {
     this->Fail("the window must be a positive number and the level a finite one");
+    return;
+  }
+  const double smallest = std::max(MinimumRelativeWindow * std::abs(level), MinimumWindow);
+  if (window < smallest)
+  {
+    std::ostringstream message;
+    message << "the window " << window << " is narrower than the smallest the picture resolves at "
+            << "level " << level << ": " << smallest << " (" << MinimumRelativeWindow
+            << " of |level|, and at least " << MinimumWindow << ")";
+    this->Fail(message.str());
     return;
   }
   this->Window = window;
@@ -306,14 +325,17 @@ bool vtkDeepShadowVolumePresets::ApplyFile(const std::string& path, vtkVolumePro
   {
     return this->Fail("cannot read " + where + ": no such file");
   }
-  const unsigned long bytes = vtksys::SystemTools::FileLength(path);
-  if (bytes > this->MaximumFileBytes)
-  {
-    return this->Fail("cannot read " + where + ": " + std::to_string(bytes) +
-      " bytes is more than a preset file needs (limit " +
-      std::to_string(static_cast<long long>(this->MaximumFileBytes)) + ")");
-  }
+  // At most the limit is read, whatever the file's size claims (/dev/zero claims none).
   std::ifstream file(path, std::ios::binary);
+  std::string text(static_cast<size_t>(this->MaximumFileBytes) + 1, '\0');
+  file.read(&text[0], static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(std::max<std::streamsize>(file.gcount(), 0)));
+  if (text.size() > this->MaximumFileBytes)
+  {
+    return this->Fail("cannot read " + where + ": it holds more than a preset file needs (limit " +
+      std::to_string(static_cast<long long>(this->MaximumFileBytes)) + " bytes)");
+  }
+  std::istringstream stream(text);
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
   builder["stackLimit"] = 64;
@@ -322,7 +344,7 @@ bool vtkDeepShadowVolumePresets::ApplyFile(const std::string& path, vtkVolumePro
   bool parsed = false;
   try
   {
-    parsed = file && Json::parseFromStream(builder, file, &root, &parseErrors);
+    parsed = Json::parseFromStream(builder, stream, &root, &parseErrors);
   }
   catch (const std::exception& e)
   {

@@ -1,7 +1,10 @@
 #include "vtkDeepShadowVolumeReader.h"
 
+#include "DicomSeriesChecks.h"
+#include "NiftiFileChecks.h"
 #include "ReaderMessages.h"
 #include "VolumeFileChecks.h"
+#include "XMLFileChecks.h"
 #include "vtkDeepShadowMemoryBudget.h"
 
 #include "vtkCommand.h"
@@ -252,6 +255,19 @@ std::vector<std::string> vtkDeepShadowVolumeReader::GetSupportedExtensions()
   return { ".vti", ".mhd", ".mha", ".nrrd", ".nhdr", ".nii", ".nii.gz" };
 }
 
+std::vector<std::string> vtkDeepShadowVolumeReader::GetFilesOf(const std::string& fileName)
+{
+  const Format format = FormatOf(fileName);
+  if (format == Format::Dicom)
+  {
+    return deepshadow::volumefile::DicomDirectoryFiles(fileName);
+  }
+  std::vector<std::string> files = { fileName };
+  const std::vector<std::string> data = deepshadow::volumefile::DataFiles(format, fileName);
+  files.insert(files.end(), data.begin(), data.end());
+  return files;
+}
+
 bool vtkDeepShadowVolumeReader::CanReadFile(const char* fileName)
 {
   if (!fileName || !vtksys::SystemTools::FileExists(fileName, true))
@@ -321,18 +337,19 @@ bool vtkDeepShadowVolumeReader::PrepareReader()
     this->Fail(problem.str());
     return false;
   }
+  // The header is checked before VTK's reader parses any of it (its CanReadFile included).
+  const std::string problem = deepshadow::volumefile::CheckHeader(format, name);
+  if (!problem.empty())
+  {
+    this->Fail(problem);
+    return false;
+  }
   bool accepted = false;
   auto reader = MakeReader(format, name.c_str(), accepted);
   if (!accepted)
   {
     this->Fail(std::string("not a valid ") + FormatName(format) + " file (" +
       reader->GetClassName() + " does not recognise its header)");
-    return false;
-  }
-  const std::string problem = deepshadow::volumefile::CheckHeader(format, name);
-  if (!problem.empty())
-  {
-    this->Fail(problem);
     return false;
   }
   static_cast<ErrorCollector*>(this->Errors.Get())->Watch(reader);
@@ -417,14 +434,18 @@ int vtkDeepShadowVolumeReader::RequestData(
   // What the header declares against what the file holds, before VTK's reader reads it.
   const Format format = FormatOf(this->FileName);
   std::string problem;
-  if (format == Format::Nrrd || format == Format::Meta || format == Format::Nifti)
+  if (format == Format::Nrrd || format == Format::Meta)
   {
     problem = deepshadow::volumefile::CheckDataFile(format, this->FileName,
       deepshadow::volumefile::ScalarBytes(this->Reader->GetOutputInformation(0)));
   }
+  else if (format == Format::Nifti)
+  {
+    problem = deepshadow::volumefile::CheckNiftiData(this->FileName);
+  }
   else if (auto* xml = vtkXMLImageDataReader::SafeDownCast(this->Reader))
   {
-    problem = deepshadow::volumefile::CheckXMLImage(xml->GetXMLParser(), this->FileName);
+    problem = deepshadow::xmlfile::CheckImage(xml->GetXMLParser(), this->FileName);
   }
   auto* errors = static_cast<ErrorCollector*>(this->Errors.Get());
   if (problem.empty())

@@ -63,6 +63,13 @@ public:
   /** Supported extensions, lower case with the dot: .vti, .mhd, .mha, .nrrd, .nhdr. */
   static std::vector<std::string> GetSupportedExtensions();
 
+  /**
+   * The files a volume is read from: the file itself and the detached data files its header
+   * names (MetaImage's ElementDataFile, NRRD's "data file", one, a LIST or a pattern), or
+   * the regular files of a DICOM folder. A tool refuses to write over any of them.
+   */
+  static std::vector<std::string> GetFilesOf(const std::string& fileName);
+
   /** True if the file exists, has a supported extension and its reader accepts it. */
   static bool CanReadFile(const char* fileName);
 

@@ -103,7 +103,7 @@ TEST(MedicalReaders, CutNiftiFilesAreRefused)
   Write(dir + "/cut.nii", nii, 40000);
   EXPECT_NE(Read(dir + "/cut.nii")->GetLastError().find("truncated?"), std::string::npos);
   Write(dir + "/header.nii", nii, 300);
-  EXPECT_NE(Read(dir + "/header.nii")->GetLastError().find("not a valid NIfTI"), std::string::npos);
+  EXPECT_NE(Read(dir + "/header.nii")->GetLastError().find("shorter than a NIfTI header"), std::string::npos);
   const auto gz = Bytes(NibabelData + "example4d.nii.gz");
   Write(dir + "/cut.nii.gz", gz, 50000);
   EXPECT_NE(Read(dir + "/cut.nii.gz")->GetLastError().find("gzip stream is broken"), std::string::npos);
