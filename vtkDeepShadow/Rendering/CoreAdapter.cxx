@@ -2,6 +2,8 @@
 // volume looks (its property and blend mode) is in CoreAdapterAppearance.cxx.
 #include "CoreAdapter.h"
 
+#include "Core/Geometry/PolygonTriangulation.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -90,6 +92,21 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars)
   {
     return "no input volume (call SetInputData or SetInputConnection)";
   }
+  // Points per axis from the extent in 64 bits: VTK's int dimensions wrap past 2^31 - 1
+  // (an extent of 2^32 points read as 0x1x1).
+  const int* extent = image->GetExtent();
+  long long points[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    points[axis] = static_cast<long long>(extent[2 * axis + 1]) - extent[2 * axis] + 1;
+  }
+  if (std::any_of(points, points + 3, [](long long n) { return n > 2147483647LL; }))
+  {
+    std::ostringstream why;
+    why << "the volume's extent spans " << points[0] << "x" << points[1] << "x" << points[2]
+        << " points; VTK's image data holds at most 2^31 - 1 along an axis";
+    return why.str();
+  }
   int dims[3];
   image->GetDimensions(dims);
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || image->GetNumberOfPoints() == 0)
@@ -153,6 +170,20 @@ std::string CheckMeshInput(vtkPolyData* mesh)
     return "the mesh has " + std::to_string(nonFinite) + " of " + std::to_string(points) +
       " points that are not finite (NaN or infinite)";
   }
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    largest = std::max({ largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+  }
+  if (largest > MaxMeshCoordinate)
+  {
+    std::ostringstream why;
+    why << "the mesh's coordinates reach " << largest << "; at most " << MaxMeshCoordinate
+        << " can be drawn (single precision on the GPU)";
+    return why.str();
+  }
   const std::pair<const char*, vtkCellArray*> kinds[] = { { "vertex", mesh->GetVerts() },
     { "line", mesh->GetLines() }, { "polygon", mesh->GetPolys() }, { "strip", mesh->GetStrips() } };
   for (const auto& kind : kinds)
@@ -176,6 +207,33 @@ std::string CheckMeshInput(vtkPolyData* mesh)
           << static_cast<long long>(range[0] < 0.0 ? range[0] : range[1]) << ", out of range ("
           << points << " points)";
       return why.str();
+    }
+  }
+  return std::string();
+}
+
+std::string CheckMeshPlacement(vtkPolyData* mesh, const glm::dmat4& modelToWorld)
+{
+  double b[6];
+  mesh->GetBounds(b);
+  if (mesh->GetNumberOfPoints() == 0 || !(b[0] <= b[1]))
+  {
+    return std::string();
+  }
+  double largest = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec4 p = modelToWorld * glm::dvec4(b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + (corner >> 2)], 1.0);
+    for (int c = 0; c < 3; ++c)
+    {
+      largest = std::isfinite(p[c]) ? std::max(largest, std::abs(p[c])) : HUGE_VAL;
+      if (!(largest <= MaxMeshCoordinate))
+      {
+        std::ostringstream why;
+        why << "its actor's matrix puts the mesh at coordinates of " << largest << "; at most "
+            << MaxMeshCoordinate << " can be drawn (single precision on the GPU)";
+        return why.str();
+      }
     }
   }
   return std::string();
@@ -362,31 +420,24 @@ std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData
       error = name + ": " + problem;
       return nullptr;
     }
-    std::vector<Triangle> triangles;
     auto point = [&](vtkIdType id) {
       double p[3];
       mesh->GetPoint(id, p);
       return glm::dvec3(dataToIndex * glm::dvec4(p[0], p[1], p[2], 1.0));
     };
-    // Polygons as fans, strips as alternating triangles; vertices and lines bound nothing.
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    vtkCellArray* polys = mesh->GetPolys();
-    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    // Polygons and strips as triangles; vertices and lines bound nothing.
+    std::vector<std::array<vtkIdType, 3>> cells;
+    std::string why;
+    if (!TriangulateCells(mesh, cells, why))
     {
-      for (vtkIdType i = 1; i + 1 < n; ++i)
-      {
-        triangles.push_back({ point(ids[0]), point(ids[i]), point(ids[i + 1]) });
-      }
+      error = name + ": the mesh has " + why;
+      return nullptr;
     }
-    vtkCellArray* strips = mesh->GetStrips();
-    for (strips->InitTraversal(); strips->GetNextCell(n, ids);)
+    std::vector<Triangle> triangles;
+    triangles.reserve(cells.size());
+    for (const auto& cell : cells)
     {
-      for (vtkIdType i = 0; i + 2 < n; ++i)
-      {
-        triangles.push_back(i % 2 == 0 ? Triangle{ point(ids[i]), point(ids[i + 1]), point(ids[i + 2]) }
-                                       : Triangle{ point(ids[i + 1]), point(ids[i]), point(ids[i + 2]) });
-      }
+      triangles.push_back({ point(cell[0]), point(cell[1]), point(cell[2]) });
     }
     if (!triangles.empty())
     {

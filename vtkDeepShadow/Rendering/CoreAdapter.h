@@ -51,10 +51,20 @@ std::string CheckVolumeInput(vtkImageData* image, vtkDataArray*& scalars);
 
 /**
  * Checks that a mesh can be drawn or used as a bound without reading out of bounds: every
- * point finite, every cell's point ids within the points. Returns "" when it can, else one
- * line saying why not (no input, the number of non-finite points, the first bad id).
+ * point finite and within MaxMeshCoordinate of the origin, every cell's point ids within the
+ * points. Returns "" when it can, else one line saying why not (no input, the number of
+ * non-finite points, the largest coordinate, the first bad id).
  */
 std::string CheckMeshInput(vtkPolyData* mesh);
+/** Beyond this, squared distances overflow in single precision on the GPU (as for lights). */
+constexpr double MaxMeshCoordinate = 1e18;
+
+/**
+ * Checks a checked mesh where `modelToWorld` (an actor's matrix) puts it: every corner of its
+ * box finite and within MaxMeshCoordinate. "" when it is, else one line with the coordinate.
+ */
+std::string CheckMeshPlacement(vtkPolyData* mesh, const glm::dmat4& modelToWorld);
+
 
 /**
  * Checks where a volume lies in the world for single-precision GPU rendering: `indexToWorld`

@@ -23,6 +23,18 @@ namespace
 // Functions with midpoints, sharpness or HSV/Lab colour are sampled this densely.
 constexpr int DenseSamples = 4097;
 
+// The i-th of DenseSamples points evenly from x0 to x1; without forming x1 - x0 where that
+// overflows (nodes at -+1.7e308).
+double Spaced(double x0, double x1, int i)
+{
+  if (std::isfinite(x1 - x0))
+  {
+    return x0 + (x1 - x0) * i / (DenseSamples - 1.0);
+  }
+  const double t = i / (DenseSamples - 1.0);
+  return x0 * (1.0 - t) + x1 * t;
+}
+
 PiecewiseLinear FromVTK(vtkPiecewiseFunction* function)
 {
   const int size = function ? function->GetSize() : 0;
@@ -47,7 +59,7 @@ PiecewiseLinear FromVTK(vtkPiecewiseFunction* function)
     nodes.clear();
     for (int i = 0; i < DenseSamples; ++i)
     {
-      nodes.emplace_back(x0 + (x1 - x0) * i / (DenseSamples - 1.0), table[i]);
+      nodes.emplace_back(Spaced(x0, x1, i), table[i]);
     }
   }
   return PiecewiseLinear(std::move(nodes), function->GetClamping() != 0);
@@ -78,7 +90,7 @@ void FromVTK(vtkColorTransferFunction* function, TransferFunction& tf)
     const double x0 = function->GetRange()[0], x1 = function->GetRange()[1];
     for (int i = 0; i < DenseSamples; ++i)
     {
-      const double x = x0 + (x1 - x0) * i / (DenseSamples - 1.0);
+      const double x = Spaced(x0, x1, i);
       double rgb[3];
       function->GetColor(x, rgb);
       r.emplace_back(x, rgb[0]);

@@ -38,17 +38,28 @@ vtkSmartPointer<vtkImageData> ToImageData(const Image& image)
   return data;
 }
 
-bool WritePNG(vtkImageData* image, const std::string& path)
+std::string EncodePNG(vtkImageData* image)
 {
-  if (!std::ofstream(path, std::ios::binary))
-  {
-    return false;
-  }
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
+  writer->WriteToMemoryOn();
   writer->Write();
-  return writer->GetErrorCode() == 0;
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
+  {
+    return std::string();
+  }
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+    static_cast<size_t>(bytes->GetNumberOfValues()));
+}
+
+bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  const std::string bytes = EncodePNG(image);
+  std::ofstream file(path, std::ios::binary);
+  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  file.close();
+  return !bytes.empty() && file.good();
 }
 
 bool WritePNG(const Image& image, const std::string& path)

@@ -23,7 +23,13 @@ VTKDEEPSHADOWRENDERING_EXPORT Image CaptureWindow(vtkRenderWindow* window);
 /** An 8-bit RGB vtkImageData of the image (values rounded and clamped). */
 VTKDEEPSHADOWRENDERING_EXPORT vtkSmartPointer<vtkImageData> ToImageData(const Image& image);
 
-/** Writes a PNG; returns false if the file cannot be written. */
+/**
+ * The PNG file's bytes (encoded in memory: libpng then has no file error to print on
+ * stderr); empty if the image cannot be encoded.
+ */
+VTKDEEPSHADOWRENDERING_EXPORT std::string EncodePNG(vtkImageData* image);
+
+/** Writes a PNG; returns false if the file cannot be written whole. */
 VTKDEEPSHADOWRENDERING_EXPORT bool WritePNG(const Image& image, const std::string& path);
 VTKDEEPSHADOWRENDERING_EXPORT bool WritePNG(vtkImageData* image, const std::string& path);
 

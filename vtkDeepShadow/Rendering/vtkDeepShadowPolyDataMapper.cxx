@@ -6,6 +6,7 @@
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Volume/ShadowContext.h"
+#include "Core/Geometry/PolygonTriangulation.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowSurfaceFS.h"
@@ -33,7 +34,6 @@
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
@@ -162,13 +162,33 @@ bool vtkDeepShadowPolyDataMapper::Internals::Prepare(vtkDeepShadowPolyDataMapper
     impl.BadInput = true;
     return false;
   }
-  // Polygons and strips as triangles; lines and vertices are not surfaces.
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(input);
-  triangulate->PassLinesOff();
-  triangulate->PassVertsOff();
-  triangulate->Update();
-  vtkSmartPointer<vtkPolyData> mesh = triangulate->GetOutput();
+  // Where the actor puts it, single precision must still resolve it.
+  const std::string placed = adapter::CheckMeshPlacement(input, adapter::ToGlm(actor->GetMatrix()));
+  if (!placed.empty())
+  {
+    impl.PrepareError = placed + ": nothing is drawn";
+    impl.BadInput = true;
+    return false;
+  }
+  // Polygons and strips as triangles over the same points; lines and vertices are not surfaces.
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  std::string why;
+  if (!deepshadow::TriangulateCells(input, triangles, why))
+  {
+    impl.PrepareError = "the mesh has " + why + ": nothing is drawn";
+    impl.BadInput = true;
+    return false;
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(static_cast<vtkIdType>(triangles.size()), static_cast<vtkIdType>(3 * triangles.size()));
+  for (const auto& triangle : triangles)
+  {
+    cells->InsertNextCell(3, triangle.data());
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(input->GetPoints());
+  mesh->GetPointData()->PassData(input->GetPointData());
+  mesh->SetPolys(cells);
   if (mesh->GetNumberOfPolys() == 0)
   {
     impl.PrepareError = "the mesh has no polygons: nothing is drawn";

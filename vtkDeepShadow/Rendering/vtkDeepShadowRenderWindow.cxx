@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <sstream>
 #include <vtksys/SystemTools.hxx>
 
@@ -31,6 +32,20 @@ vtkDeepShadowRenderWindow::vtkDeepShadowRenderWindow()
   this->SetWindowName("vtkDeepShadow (headless)");
 }
 
+namespace
+{
+// The window whose context was made current last (MakeCurrent), for PushContext, and the
+// windows alive (a window destroyed between a push and its pop is not made current again).
+// Plain pointers: a weak pointer to a window made in its own destructor (Finalize releases
+// through Push/PopContext) corrupts the heap.
+vtkDeepShadowRenderWindow* CurrentWindow = nullptr;
+std::set<vtkDeepShadowRenderWindow*>& LiveWindows()
+{
+  static std::set<vtkDeepShadowRenderWindow*> windows;
+  return windows;
+}
+}
+
 vtkDeepShadowRenderWindow::~vtkDeepShadowRenderWindow()
 {
   this->Finalize();
@@ -40,6 +55,11 @@ vtkDeepShadowRenderWindow::~vtkDeepShadowRenderWindow()
   while ((renderer = this->Renderers->GetNextRenderer(it)))
   {
     renderer->SetRenderWindow(nullptr);
+  }
+  LiveWindows().erase(this);
+  if (CurrentWindow == this)
+  {
+    CurrentWindow = nullptr;
   }
 }
 
@@ -128,6 +148,8 @@ void vtkDeepShadowRenderWindow::Initialize()
   }
   this->ContextBackend = this->Backend;
   this->FailedBackend = 0;
+  CurrentWindow = this; // as MakeCurrent() does: Push/PopContext restore by it
+  LiveWindows().insert(this);
 
   // Renderers hold per-context resources: reattach them to the new context.
   vtkRenderer* renderer;
@@ -137,10 +159,25 @@ void vtkDeepShadowRenderWindow::Initialize()
     renderer->SetRenderWindow(nullptr);
     renderer->SetRenderWindow(this);
   }
+  // Releasing a prop's objects made in another window (a mapper shared with one) made that
+  // window's context current for a while: VTK's initialization must reach this one.
+  this->MakeCurrent();
   this->OpenGLInit();
   if (!this->Initialized)
   {
     this->LastError = "VTK could not initialize OpenGL on the headless context";
+  }
+  else
+  {
+    // The largest framebuffer side this context can make (16384 on llvmpipe).
+    GLint renderbuffer = 0, viewport[2] = { 0, 0 }, texture = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    for (const GLint limit : { renderbuffer, viewport[0], viewport[1], texture })
+    {
+      this->MaximumSize = limit > 0 ? std::min(this->MaximumSize, static_cast<int>(limit)) : this->MaximumSize;
+    }
   }
   this->Mapped = 1;
 }
@@ -151,7 +188,7 @@ void vtkDeepShadowRenderWindow::Finalize()
   {
     return;
   }
-  this->Context->MakeCurrent();
+  this->MakeCurrent();
   this->ReleaseGraphicsResources(this);
   this->Context.reset();
   headless::ReleaseBackend(static_cast<headless::Backend>(this->ContextBackend));
@@ -263,6 +300,36 @@ void vtkDeepShadowRenderWindow::MakeCurrent()
   if (this->Context && !this->Context->IsCurrent() && !this->Context->MakeCurrent())
   {
     vtkErrorMacro("Failed to make the headless context current");
+    return;
+  }
+  if (this->Context)
+  {
+    CurrentWindow = this;
+    LiveWindows().insert(this);
+  }
+}
+
+void vtkDeepShadowRenderWindow::PushContext()
+{
+  vtkDeepShadowRenderWindow* before = CurrentWindow && CurrentWindow->IsCurrent() ? CurrentWindow : nullptr;
+  this->ContextStack.push_back(before);
+  if (before != this)
+  {
+    this->MakeCurrent();
+  }
+}
+
+void vtkDeepShadowRenderWindow::PopContext()
+{
+  if (this->ContextStack.empty())
+  {
+    return;
+  }
+  vtkDeepShadowRenderWindow* before = this->ContextStack.back();
+  this->ContextStack.pop_back();
+  if (before && before != this && LiveWindows().count(before))
+  {
+    before->MakeCurrent();
   }
 }
 
@@ -311,15 +378,31 @@ const char* vtkDeepShadowRenderWindow::ReportCapabilities()
 
 void vtkDeepShadowRenderWindow::SetSize(int width, int height)
 {
+  const int largest = this->GetMaximumSize();
+  if (width > largest || height > largest)
+  {
+    std::ostringstream message;
+    message << "SetSize(" << width << ", " << height << "): a side of at most " << largest
+            << " pixels can be drawn (this context's framebuffer limit); the size stays "
+            << this->Size[0] << "x" << this->Size[1];
+    this->LastError = message.str();
+    vtkErrorMacro(<< this->LastError);
+    return;
+  }
   // Framebuffers follow Size at the next Start(); nothing else to resize.
   this->Superclass::SetSize(width, height);
+}
+
+int vtkDeepShadowRenderWindow::GetMaximumSize()
+{
+  return this->MaximumSize;
 }
 
 int* vtkDeepShadowRenderWindow::GetScreenSize()
 {
   // No screen: report the largest framebuffer we would let a user ask for.
-  this->ScreenSize[0] = 16384;
-  this->ScreenSize[1] = 16384;
+  this->ScreenSize[0] = this->MaximumSize;
+  this->ScreenSize[1] = this->MaximumSize;
   return this->ScreenSize;
 }
 

@@ -23,6 +23,7 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+#include <vector> // For the context stack
 
 namespace deepshadow
 {
@@ -88,6 +89,14 @@ public:
   void MakeCurrent() override;
   void ReleaseCurrent() override;
   bool IsCurrent() override;
+  /**
+   * Makes this window's context current for a while, and gives back the one that was: VTK's
+   * mappers release their GL objects in the window that made them between the two, in the
+   * middle of another window's frame. Without the pop, the rest of that frame ran in this
+   * window's context, and the first of two windows showing one prop went blank.
+   */
+  void PushContext() override;
+  void PopContext() override;
   int SupportsOpenGL() override;
   vtkTypeBool IsDirect() override { return 1; }
   const char* ReportCapabilities() override;
@@ -112,7 +121,16 @@ public:
     int blend = 0, int right = 0) override;
   ///@}
 
+  /**
+   * Refuses (vtkErrorMacro, GetLastError(), the size kept) a side above GetMaximumSize():
+   * a framebuffer that large cannot be made, and the picture was black with no word.
+   */
   void SetSize(int width, int height) override;
+  /**
+   * The largest side a picture may have: the context's renderbuffer, viewport and texture
+   * limits once it exists (16384 on llvmpipe), 16384 before.
+   */
+  int GetMaximumSize();
   void SetSize(int a[2]) override { this->SetSize(a[0], a[1]); }
   int* GetScreenSize() VTK_SIZEHINT(2) override;
   void SetShowWindow(bool) override;
@@ -151,6 +169,8 @@ protected:
   std::unique_ptr<deepshadow::headless::HeadlessContext> Context;
   int ContextBackend = 0; // backend of Context, fixed at its creation
   int FailedBackend = 0;  // backend whose creation failed: not retried (nor said again) every frame
+  int MaximumSize = 16384;
+  std::vector<vtkDeepShadowRenderWindow*> ContextStack; // PushContext: the window current before
 
   /** A context exists and VTK initialized OpenGL in it: GL may be called. */
   bool CanDraw() const { return this->Context && this->Initialized; }

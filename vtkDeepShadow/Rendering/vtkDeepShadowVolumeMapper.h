@@ -148,7 +148,7 @@ public:
   ///@{
   /**
    * How the volume shadows itself (null, the default: no shadows, and no shadow code in the
-   * shader). See vtkDeepShadowRayTechnique, vtkDeepShadowShadowMapTechnique,
+   * shader). A technique replaced releases its GL objects in the window last drawn in. See vtkDeepShadowRayTechnique, vtkDeepShadowShadowMapTechnique,
    * vtkDeepShadowDeepShadowMapTechnique, vtkDeepShadowOpacityLevelsTechnique and
    * vtkDeepShadowStochasticShadowMapTechnique.
    */
@@ -346,6 +346,12 @@ private:
   void ReportError(const std::string& message);
   /** Starts a frame (Render, or the pass's PrepareShadows before it). */
   void BeginFrame();
+  /**
+   * Makes `window` the one the GPU resources live in. GL objects belong to the context that
+   * made them: drawn in another window, they are released in the old one (its context made
+   * current) and built again here, as VTK's own mapper does (vtkGenericOpenGLResourceFreeCallback).
+   */
+  void AdoptWindow(vtkOpenGLRenderWindow* window);
   /**
    * Brings every GPU resource and the technique's structures up to date and fills `frame`;
    * false when the volume is not drawn (said by ReportError, or an empty bound).

@@ -17,7 +17,9 @@
 #include "Volume/VolumeTexture.h"
 
 #include "vtkPolyData.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <array>
 #include <memory>
@@ -54,6 +56,9 @@ public:
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
 
   std::string LastSource;
+
+  // The window the GPU resources were made in (AdoptWindow), if it still exists.
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
 
   // vtkDeepShadowPass prepared this frame (PrepareShadows): Render() keeps the passes it ran.
   bool PreparedByPass = false;
