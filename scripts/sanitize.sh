@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The sanitizer stage: AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/ of
 # only what its tests need, then the unit tests (Core, Scenes, CSG), the bad-input tests (the
-# API's TestBadInput, the tool's Tool.HostileInput) and a bounded fuzz run (Tool.Fuzz) under
-# them. Any sanitizer report fails its test (UBSan does not recover; ASan stops at the first).
+# API's TestBadInput, the tool's Tool.HostileInput and Tool.HostileInputII) and a bounded fuzz
+# run (Tool.Fuzz) under them. Any sanitizer report fails its test (UBSan does not recover; ASan stops at the first).
 # Extra arguments go to ctest. Used by .ci/run after scripts/test.sh.
 #
 # What is switched off or suppressed, and why (README, "Hostile input"):

@@ -3,6 +3,7 @@
 #include "Budget.h"
 #include "Commands.h"
 #include "Json.h"
+#include "Outputs.h"
 #include "SceneSetup.h"
 
 #include "vtkDeepShadowMemoryBudget.h"
@@ -205,7 +206,9 @@ int RunBench(const Options& options)
       .Set("frames", options.Frames)
       .Set("backend", window->GetBackendAsString())
       .Set("rows", rows);
-    all.Write(options.Json);
+    Outputs outputs;
+    outputs.Write(options.Json, all.FileText());
+    outputs.Commit();
   }
   return 0;
 }

@@ -165,6 +165,20 @@ Image RenderReference(SceneSetup& setup, const Options& options, double& millise
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return image;
 }
+
+// Where the line saying what was written goes: standard error when the picture or the
+// statistics went to standard output.
+std::FILE* SummaryStream(const Options& options)
+{
+  for (const NamedFile& output : options.OutputFiles())
+  {
+    if (Outputs::IsStandardOutput(output.Path))
+    {
+      return stderr;
+    }
+  }
+  return stdout;
+}
 }
 
 int RunRender(const Options& options)
@@ -172,13 +186,13 @@ int RunRender(const Options& options)
   Outputs outputs;
   SceneSetup setup = SceneSetup::Build(options);
   GpuRun run = RenderGPU(setup, options);
-  WritePNG(setup.Window, outputs.Stage(options.Out));
+  outputs.Write(options.Out, PNGBytes(setup.Window));
   if (!options.Json.empty())
   {
-    run.Stats.Write(outputs.Stage(options.Json));
+    outputs.Write(options.Json, run.Stats.FileText());
   }
   outputs.Commit();
-  std::printf("%s: %dx%d, median %.1f ms over %d frames (first %.1f ms) -> %s\n",
+  std::fprintf(SummaryStream(options), "%s: %dx%d, median %.1f ms over %d frames (first %.1f ms) -> %s\n",
     setup.Name.c_str(), options.Width, options.Height, Median(run.FrameMs), options.Frames,
     run.FirstFrameMs, options.Out.c_str());
   return 0;
@@ -190,7 +204,7 @@ int RunReference(const Options& options)
   SceneSetup setup = SceneSetup::Build(options);
   double milliseconds = 0.0;
   const Image image = RenderReference(setup, options, milliseconds);
-  WritePNG(ToImageData(image), outputs.Stage(options.Out));
+  outputs.Write(options.Out, PNGBytes(ToImageData(image)));
   if (!options.Json.empty())
   {
     Json stats;
@@ -208,10 +222,10 @@ int RunReference(const Options& options)
       .Set("shadow_builds", 0)
       .Set("threads", options.Threads)
       .Set("sample_distance", setup.Mapper->GetSampleDistance());
-    stats.Write(outputs.Stage(options.Json));
+    outputs.Write(options.Json, stats.FileText());
   }
   outputs.Commit();
-  std::printf("%s: CPU reference (%s) %dx%d in %.0f ms -> %s\n", setup.Name.c_str(),
+  std::fprintf(SummaryStream(options), "%s: CPU reference (%s) %dx%d in %.0f ms -> %s\n", setup.Name.c_str(),
     options.GpuTwin ? "GPU twin" : "exact", options.Width, options.Height, milliseconds,
     options.Out.c_str());
   return 0;
@@ -235,21 +249,21 @@ int RunAll(const Options& options)
     SceneSetup setup = SceneSetup::Build(sceneOptions);
     GpuRun run = RenderGPU(setup, sceneOptions);
     const std::string stem = options.OutDir + "/" + name;
-    WritePNG(setup.Window, outputs.Stage(stem + ".png"));
+    outputs.Write(stem + ".png", PNGBytes(setup.Window));
     const Image gpu = CaptureWindow(setup.Window);
 
     double referenceMs = 0.0;
     const Image reference = RenderReference(setup, sceneOptions, referenceMs);
-    WritePNG(ToImageData(reference), outputs.Stage(stem + "-reference.png"));
-    WritePNG(ToImageData(AbsoluteDifference(gpu, reference, 10.0)),
-      outputs.Stage(stem + "-difference-x10.png"));
+    outputs.Write(stem + "-reference.png", PNGBytes(ToImageData(reference)));
+    outputs.Write(stem + "-difference-x10.png",
+      PNGBytes(ToImageData(AbsoluteDifference(gpu, reference, 10.0))));
     const ImageDifference error = Compare(gpu, reference, 2.0 / 255.0);
 
     run.Stats.Set("reference_ms", referenceMs)
       .Set("rmse_vs_reference", error.RMSE)
       .Set("max_abs_vs_reference", error.MaxAbs)
       .Set("fraction_above_2_of_255", error.FractionAbove);
-    run.Stats.Write(outputs.Stage(stem + ".json"));
+    outputs.Write(stem + ".json", run.Stats.FileText());
     summary.push_back(run.Stats);
     std::printf("%-8s %10.1f %10.1f %12.0f %10.5f %10.4f\n", name.c_str(), Median(run.FrameMs),
       run.FirstFrameMs, referenceMs, error.RMSE, error.MaxAbs);
@@ -257,7 +271,7 @@ int RunAll(const Options& options)
   }
   Json all;
   all.Set("scenes", summary);
-  all.Write(outputs.Stage(options.OutDir + "/summary.json"));
+  outputs.Write(options.OutDir + "/summary.json", all.FileText());
   outputs.Commit();
   std::printf("images, references, differences (x10) and statistics in %s\n",
     options.OutDir.c_str());

@@ -20,7 +20,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <sys/stat.h>
 
 namespace deepshadow
@@ -129,9 +129,9 @@ int RunGallery(const Options& options)
     row.ShadowedError = Compare(row.Shadowed.Picture, truth.Picture);
 
     const std::string stem = options.OutDir + "/" + scene.Name;
-    WritePNG(ToImageData(bench.Picture(nullptr)), outputs.Stage(stem + "-none.png"));
-    WritePNG(ToImageData(bench.Picture(technique, second)), outputs.Stage(stem + "-shadows.png"));
-    WritePNG(ToImageData(truth.Picture), outputs.Stage(stem + "-truth.png"));
+    outputs.Write(stem + "-none.png", PNGBytes(ToImageData(bench.Picture(nullptr))));
+    outputs.Write(stem + "-shadows.png", PNGBytes(ToImageData(bench.Picture(technique, second))));
+    outputs.Write(stem + "-truth.png", PNGBytes(ToImageData(truth.Picture)));
 
     Json stats;
     stats.Set("scene", scene.Name)
@@ -155,7 +155,7 @@ int RunGallery(const Options& options)
 
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::ofstream page(outputs.Stage(options.OutDir + "/index.html"));
+  std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
        << "<title>vtkDeepShadow: the scenes</title>\n<style>\n"
        << "body{font-family:sans-serif;margin:1.5em;background:#fafafa;color:#222}\n"
@@ -195,10 +195,10 @@ int RunGallery(const Options& options)
   page << "</table>\n<p>Per scene: <code>&lt;scene&gt;-none.png</code>, <code>-shadows.png</code>, "
        << "<code>-truth.png</code>; all numbers in <code>summary.json</code>. The report of "
        << "every technique and parameter is <code>scripts/report.sh</code>.</p>\n</body></html>\n";
-  page.close();
+  outputs.Write(options.OutDir + "/index.html", page.str());
   Json all;
   all.Set("scenes", summary).Set("seconds", seconds).Set("gl_renderer", renderer);
-  all.Write(outputs.Stage(options.OutDir + "/summary.json"));
+  outputs.Write(options.OutDir + "/summary.json", all.FileText());
   outputs.Commit();
   std::printf("%zu scenes in %.0f s: %s/index.html\n", rows.size(), seconds, options.OutDir.c_str());
   return 0;

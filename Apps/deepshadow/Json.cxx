@@ -163,11 +163,12 @@ std::string Json::Text(int indent) const
 void Json::Write(const std::string& path) const
 {
   std::ofstream file(path);
+  file << this->FileText();
+  file.close();
   if (!file)
   {
     throw UsageError("cannot write " + path);
   }
-  file << this->Text() << "\n";
 }
 
 double Median(std::vector<double> values)

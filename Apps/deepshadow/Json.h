@@ -29,7 +29,9 @@ public:
   Json& Set(const std::string& key, const std::vector<Json>& objects);
 
   std::string Text(int indent = 0) const;
-  /** Writes the object to `path`; throws UsageError if it cannot. */
+  /** The text of a .json file of the object (Text() and a newline). */
+  std::string FileText() const { return this->Text() + "\n"; }
+  /** Writes the object straight to `path`; throws UsageError if it cannot be written whole. */
   void Write(const std::string& path) const;
 
   static std::string Quote(const std::string& text);

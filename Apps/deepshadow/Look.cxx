@@ -10,6 +10,7 @@
 #include "vtkContourValues.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
@@ -88,6 +89,12 @@ std::array<double, 3> Vector3(const ::Json::Value& value, const std::string& wha
   return v;
 }
 
+// View angles a camera file may give: VTK clamps to [1e-8, 179] without a word, and pictures
+// were measured right down to 1e-5 degrees (a camera 3e8 away framing a 52-unit volume) but
+// not at 3e-6; 1e-4 keeps a factor of ten.
+constexpr double MinViewAngle = 1e-4;
+constexpr double MaxViewAngle = 179.0;
+
 void ReadCamera(const std::string& path, vtkCamera* camera)
 {
   const std::string where = "camera file '" + path + "'";
@@ -95,11 +102,17 @@ void ReadCamera(const std::string& path, vtkCamera* camera)
   {
     throw UsageError("cannot read " + where + ": no such file");
   }
-  if (vtksys::SystemTools::FileLength(path) > 1024 * 1024)
+  // At most the limit is read, whatever the file's size claims (/dev/urandom claims none).
+  constexpr size_t limit = 1024 * 1024;
+  std::ifstream in(path, std::ios::binary);
+  std::string text(limit + 1, '\0');
+  in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  if (text.size() > limit)
   {
     throw UsageError("cannot read " + where + ": larger than a camera needs (1 MiB)");
   }
-  std::ifstream file(path, std::ios::binary);
+  std::istringstream file(text);
   ::Json::CharReaderBuilder builder;
   builder["stackLimit"] = 16;
   ::Json::Value root;
@@ -107,7 +120,7 @@ void ReadCamera(const std::string& path, vtkCamera* camera)
   bool parsed = false;
   try
   {
-    parsed = file && ::Json::parseFromStream(builder, file, &root, &errors);
+    parsed = ::Json::parseFromStream(builder, file, &root, &errors);
   }
   catch (const std::exception& e)
   {
@@ -131,10 +144,19 @@ void ReadCamera(const std::string& path, vtkCamera* camera)
     throw UsageError(where + ": the position is the focal point, or the view-up is along the "
       "view direction");
   }
-  const double angle = c["view_angle"].isNumeric() ? c["view_angle"].asDouble() : 30.0;
-  if (!(angle > 0.0 && angle < 180.0))
+  if (c.isMember("view_angle") && !c["view_angle"].isNumeric())
   {
-    throw UsageError(where + ": \"view_angle\" must be in (0, 180) degrees");
+    throw UsageError(where + ": \"view_angle\" must be a number of degrees, not " +
+      (c["view_angle"].isString() ? "the string \"" + c["view_angle"].asString().substr(0, 20) + "\""
+                                  : std::string("a value of another type")));
+  }
+  const double angle = c.isMember("view_angle") ? c["view_angle"].asDouble() : 30.0;
+  if (!(angle >= MinViewAngle && angle <= MaxViewAngle))
+  {
+    std::ostringstream message;
+    message << where << ": \"view_angle\" must be in [" << MinViewAngle << ", " << MaxViewAngle
+            << "] degrees, not " << angle;
+    throw UsageError(message.str());
   }
   camera->SetPosition(position.data());
   camera->SetFocalPoint(focal.data());
@@ -289,6 +311,10 @@ void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProper
     if (options.Window > 0.0)
     {
       presets->SetWindowLevel(options.Window, options.Level);
+      if (!presets->GetLastError().empty())
+      {
+        throw UsageError("--window/--level: " + presets->GetLastError());
+      }
     }
     if (!presets->Apply(options.TransferFunction, property))
     {
@@ -354,6 +380,44 @@ void ApplyView(const Options& options, vtkRenderer* renderer, vtkVolume* volume)
   camera->Roll(options.Roll);
   camera->OrthogonalizeViewUp();
   camera->Zoom(options.Zoom);
+}
+
+void RequireInView(vtkRenderer* renderer, int width, int height)
+{
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  if (!(bounds[0] <= bounds[1]))
+  {
+    return;
+  }
+  // Clip coordinates of the box's corners: outside the view when all lie beyond one plane.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkMatrix4x4* toClip =
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0);
+  int outside[6] = { 0, 0, 0, 0, 0, 0 };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + (corner >> 2)], 1.0 };
+    double c[4];
+    toClip->MultiplyPoint(p, c);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      outside[2 * axis] += c[axis] < -c[3] ? 1 : 0;
+      outside[2 * axis + 1] += c[axis] > c[3] ? 1 : 0;
+    }
+  }
+  if (std::find(std::begin(outside), std::end(outside), 8) != std::end(outside))
+  {
+    const double* position = camera->GetPosition();
+    const double* focal = camera->GetFocalPoint();
+    std::ostringstream message;
+    message << "the camera sees nothing of the scene: from (" << position[0] << ", " << position[1]
+            << ", " << position[2] << ") towards (" << focal[0] << ", " << focal[1] << ", "
+            << focal[2] << ") it looks away from the volume, whose box is [" << bounds[0] << ", "
+            << bounds[1] << "] x [" << bounds[2] << ", " << bounds[3] << "] x [" << bounds[4]
+            << ", " << bounds[5] << "]";
+    throw UsageError(message.str());
+  }
 }
 
 Json CameraJson(vtkCamera* camera)

@@ -34,6 +34,13 @@ void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProper
 /** The camera options over the renderer's camera, which shows the whole volume already. */
 void ApplyView(const Options& options, vtkRenderer* renderer, vtkVolume* volume);
 
+/**
+ * Throws UsageError when the renderer's camera sees nothing of its visible props (their box
+ * lies wholly beyond one side of the view frustum at a width x height picture): a picture of
+ * nothing is not what a camera file or a turn was meant to give.
+ */
+void RequireInView(vtkRenderer* renderer, int width, int height);
+
 /** The camera as render --json writes it and --camera reads it. */
 Json CameraJson(vtkCamera* camera);
 

@@ -39,6 +39,30 @@ public:
 vtkStandardNewMacro(ToolOutputWindow);
 }
 
+std::string OneLine(const std::string& text)
+{
+  std::string line;
+  for (const char c : text)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\r' || c == '\t')
+    {
+      line += c == '\n' ? "\\n" : c == '\r' ? "\\r" : "\\t";
+    }
+    else if (u < 32 || u == 127)
+    {
+      char escape[5];
+      std::snprintf(escape, sizeof(escape), "\\x%02x", u);
+      line += escape;
+    }
+    else
+    {
+      line += c;
+    }
+  }
+  return line;
+}
+
 void RouteMessages(bool verbose)
 {
   vtkNew<ToolOutputWindow> window;
@@ -64,7 +88,7 @@ void PrintModuleWarnings()
   }
   for (const std::string& message : Said)
   {
-    std::fprintf(stderr, "deepshadow: warning: %s\n", message.c_str());
+    std::fprintf(stderr, "deepshadow: warning: %s\n", OneLine(message).c_str());
   }
 }
 

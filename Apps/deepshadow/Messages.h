@@ -15,6 +15,13 @@ namespace deepshadow
 namespace tool
 {
 
+/**
+ * `text` on one line: a line break or other control character (from a file name, a reader's
+ * message) written as an escape (\n, \r, \t, \xHH), so that every message the tool prints
+ * is one line.
+ */
+std::string OneLine(const std::string& text);
+
 /** Routes VTK's messages as above; call once, before any work. */
 void RouteMessages(bool verbose);
 

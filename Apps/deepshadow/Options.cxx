@@ -3,6 +3,8 @@
 #include "Commands.h"
 #include "Look.h"
 #include "vtkDeepShadowStandardScene.h"
+#include "vtkDeepShadowVolumePresets.h"
+#include "vtkDeepShadowVolumeReader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -210,6 +212,52 @@ bool ParseTechniqueOption(Options& o, const std::string& key, const std::functio
   }
   return true;
 }
+}
+
+std::vector<NamedFile> Options::InputFiles() const
+{
+  std::vector<NamedFile> files;
+  for (const auto& volume : { NamedFile{ "--volume", this->VolumeFile }, NamedFile{ "--mask", this->MaskFile } })
+  {
+    if (!volume.Path.empty())
+    {
+      for (const std::string& path : vtkDeepShadowVolumeReader::GetFilesOf(volume.Path))
+      {
+        files.push_back({ volume.Option, path });
+      }
+    }
+  }
+  for (const std::string& bound : this->BoundFiles)
+  {
+    files.push_back({ "--bound", bound });
+  }
+  for (const MeshSpec& mesh : this->Meshes)
+  {
+    files.push_back({ "--mesh", mesh.File });
+  }
+  if (!this->TransferFunction.empty() && !vtkDeepShadowVolumePresets::IsPresetName(this->TransferFunction))
+  {
+    files.push_back({ "--tf", this->TransferFunction });
+  }
+  if (!this->CameraFile.empty())
+  {
+    files.push_back({ "--camera", this->CameraFile });
+  }
+  return files;
+}
+
+std::vector<NamedFile> Options::OutputFiles() const
+{
+  std::vector<NamedFile> files;
+  if ((this->Command == "render" || this->Command == "reference") && !this->Out.empty())
+  {
+    files.push_back({ "--out", this->Out });
+  }
+  if (!this->Json.empty())
+  {
+    files.push_back({ "--json", this->Json });
+  }
+  return files;
 }
 
 const std::vector<double>* Options::Setting(const std::string& key) const
@@ -436,6 +484,14 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--csg-mesh")
     {
       o.CsgMesh = true;
+    }
+    else if (key == "--csg-max-work")
+    {
+      o.CsgMaxWork = ParseNumber(key, next());
+      if (o.CsgMaxWork < 0.0)
+      {
+        throw UsageError("--csg-max-work must be 0 (no limit) or positive");
+      }
     }
     else if (key == "--scale")
     {

@@ -47,6 +47,13 @@ struct MeshSpec
   double Scale = 1.0;
 };
 
+/** A file named on the command line: the option that named it, and its path. */
+struct NamedFile
+{
+  std::string Option; // "--out", "--volume", ...
+  std::string Path;
+};
+
 struct Options
 {
   std::string Command; // render | view | reference | all | gallery | bench | shadow-bench | report | scenes | presets | help
@@ -66,6 +73,7 @@ struct Options
   int TranslucentLayers = 4;           // --translucent-layers: peeled layers merged into the volume
   int VolumeSegments = 8;              // --volume-segments: a second volume's pieces merged into the first
   bool CsgMesh = false;                // bound by the CGAL mesh of the expression instead
+  double CsgMaxWork = 5e5;             // --csg-max-work: vtkDeepShadowCSGFilter::SetMaximumTriangleWork
   int Width = 512;
   int Height = 512;
   double SampleDistance = 0.0; // 0: the mapper's default
@@ -119,6 +127,14 @@ struct Options
   int ErrorHeight = 256;
   // report
   bool Quick = false; // the short sweep at smaller sizes
+
+  /**
+   * The files the command reads: --volume and --mask with the files they are read from (a
+   * header's detached data, a DICOM folder's files), --bound, --mesh, a --tf file, --camera.
+   */
+  std::vector<NamedFile> InputFiles() const;
+  /** The files the command writes: render's and reference's --out, and --json. */
+  std::vector<NamedFile> OutputFiles() const;
 
   /** The value given for a technique parameter (the last one), or null. */
   const std::vector<double>* Setting(const std::string& key) const;

@@ -183,6 +183,9 @@ SCENE (default: --scene box):
                           self-intersecting, bounding a volume): a bad one exits with code 2
   --csg-mesh              bound the volume by the CGAL result mesh of the expression
                           instead of evaluating the expression per ray (same picture)
+  --csg-max-work N        refuse an expression whose CGAL operations would take more than N
+                          triangles of work (each operation's operands, summed; 7 to 130 s
+                          a million here); default 500000, 0: no limit
   --mesh FILE             a mesh (.vtp, .vtk, .stl, .ply, .obj; world coordinates) that casts
                           shadows into the volume and receives the scene's; repeatable. The
                           options below apply to the --mesh before them:

@@ -43,6 +43,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 namespace deepshadow
 {
@@ -102,11 +103,20 @@ void FiniteRange(vtkImageData* data, double range[2])
   range[1] = hi;
 }
 
-// A neutral look for files that come with none: grey, transparent low values, shaded.
-vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data)
+// A neutral look for files that come with none: grey, transparent low values, shaded. It
+// shows nothing of a constant volume (all of it at the ramp's transparent start): said, when
+// no --tf is given to replace it.
+vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data, bool replaced)
 {
   double range[2];
   FiniteRange(data, range);
+  if (range[0] == range[1] && !replaced)
+  {
+    std::ostringstream message;
+    message << "the volume is constant (every finite sample is " << range[0] << "): the default "
+            << "transfer function, a ramp over the data's range, shows nothing of it; give --tf";
+    throw UsageError(message.str());
+  }
   const double width = range[1] > range[0] ? range[1] - range[0] : 1.0;
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
@@ -245,6 +255,11 @@ void AddMeshes(SceneSetup& setup, const Options& options, const std::vector<Ligh
     place->SetInputData(mesh.PolyData);
     place->Update();
     mesh.PolyData = place->GetOutput();
+    const std::string problem = vtkDeepShadowPolyDataMapper::CheckInput(mesh.PolyData);
+    if (!problem.empty())
+    {
+      throw UsageError("--mesh " + spec.File + " placed by --mesh-transform: " + problem);
+    }
     meshes.push_back(mesh);
   }
   if (meshes.empty())
@@ -327,7 +342,7 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Data = reader->GetOutput();
     setup.Name = options.VolumeFile;
-    property = DefaultProperty(setup.Data);
+    property = DefaultProperty(setup.Data, !options.TransferFunction.empty());
   }
   else
   {
@@ -390,6 +405,7 @@ SceneSetup SceneSetup::Build(const Options& options)
       csg->AddInputData(bound);
     }
     csg->SetExpression(setup.BoundExpression);
+    csg->SetMaximumTriangleWork(options.CsgMaxWork);
     csg->Update();
     if (!csg->GetLastError().empty())
     {
@@ -490,6 +506,10 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Renderer->AddLight(light);
   }
+  if (options.Command == "render" || options.Command == "reference")
+  {
+    RequireInView(setup.Renderer, options.Width, options.Height);
+  }
   // Before the first frame allocates them: the frame, the shadow structures, the GPU copy.
   RequireWithinBudget(options, setup.Data, setup.Pass != nullptr, setup.SecondVolume ? 2 : 1);
   return setup;
@@ -519,6 +539,13 @@ void RequireDrawn(const SceneSetup& setup)
   if (!setup.Mapper->GetLastError().empty())
   {
     throw UsageError("cannot render " + setup.Name + ": " + setup.Mapper->GetLastError());
+  }
+  for (const auto& mesh : setup.Meshes)
+  {
+    if (!mesh->GetLastError().empty())
+    {
+      throw UsageError("cannot render " + setup.Name + "'s mesh: " + mesh->GetLastError());
+    }
   }
 }
 
@@ -556,9 +583,19 @@ void WritePNG(vtkImageData* image, const std::string& path)
   }
 }
 
-void WritePNG(vtkDeepShadowRenderWindow* window, const std::string& path)
+std::string PNGBytes(vtkImageData* image)
 {
-  WritePNG(ToImageData(CaptureWindow(window)), path);
+  const std::string bytes = deepshadow::EncodePNG(image);
+  if (bytes.empty())
+  {
+    throw UsageError("the picture could not be encoded as PNG");
+  }
+  return bytes;
+}
+
+std::string PNGBytes(vtkDeepShadowRenderWindow* window)
+{
+  return PNGBytes(ToImageData(CaptureWindow(window)));
 }
 
 }

@@ -79,8 +79,10 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 /** The GL renderer's name (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"). */
 std::string RendererString(vtkDeepShadowRenderWindow* window);
 
-/** Writes the window's pixels as PNG; throws UsageError if the file cannot be written. */
-void WritePNG(vtkDeepShadowRenderWindow* window, const std::string& path);
+/** The window's pixels, or an image, as a PNG file's bytes (for Outputs::Write). */
+std::string PNGBytes(vtkDeepShadowRenderWindow* window);
+std::string PNGBytes(vtkImageData* image);
+/** Writes a PNG straight to `path` (the report's folders); throws UsageError if it cannot. */
 void WritePNG(vtkImageData* image, const std::string& path);
 
 }

@@ -12,6 +12,7 @@
 #include "Commands.h"
 #include "Json.h"
 #include "Measure.h"
+#include "Outputs.h"
 
 #include "Core/Shadows.h"
 
@@ -123,7 +124,9 @@ int RunShadowBench(const Options& options)
       .Set("error_height", options.ErrorHeight)
       .Set("frames", options.Frames)
       .Set("rows", rows);
-    all.Write(options.Json);
+    Outputs outputs;
+    outputs.Write(options.Json, all.FileText());
+    outputs.Commit();
   }
   return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "vtkVersionMacros.h"
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -28,15 +29,13 @@ int Run(const deepshadow::tool::Options& options)
               << VTK_VERSION << ")\n";
     return 0;
   }
-  // Output files that cannot be written are said before any work.
-  if (options.Command == "render" || options.Command == "reference")
+  // Output files that cannot be written, or would replace an input or each other, are said
+  // before any work.
+  for (const NamedFile& output : options.OutputFiles())
   {
-    Outputs::RequireWritable(options.Out);
+    Outputs::RequireWritable(output.Path);
   }
-  if (!options.Json.empty())
-  {
-    Outputs::RequireWritable(options.Json);
-  }
+  Outputs::RequireDistinct(options.OutputFiles(), options.InputFiles());
   if (options.Command == "render")
   {
     return RunRender(options);
@@ -80,6 +79,10 @@ int Run(const deepshadow::tool::Options& options)
 int main(int argc, char* argv[])
 {
   using namespace deepshadow::tool;
+  // A closed pipe on standard output, or a file-size limit (ulimit -f), is a write error
+  // with its one line, not a signal.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   try
   {
     const Options options = Options::Parse(argc, argv);
@@ -93,7 +96,7 @@ int main(int argc, char* argv[])
   }
   catch (const UsageError& error)
   {
-    std::fprintf(stderr, "deepshadow: %s\n", error.what());
+    std::fprintf(stderr, "deepshadow: %s\n", OneLine(error.what()).c_str());
     return 2;
   }
   catch (const std::bad_alloc&)
@@ -106,7 +109,7 @@ int main(int argc, char* argv[])
   }
   catch (const std::exception& error)
   {
-    std::fprintf(stderr, "deepshadow: %s\n", error.what());
+    std::fprintf(stderr, "deepshadow: %s\n", OneLine(error.what()).c_str());
     return 1;
   }
 }

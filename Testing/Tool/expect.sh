@@ -3,6 +3,9 @@
 #     Runs the command (stdout in out.txt, stderr in err.txt) and checks its exit code. For
 #     code 2 also: exactly one line "deepshadow: ..." on stderr, containing NEEDLE when given,
 #     and no regular file left at the command's --out or --json (removed before it runs).
+#   expect_kept CODE DESCRIPTION [NEEDLE] -- command...
+#     The same for outputs that exist and must stay as they are (an input named as --out):
+#     nothing is removed first, and nothing else is checked of them.
 #   fail MESSAGE          counts a failure and prints it
 failures=0
 
@@ -26,9 +29,11 @@ expect() {
     fi
     previous=$argument
   done
-  for file in "${outputs[@]}"; do
-    [ -f "$file" ] && rm -f "$file"
-  done
+  if [ -z "${keep_outputs:-}" ]; then
+    for file in "${outputs[@]}"; do
+      [ -f "$file" ] && rm -f "$file"
+    done
+  fi
   "$@" > out.txt 2> err.txt
   local got=$?
   if [ "$got" -ne "$code" ]; then
@@ -48,13 +53,17 @@ expect() {
       return
     fi
     for file in "${outputs[@]}"; do
-      if [ -f "$file" ]; then
+      if [ -z "${keep_outputs:-}" ] && [ -f "$file" ]; then
         fail "$what: exit 2 but $file was left behind"
         return
       fi
     done
   fi
   echo "ok: $what (exit $code)$( [ "$code" -eq 2 ] && echo ": $(cat err.txt)")"
+}
+
+expect_kept() {
+  keep_outputs=1 expect "$@"
 }
 
 # Image checks with deepshadow-testkit (the sourcing script sets $kit).
