@@ -602,6 +602,11 @@ std::vector<std::string> DataFiles(Format format, const std::string& fileName)
 
 std::string CheckDataLayout(Format format, const std::string& fileName)
 {
+  return ReadLayout(format, fileName).Problem;
+}
+
+std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed)
+{
   const DataLayout layout = ReadLayout(format, fileName);
   if (!layout.Problem.empty())
   {
@@ -625,12 +630,6 @@ std::string CheckDataLayout(Format format, const std::string& fileName)
       return "its data file '" + path + "' is not a regular file";
     }
   }
-  return "";
-}
-
-std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed)
-{
-  const DataLayout layout = ReadLayout(format, fileName);
   if (!layout.Raw || layout.Skips)
   {
     return "";

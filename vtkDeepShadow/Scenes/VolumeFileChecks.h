@@ -59,13 +59,16 @@ constexpr std::uint64_t MaxDataFiles = 65536;
 std::vector<std::string> DataFiles(Format format, const std::string& fileName);
 
 /**
- * MetaImage and NRRD, with the header (CheckHeader runs it): a data file that is missing or
- * not a regular file, a list or pattern that does not name one file a slice, or a pattern
- * VTK would pass to sprintf unsafely (anything but one integer conversion).
+ * MetaImage and NRRD, with the header (CheckHeader runs it): a file pattern VTK would pass
+ * to sprintf unsafely (anything but one integer conversion), or a list of too many files.
  */
 std::string CheckDataLayout(Format format, const std::string& fileName);
 
-/** MetaImage and NRRD: raw data (each file of a list its share) shorter than `needed` bytes. */
+/**
+ * MetaImage and NRRD, before the data are read: a data file that is missing or not a regular
+ * file, a list or pattern that does not name one file a slice, or raw data (each file of a
+ * list its share) shorter than `needed` bytes.
+ */
 std::string CheckDataFile(Format format, const std::string& fileName, std::uint64_t needed);
 
 }
