@@ -8,7 +8,12 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 packages=(cmake ninja-build g++ ccache pkg-config
   libvtk9-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libcgal-dev libgtest-dev
-  python3-nibabel # real MR scans (NIfTI) and DICOM slices for the reader tests
+  libgdcm-dev     # DICOM through GDCM (compressed transfer syntaxes, series, multi-frame)
+  python3-nibabel # real MR scans (NIfTI) for the reader tests
+  python3-pydicom # a real CT series (its test files), and the DICOM series the tests write
+  dcm2niix        # the independent DICOM-to-NIfTI converter the DICOM tests compare against
+  libgdcm-tools   # gdcmconv: the tests re-encode a real series in compressed transfer syntaxes
+  mricron-data    # the Colin27 brain MRI (NIfTI): the tests' and README's real anatomy
   chromium        # headless screenshots of the main job's page (out/index.html)
   xvfb)           # a virtual display for the interactive viewer's test
 missing=()

@@ -1,5 +1,5 @@
 #include "VolumeFileChecks.h"
-#include "DicomSeriesChecks.h"
+#include "DicomSeries.h"
 #include "NiftiFileChecks.h"
 #include "XMLFileChecks.h"
 
@@ -309,7 +309,7 @@ std::string CheckNrrdHeader(const std::string& fileName)
 
 Format FormatOf(const std::string& fileName)
 {
-  if (SystemTools::FileIsDirectory(fileName))
+  if (SystemTools::FileIsDirectory(fileName) || dicom::IsDicomFile(fileName))
   {
     return Format::Dicom;
   }
@@ -346,8 +346,7 @@ std::string CheckHeader(Format format, const std::string& fileName)
   }
   return format == Format::Nifti ? CheckNiftiHeader(fileName)
     : format == Format::XML     ? xmlfile::CheckStructure(fileName)
-    : format == Format::Dicom   ? CheckDicomDirectory(fileName)
-                                : std::string();
+                                : std::string(); // DICOM: checked as it is read (DicomSeries.h)
 }
 
 std::uint64_t ScalarBytes(vtkInformation* info)

@@ -26,17 +26,20 @@ enum class Format
   Meta,
   Nrrd,
   Nifti, // .nii, .nii.gz
-  Dicom  // a directory of one DICOM series
+  Dicom  // a directory of DICOM series, or one DICOM file (DicomSeries.h)
 };
 
-/** The format chosen by the file name's extension (case-insensitive); a directory: DICOM. */
+/**
+ * The format chosen by the file name's extension (case-insensitive); a directory, or a file
+ * with DICOM's preamble: DICOM.
+ */
 Format FormatOf(const std::string& fileName);
 
 /**
  * The header fields VTK's MetaImage and NRRD readers misread without a word: counts that do
  * not match the number of dimensions, numbers that are not numbers, unknown element types,
  * and NRRD's ASCII encoding (VTK 9.1 reads it wrong); NIfTI's header (NiftiFileChecks.h);
- * VTK XML's structure (XMLFileChecks.h); a DICOM folder (DicomSeriesChecks.h).
+ * VTK XML's structure (XMLFileChecks.h). DICOM is checked as it is read (DicomSeries.h).
  */
 std::string CheckHeader(Format format, const std::string& fileName);
 

@@ -1,8 +1,11 @@
 #include "vtkDeepShadowVolumePresets.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_jsoncpp.h"
 
@@ -11,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 vtkStandardNewMacro(vtkDeepShadowVolumePresets);
@@ -231,6 +235,148 @@ std::vector<double> NodeArray(const Json::Value& value, const char* key, std::st
   }
   return nodes;
 }
+
+// The finite values of an image's first component as a histogram of `bins` between their
+// smallest and largest, with those two.
+struct Histogram
+{
+  std::vector<double> Counts;
+  double Low = 0.0, High = 0.0, Total = 0.0;
+
+  explicit Histogram(vtkImageData* image, int bins = 1024)
+    : Counts(static_cast<size_t>(bins), 0.0)
+  {
+    vtkDataArray* values = image ? image->GetPointData()->GetScalars() : nullptr;
+    const vtkIdType n = values ? values->GetNumberOfTuples() : 0;
+    this->Low = std::numeric_limits<double>::infinity();
+    this->High = -this->Low;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double v = values->GetComponent(i, 0);
+      if (std::isfinite(v))
+      {
+        this->Low = std::min(this->Low, v);
+        this->High = std::max(this->High, v);
+      }
+    }
+    if (!(this->Low < this->High))
+    {
+      return;
+    }
+    const double scale = (bins - 1) / (this->High - this->Low);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double v = values->GetComponent(i, 0);
+      if (std::isfinite(v))
+      {
+        this->Counts[static_cast<size_t>((v - this->Low) * scale)] += 1.0;
+        this->Total += 1.0;
+      }
+    }
+  }
+  bool Empty() const { return this->Total == 0.0; }
+  double Value(size_t bin) const
+  {
+    return this->Low + (this->High - this->Low) * static_cast<double>(bin) / (this->Counts.size() - 1.0);
+  }
+  double Percentile(double fraction) const
+  {
+    double seen = 0.0;
+    for (size_t b = 0; b < this->Counts.size(); ++b)
+    {
+      seen += this->Counts[b];
+      if (seen >= fraction * this->Total)
+      {
+        return this->Value(b);
+      }
+    }
+    return this->High;
+  }
+  // Otsu's threshold: the split with the largest variance between the two classes.
+  double Otsu() const
+  {
+    double sum = 0.0;
+    for (size_t b = 0; b < this->Counts.size(); ++b)
+    {
+      sum += this->Value(b) * this->Counts[b];
+    }
+    double below = 0.0, belowSum = 0.0, best = -1.0, threshold = this->Low;
+    for (size_t b = 0; b + 1 < this->Counts.size(); ++b)
+    {
+      below += this->Counts[b];
+      belowSum += this->Value(b) * this->Counts[b];
+      const double above = this->Total - below;
+      if (below == 0.0 || above == 0.0)
+      {
+        continue;
+      }
+      const double difference = belowSum / below - (sum - belowSum) / above;
+      const double variance = below * above * difference * difference;
+      if (variance > best)
+      {
+        best = variance;
+        threshold = this->Value(b + 1);
+      }
+    }
+    return threshold;
+  }
+};
+
+// Hounsfield units: air (about -1000) in the data, and values above it.
+bool LooksLikeHounsfield(const Histogram& h)
+{
+  return !h.Empty() && h.Percentile(0.01) <= -500.0 && h.High > 0.0;
+}
+}
+
+std::string vtkDeepShadowVolumePresets::ApplyDefault(
+  const std::string& modality, vtkImageData* image, vtkVolumeProperty* property)
+{
+  this->LastError.clear();
+  const Histogram histogram(image);
+  if (histogram.Empty() || !property)
+  {
+    this->Fail(histogram.Empty() ? "the image has no finite values to choose a look for"
+                                 : "no vtkVolumeProperty to load the default look into");
+    return std::string();
+  }
+  const bool ct = modality == "CT" || (modality.empty() && LooksLikeHounsfield(histogram));
+  if (ct)
+  {
+    this->ClearWindowLevel();
+    return this->ApplyPreset("CT-Bone", property) ? "CT-Bone" : std::string();
+  }
+  // MR-Default's interval (20 to 220) from the background/tissue threshold to the brightest
+  // tissue; the padding ends beyond stay as the preset scales them.
+  const double low = histogram.Otsu(), high = std::max(histogram.Percentile(0.995), low + 1e-6 * std::abs(low) + 1e-12);
+  this->SetWindowLevel(high - low, 0.5 * (low + high));
+  if (!this->LastError.empty() || !this->ApplyPreset("MR-Default", property))
+  {
+    return std::string();
+  }
+  this->ClearWindowLevel();
+  std::ostringstream chosen;
+  chosen << "MR-Default, window " << (high - low) << " level " << 0.5 * (low + high);
+  return chosen.str();
+}
+
+std::string vtkDeepShadowVolumePresets::DataWarning(const std::string& preset, vtkImageData* image)
+{
+  if (vtksys::SystemTools::LowerCase(preset).rfind("ct-", 0) != 0 || !IsPresetName(preset))
+  {
+    return std::string();
+  }
+  const Histogram histogram(image);
+  if (histogram.Empty() || LooksLikeHounsfield(histogram))
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << "the CT preset " << preset << " is in Hounsfield units (air near -1000), and the data's "
+       << "values span " << histogram.Low << " to " << histogram.High << " (1st percentile "
+       << histogram.Percentile(0.01) << "): it may show nothing or a solid box; MR-Default with "
+       << "--window/--level, or no --tf (a look chosen from the data), may suit it";
+  return text.str();
 }
 
 std::vector<std::string> vtkDeepShadowVolumePresets::GetPresetNames()

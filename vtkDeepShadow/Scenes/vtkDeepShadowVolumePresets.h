@@ -30,6 +30,7 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkImageData;
 class vtkVolumeProperty;
 
 class VTKDEEPSHADOWSCENES_EXPORT vtkDeepShadowVolumePresets : public vtkObject
@@ -51,6 +52,22 @@ public:
   bool ApplyFile(const std::string& path, vtkVolumeProperty* property);
   /** A preset name, or else a file path: what `--tf` takes. */
   bool Apply(const std::string& nameOrPath, vtkVolumeProperty* property);
+
+  /**
+   * The look a medical volume gets when none is given, by its modality: CT-Bone for CT (the
+   * modality "CT", or values in Hounsfield units: air near -1000); else MR-Default, its
+   * interval mapped from Otsu's threshold between background and tissue to the data's
+   * 99.5th percentile (MR intensities have no fixed scale). Returns what was chosen, e.g.
+   * "MR-Default, window 146 level 92"; "" with an error for an image with no finite values.
+   */
+  std::string ApplyDefault(const std::string& modality, vtkImageData* image, vtkVolumeProperty* property);
+
+  /**
+   * A warning when a preset made for another scale meets `image`: a CT preset on values that
+   * are not Hounsfield units (no air near -1000 HU) shows nothing of it or a solid box; ""
+   * when it fits (or for files, whose scale is their own).
+   */
+  static std::string DataWarning(const std::string& preset, vtkImageData* image);
 
   ///@{
   /** The preset of a file with several to use (by "Name"); empty: the first. */

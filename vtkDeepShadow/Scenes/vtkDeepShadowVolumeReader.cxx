@@ -1,6 +1,6 @@
 #include "vtkDeepShadowVolumeReader.h"
 
-#include "DicomSeriesChecks.h"
+#include "DicomSeries.h"
 #include "NiftiFileChecks.h"
 #include "ReaderMessages.h"
 #include "VolumeFileChecks.h"
@@ -8,7 +8,6 @@
 #include "vtkDeepShadowMemoryBudget.h"
 
 #include "vtkCommand.h"
-#include "vtkDICOMImageReader.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
@@ -27,6 +26,8 @@
 
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <new>
 #include <sstream>
@@ -93,14 +94,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(Format format, const char* fileName, bo
       reader->SetFileName(fileName);
       return reader;
     }
-    case Format::Dicom:
-    {
-      // The series was checked file by file (DicomSeriesChecks.h) before this reads it.
-      auto reader = vtkSmartPointer<vtkDICOMImageReader>::New();
-      reader->SetDirectoryName(fileName);
-      accepted = true;
-      return reader;
-    }
     case Format::Nifti:
     {
       auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
@@ -135,53 +128,49 @@ bool NiftiPlacement(vtkNIFTIImageReader* reader, double origin[3], double direct
   return true;
 }
 
-// A DICOM series in patient coordinates (LPS, DICOM's own): VTK's reader stacks the slices
-// along the normal of the image plane in ascending position and turns each image upside
-// down (its first row is DICOM's last), and places nothing. World of (i, j, k) is then
-// IPP + i dx row + (rows - 1 - j) dy column + k dz normal.
-bool DicomPlacement(vtkDICOMImageReader* reader, int rows, double dy, double origin[3],
-  double direction[9])
+// Where the delegate's image lies in patient coordinates, for NIfTI, whose reader leaves it
+// at the origin unrotated; false for the others.
+bool Placement(vtkAlgorithm* reader, double origin[3], double direction[9])
 {
-  const float* iop = reader->GetImageOrientationPatient();
-  const float* ipp = reader->GetImagePositionPatient();
-  if (!iop || !ipp)
-  {
-    return false;
-  }
-  double row[3] = { iop[0], iop[1], iop[2] }, column[3] = { iop[3], iop[4], iop[5] }, normal[3];
-  vtkMath::Cross(row, column, normal);
-  if (vtkMath::Normalize(row) == 0.0 || vtkMath::Normalize(column) == 0.0 ||
-    vtkMath::Normalize(normal) == 0.0)
-  {
-    return false;
-  }
-  for (int r = 0; r < 3; ++r)
-  {
-    origin[r] = ipp[r] + (rows - 1) * dy * column[r];
-    direction[3 * r + 0] = row[r];
-    direction[3 * r + 1] = -column[r];
-    direction[3 * r + 2] = normal[r];
-  }
-  return true;
+  auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader);
+  return nifti && NiftiPlacement(nifti, origin, direction);
 }
 
-// Where the delegate's image lies in patient coordinates, for the formats whose readers
-// leave it at the origin unrotated (NIfTI, DICOM); false for the others.
-bool Placement(vtkAlgorithm* reader, vtkInformation* info, double origin[3], double direction[9])
+// Whether a NIfTI file's values are stored scaled (scl_slope not 0, and not the identity):
+// they are read as float, value * scl_slope + scl_inter, as dcm2niix and nibabel read them.
+bool NiftiRescaled(vtkNIFTIImageReader* reader)
 {
-  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
+  const double slope = reader->GetRescaleSlope(), intercept = reader->GetRescaleIntercept();
+  return std::isfinite(slope) && std::isfinite(intercept) && slope != 0.0 && (slope != 1.0 || intercept != 0.0);
+}
+
+// The NIfTI volume `index` (its components, from a read of every volume as components when
+// index > 0), rescaled by scl_slope and scl_inter where they are set.
+vtkSmartPointer<vtkDataArray> NiftiValues(vtkNIFTIImageReader* reader, vtkDataArray* all, int index)
+{
+  const int volumes = std::max(reader->GetTimeDimension(), 1);
+  const int components = index > 0 ? all->GetNumberOfComponents() / volumes : all->GetNumberOfComponents();
+  const bool rescaled = NiftiRescaled(reader);
+  if (index == 0 && !rescaled)
   {
-    return NiftiPlacement(nifti, origin, direction);
+    return all;
   }
-  auto* dicom = vtkDICOMImageReader::SafeDownCast(reader);
-  if (!dicom || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()) ||
-    !info->Has(vtkDataObject::SPACING()))
+  vtkSmartPointer<vtkDataArray> values;
+  values.TakeReference(rescaled ? vtkDataArray::CreateDataArray(VTK_FLOAT) : all->NewInstance());
+  values->SetName(all->GetName());
+  values->SetNumberOfComponents(components);
+  values->SetNumberOfTuples(all->GetNumberOfTuples());
+  const double slope = rescaled ? reader->GetRescaleSlope() : 1.0;
+  const double intercept = rescaled ? reader->GetRescaleIntercept() : 0.0;
+  const int first = index > 0 ? index * components : 0;
+  for (vtkIdType t = 0; t < all->GetNumberOfTuples(); ++t)
   {
-    return false;
+    for (int c = 0; c < components; ++c)
+    {
+      values->SetComponent(t, c, all->GetComponent(t, first + c) * slope + intercept);
+    }
   }
-  const int* extent = info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-  return DicomPlacement(dicom, extent[3] - extent[2] + 1, info->Get(vtkDataObject::SPACING())[1],
-    origin, direction);
+  return values;
 }
 
 // Runs a request of the delegate with its messages collected and std::cerr captured;
@@ -249,10 +238,44 @@ vtkDeepShadowVolumeReader::~vtkDeepShadowVolumeReader()
   this->SetFileName(nullptr);
 }
 
+class vtkDeepShadowVolumeReader::DicomState
+{
+public:
+  deepshadow::dicom::Geometry Geometry;
+};
+
+void vtkDeepShadowVolumeReader::SetSeries(const std::string& series)
+{
+  if (series != this->Series)
+  {
+    this->Series = series;
+    this->Modified();
+  }
+}
+
+std::vector<std::string> vtkDeepShadowVolumeReader::GetSeriesDescriptions(
+  const std::string& directory, std::string& problem)
+{
+  problem.clear();
+  std::vector<std::string> lines;
+  const std::vector<std::string> files = vtksys::SystemTools::FileIsDirectory(directory)
+    ? deepshadow::dicom::RegularFiles(directory, &problem)
+    : std::vector<std::string>{ directory };
+  if (!problem.empty())
+  {
+    return lines;
+  }
+  for (const auto& series : deepshadow::dicom::ListSeries(files, problem))
+  {
+    lines.push_back(deepshadow::dicom::Describe(series));
+  }
+  return lines;
+}
+
 //------------------------------------------------------------------------------
 std::vector<std::string> vtkDeepShadowVolumeReader::GetSupportedExtensions()
 {
-  return { ".vti", ".mhd", ".mha", ".nrrd", ".nhdr", ".nii", ".nii.gz" };
+  return { ".vti", ".mhd", ".mha", ".nrrd", ".nhdr", ".nii", ".nii.gz", ".dcm" };
 }
 
 std::vector<std::string> vtkDeepShadowVolumeReader::GetFilesOf(const std::string& fileName)
@@ -260,7 +283,8 @@ std::vector<std::string> vtkDeepShadowVolumeReader::GetFilesOf(const std::string
   const Format format = FormatOf(fileName);
   if (format == Format::Dicom)
   {
-    return deepshadow::volumefile::DicomDirectoryFiles(fileName);
+    return vtksys::SystemTools::FileIsDirectory(fileName) ? deepshadow::dicom::RegularFiles(fileName)
+                                                          : std::vector<std::string>{ fileName };
   }
   std::vector<std::string> files = { fileName };
   const std::vector<std::string> data = deepshadow::volumefile::DataFiles(format, fileName);
@@ -273,6 +297,11 @@ bool vtkDeepShadowVolumeReader::CanReadFile(const char* fileName)
   if (!fileName || !vtksys::SystemTools::FileExists(fileName, true))
   {
     return false;
+  }
+  if (FormatOf(fileName) == Format::Dicom)
+  {
+    std::string problem;
+    return !GetSeriesDescriptions(fileName, problem).empty();
   }
   bool accepted = false;
   MakeReader(FormatOf(fileName), fileName, accepted);
@@ -337,6 +366,10 @@ bool vtkDeepShadowVolumeReader::PrepareReader()
     this->Fail(problem.str());
     return false;
   }
+  if (format == Format::Dicom)
+  {
+    return true; // read with GDCM by DicomInformation and DicomData, no VTK reader
+  }
   // The header is checked before VTK's reader parses any of it (its CanReadFile included).
   const std::string problem = deepshadow::volumefile::CheckHeader(format, name);
   if (!problem.empty())
@@ -361,9 +394,20 @@ bool vtkDeepShadowVolumeReader::PrepareReader()
 int vtkDeepShadowVolumeReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  this->Modality.clear();
+  this->Dicom.reset();
   if (!this->PrepareReader())
   {
     return 0;
+  }
+  if (!this->Reader)
+  {
+    return this->DicomInformation(outputVector->GetInformationObject(0)) ? 1 : 0;
+  }
+  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(this->Reader))
+  {
+    // Another volume of a 4D file: all of them as components, the one asked for kept.
+    nifti->SetTimeAsVector(this->VolumeIndex > 0);
   }
   std::string problem = RunDelegate(this->Reader, static_cast<ErrorCollector*>(this->Errors.Get()),
     true, "the file's header could not be read");
@@ -396,7 +440,7 @@ int vtkDeepShadowVolumeReader::RequestInformation(
     out->CopyEntry(in, vtkDataObject::DIRECTION());
   }
   double origin[3], direction[9];
-  if (Placement(this->Reader, in, origin, direction))
+  if (Placement(this->Reader, origin, direction))
   {
     out->Set(vtkDataObject::ORIGIN(), origin, 3);
     out->Set(vtkDataObject::DIRECTION(), direction, 9);
@@ -407,12 +451,113 @@ int vtkDeepShadowVolumeReader::RequestInformation(
     const int type = scalars->Has(vtkDataObject::FIELD_ARRAY_TYPE())
       ? scalars->Get(vtkDataObject::FIELD_ARRAY_TYPE())
       : VTK_DOUBLE;
-    const int components = scalars->Has(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
+    int components = scalars->Has(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
       ? scalars->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
       : 1;
-    vtkDataObject::SetPointDataActiveScalarInfo(out, type, components);
+    int drawnType = type;
+    if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(this->Reader))
+    {
+      const int volumes = std::max(nifti->GetTimeDimension(), 1);
+      if (this->VolumeIndex >= volumes)
+      {
+        this->Fail("it holds " + std::to_string(volumes) + (volumes == 1 ? " volume" : " volumes") +
+          "; the volume index " + std::to_string(this->VolumeIndex) + " is past them (the first is 0)");
+        return 0;
+      }
+      components = this->VolumeIndex > 0 ? components / volumes : components;
+      drawnType = NiftiRescaled(nifti) ? VTK_FLOAT : type;
+    }
+    vtkDataObject::SetPointDataActiveScalarInfo(out, drawnType, components);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepShadowVolumeReader::DicomInformation(vtkInformation* out)
+{
+  namespace dicom = deepshadow::dicom;
+  const std::string name = this->FileName;
+  const bool folder = vtksys::SystemTools::FileIsDirectory(name);
+  std::string problem;
+  const std::vector<std::string> files = folder ? dicom::RegularFiles(name, &problem) : std::vector<std::string>{ name };
+  std::vector<dicom::SeriesInfo> series;
+  if (problem.empty())
+  {
+    series = dicom::ListSeries(files, problem);
+  }
+  const dicom::SeriesInfo* chosen = problem.empty() ? dicom::Choose(series, this->Series, problem) : nullptr;
+  if (chosen && !folder && chosen->Frames < 2)
+  {
+    problem = "a single DICOM file is one slice of a series; give the folder of the series ('" +
+      vtksys::SystemTools::GetFilenamePath(name) + "' if it holds only that series)";
+  }
+  auto state = std::make_unique<DicomState>();
+  if (problem.empty())
+  {
+    dicom::ReadGeometry(*chosen, state->Geometry, problem);
+  }
+  if (!problem.empty())
+  {
+    this->Fail(problem);
+    return false;
+  }
+  const dicom::Geometry& g = state->Geometry;
+  const int extent[6] = { 0, g.Dimensions[0] - 1, 0, g.Dimensions[1] - 1, 0, g.Dimensions[2] - 1 };
+  out->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  out->Set(vtkDataObject::SPACING(), g.Spacing, 3);
+  out->Set(vtkDataObject::ORIGIN(), g.Origin, 3);
+  out->Set(vtkDataObject::DIRECTION(), g.Direction, 9);
+  vtkDataObject::SetPointDataActiveScalarInfo(out, g.ScalarType, 1);
+  problem = deepshadow::volumefile::CheckInformation(out, this->GetEffectiveMemoryBudget());
+  if (!problem.empty())
+  {
+    this->Fail(problem);
+    return false;
+  }
+  this->Modality = g.Modality;
+  if (!g.Warning.empty())
+  {
+    vtkWarningMacro(<< "'" << name << "': " << g.Warning);
+  }
+  this->Dicom = std::move(state);
+  return true;
+}
+
+bool vtkDeepShadowVolumeReader::DicomData(vtkImageData* output)
+{
+  const deepshadow::dicom::Geometry& g = this->Dicom->Geometry;
+  output->SetDimensions(g.Dimensions);
+  output->SetSpacing(g.Spacing);
+  output->SetOrigin(g.Origin);
+  output->SetDirectionMatrix(g.Direction);
+  try
+  {
+    output->AllocateScalars(g.ScalarType, 1);
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->Fail("not enough memory to read it");
+    return false;
+  }
+  std::string problem;
+  if (!deepshadow::dicom::ReadPixels(g, output, problem))
+  {
+    output->Initialize();
+    this->Fail(problem);
+    return false;
+  }
+  // The type the headers allow is wide (16-bit stored plus an intercept: 32 bits); the values
+  // read often fit a narrower one (CT's Hounsfield units: 16 bits), half the memory.
+  vtkDataArray* values = output->GetPointData()->GetScalars();
+  const int narrow = deepshadow::dicom::NarrowestType(values);
+  if (narrow != values->GetDataType())
+  {
+    vtkSmartPointer<vtkDataArray> narrowed = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(narrow));
+    narrowed->DeepCopy(values);
+    output->GetPointData()->SetScalars(narrowed);
+  }
+  output->GetPointData()->GetScalars()->SetName("DICOM");
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -426,6 +571,10 @@ int vtkDeepShadowVolumeReader::RequestData(
     return 0;
   }
   output->Initialize();
+  if (!this->Reader && this->Dicom)
+  {
+    return this->DicomData(output) ? 1 : 0;
+  }
   if (!this->Reader)
   {
     this->Fail("the file's header was not read");
@@ -485,18 +634,22 @@ int vtkDeepShadowVolumeReader::RequestData(
   }
   output->ShallowCopy(image);
   output->GetPointData()->SetScalars(scalars);
+  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(this->Reader))
+  {
+    output->GetPointData()->SetScalars(NiftiValues(nifti, scalars, this->VolumeIndex));
+  }
   double origin[3], direction[9];
-  if (Placement(this->Reader, this->Reader->GetOutputInformation(0), origin, direction))
+  if (Placement(this->Reader, origin, direction))
   {
     output->SetOrigin(origin);
     output->SetDirectionMatrix(direction);
   }
   if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(this->Reader))
   {
-    if (nifti->GetTimeDimension() > 1)
+    if (nifti->GetTimeDimension() > 1 && this->VolumeIndex == 0)
     {
       vtkWarningMacro(<< "'" << this->FileName << "' holds " << nifti->GetTimeDimension()
-                      << " volumes (4D); the first is read");
+                      << " volumes (4D); the first is read (SetVolumeIndex, --volume-index: another)");
     }
   }
 
@@ -514,5 +667,8 @@ void vtkDeepShadowVolumeReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << " (0: the default, "
      << deepshadow::DefaultMemoryBudget() << ")\n";
+  os << indent << "Series: " << (this->Series.empty() ? "(the folder's only one)" : this->Series) << "\n";
+  os << indent << "VolumeIndex: " << this->VolumeIndex << "\n";
+  os << indent << "Modality: " << (this->Modality.empty() ? "(none)" : this->Modality) << "\n";
   os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError) << "\n";
 }

@@ -5,7 +5,10 @@
  * Extensions (case-insensitive): .vti (vtkXMLImageDataReader), .mhd and .mha
  * (vtkMetaImageReader), .nrrd and .nhdr (vtkNrrdReader), .nii and .nii.gz
  * (vtkNIFTIImageReader; placed by its sform, else qform, in DICOM's patient axes (LPS) through
- * the output's origin and direction matrix; of a 4D file the first volume, with a warning).
+ * the output's origin and direction matrix; its scl_slope and scl_inter applied; of a 4D file
+ * the volume SetVolumeIndex chooses), and DICOM: a folder (its series SetSeries chooses), or
+ * one multi-frame file, read with GDCM: slices sorted by position along their normal, placed
+ * in LPS, rescaled to the modality's units (DicomSeries.h).
  * The output is a vtkImageData whose
  * active point scalars are the volume (the file's active scalars, else its first point array).
  *
@@ -32,6 +35,7 @@
 #include "vtkSmartPointer.h" // For the delegate reader
 
 #include <cstdint> // For std::uint64_t
+#include <memory>  // For the DICOM state
 #include <string>  // For GetLastError
 #include <vector> // For GetSupportedExtensions
 
@@ -60,7 +64,40 @@ public:
   vtkGetMacro(MemoryBudget, vtkTypeInt64);
   ///@}
 
-  /** Supported extensions, lower case with the dot: .vti, .mhd, .mha, .nrrd, .nhdr. */
+  ///@{
+  /**
+   * DICOM: the series of the folder to read, by its SeriesNumber or SeriesInstanceUID; empty
+   * (the default) reads the folder's only series, and a folder of several is an error that
+   * lists them (GetSeriesDescriptions).
+   */
+  void SetSeries(const std::string& series);
+  const std::string& GetSeries() const { return this->Series; }
+  ///@}
+
+  ///@{
+  /**
+   * NIfTI: which volume of a 4D file to read (0, the default: the first). An index past the
+   * file's volumes is an error naming their count.
+   */
+  vtkSetClampMacro(VolumeIndex, int, 0, VTK_INT_MAX);
+  vtkGetMacro(VolumeIndex, int);
+  ///@}
+
+  /** The last file's Modality (DICOM's (0008,0060): "CT", "MR", ...); empty for other formats. */
+  const std::string& GetModality() const { return this->Modality; }
+
+  /**
+   * One line on each image series of a DICOM folder (its number, modality, description,
+   * slices, size and UID), as SetSeries takes them; empty with the reason in `problem` when
+   * the folder holds none.
+   */
+  static std::vector<std::string> GetSeriesDescriptions(const std::string& directory, std::string& problem);
+
+  /**
+   * Supported extensions, lower case with the dot: .vti, .mhd, .mha, .nrrd, .nhdr, .nii,
+   * .nii.gz, .dcm (a multi-frame file; any file with DICOM's preamble is read as DICOM, and
+   * so is a folder).
+   */
   static std::vector<std::string> GetSupportedExtensions();
 
   /**
@@ -94,8 +131,17 @@ protected:
   /** Reports `problem` about the file as the one-line error. */
   void Fail(const std::string& problem);
 
+  /** DICOM's RequestInformation and RequestData (no VTK reader: GDCM, DicomSeries.h). */
+  bool DicomInformation(vtkInformation* out);
+  bool DicomData(vtkImageData* output);
+
   char* FileName = nullptr;
   vtkTypeInt64 MemoryBudget = 0;
+  std::string Series;
+  int VolumeIndex = 0;
+  std::string Modality;
+  class DicomState;
+  std::unique_ptr<DicomState> Dicom; // the chosen series' geometry, between the requests
   std::string LastError;
   vtkSmartPointer<vtkAlgorithm> Reader;
   vtkSmartPointer<vtkCommand> Errors; // collects the delegate's messages
