@@ -22,6 +22,7 @@
 #include "vtkVolumeMapper.h"
 
 #include <glm/common.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -549,6 +550,50 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     }
   }
   return lights;
+}
+
+std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light> lights, const KeyLight& key)
+{
+  int switchedOn = 0, headlights = 0;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* collection = renderer->GetLights();
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    switchedOn += light->GetSwitch() ? 1 : 0;
+    headlights += light->GetSwitch() && light->LightTypeIsHeadlight() ? 1 : 0;
+  }
+  if (switchedOn != 1 || headlights != 1 || lights.size() != 1)
+  {
+    return lights;
+  }
+  // The camera's frame: forward (camera to focal point), up, right.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double position[3], focal[3], up[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->GetViewUp(up);
+  const glm::dvec3 forward = glm::normalize(ToGlm3(focal) - ToGlm3(position));
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, ToGlm3(up)));
+  const glm::dvec3 upward = glm::cross(right, forward);
+  const double e = glm::radians(key.Elevation), a = glm::radians(key.Azimuth);
+  const glm::dvec3 towardsLight =
+    std::cos(e) * std::sin(a) * right + std::sin(e) * upward - std::cos(e) * std::cos(a) * forward;
+  const Light head = lights.front();
+  Light keyLight = head;
+  keyLight.Positional = false;
+  keyLight.FocalPoint = ToGlm3(focal);
+  keyLight.Position = keyLight.FocalPoint + towardsLight;
+  keyLight.Diffuse = head.Diffuse * key.KeyShare;
+  keyLight.Specular = head.Specular * key.KeyShare;
+  keyLight.ConeAngle = 180.0;
+  keyLight.ShadedFromEye = false;
+  Light fill = head;
+  fill.Diffuse = head.Diffuse * (1.0 - key.KeyShare);
+  fill.Specular = head.Specular * (1.0 - key.KeyShare);
+  fill.ShadowAttenuation = 0.0;
+  fill.ShadedFromEye = false;
+  return { keyLight, fill };
 }
 
 Camera MakeCamera(vtkRenderer* renderer)

@@ -174,6 +174,25 @@ std::shared_ptr<const BoundRegion> MakeBoundRegion(const std::vector<vtkPolyData
  */
 std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated = nullptr);
 
+/**
+ * What a lone headlight becomes in a shadowed scene: a key light above and to the side of the
+ * camera, as a light kit's key light (the headlight casts its shadows straight behind what it
+ * lights, where the camera cannot see them), and a fill from the eye that casts none, keeping
+ * the key's shadowed side readable. Their intensities sum to the headlight's.
+ */
+struct KeyLight
+{
+  double Elevation = 45.0; // degrees above the view direction
+  double Azimuth = 45.0;   // degrees to the right: its shadows fall beside what casts them
+  double KeyShare = 0.75;  // of the headlight's intensity; the fill has the rest
+};
+
+/**
+ * `lights` (MakeLights) with a lone headlight replaced as KeyLight says, seen from the
+ * renderer's camera; the same lights otherwise.
+ */
+std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light> lights, const KeyLight& key = KeyLight());
+
 /** The renderer's active camera over its (tiled) viewport. */
 Camera MakeCamera(vtkRenderer* renderer);
 

@@ -271,6 +271,11 @@ bool vtkDeepShadowReferenceRenderer::Render(
     if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
     {
       TakeMapperSettings(ours, this->GpuTwin, scene.Volumes.size(), sampleDistance, settings);
+      // Lit as the GPU mapper lights it: a lone headlight becomes a key and a fill.
+      if (ours->GetShadowTechnique() && ours->GetHeadlightKeyLight())
+      {
+        scene.Lights = adapter::KeyForLoneHeadlight(renderer, scene.Lights);
+      }
     }
   }
   std::vector<deepshadow::SurfaceMesh> drawn, casting;

@@ -513,6 +513,10 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   deepshadow::ShadowContext& context = frame.Context;
   bool truncated = false;
   context.Lights = frame.Lit ? adapter::MakeLights(frame.Renderer, &truncated) : std::vector<deepshadow::Light>();
+  if (this->ShadowTechnique && this->HeadlightKeyLight)
+  {
+    context.Lights = adapter::KeyForLoneHeadlight(frame.Renderer, context.Lights);
+  }
   if (truncated)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");

@@ -147,6 +147,20 @@ public:
 
   ///@{
   /**
+   * With a shadow technique, a renderer lit only by VTK's automatic headlight is lit instead
+   * by a key light above and to the side of the camera (elevation 50, azimuth 10 degrees, as
+   * vtkLightKit's key light; three quarters of the headlight's intensity, casting the
+   * shadows) and a fill from the eye (the rest, casting none): a headlight casts its shadows
+   * straight behind what it lights, where the camera cannot see them, and the picture only
+   * darkened. On by default; off: the headlight as it is. Any other lighting is kept.
+   */
+  vtkSetMacro(HeadlightKeyLight, bool);
+  vtkGetMacro(HeadlightKeyLight, bool);
+  vtkBooleanMacro(HeadlightKeyLight, bool);
+  ///@}
+
+  ///@{
+  /**
    * How the volume shadows itself (null, the default: no shadows, and no shadow code in the
    * shader). A technique replaced releases its GL objects in the window last drawn in. See vtkDeepShadowRayTechnique, vtkDeepShadowShadowMapTechnique,
    * vtkDeepShadowDeepShadowMapTechnique, vtkDeepShadowOpacityLevelsTechnique and
@@ -338,6 +352,7 @@ protected:
   std::vector<std::string> Unsupported; // the last frame's, see GetUnsupportedSettings()
   std::vector<std::string> UnsupportedSaid; // each said once
   bool ErrorThisFrame = false;
+  bool HeadlightKeyLight = true;
 
 private:
   vtkDeepShadowVolumeMapper(const vtkDeepShadowVolumeMapper&) = delete;
