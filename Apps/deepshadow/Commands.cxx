@@ -17,6 +17,7 @@
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumePresets.h"
+#include "vtkDeepShadowVolumeReader.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
@@ -88,6 +89,8 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
   }
   run.Stats.Set("command", options.Command)
     .Set("scene", setup.Name)
+    .Set("modality", setup.Modality)
+    .Set("look", setup.Look)
     .Set("technique", options.Technique)
     .Set("width", options.Width)
     .Set("height", options.Height)
@@ -286,6 +289,22 @@ int RunPresets(const Options&)
       vtkDeepShadowVolumePresets::GetPresetDescription(name).c_str());
   }
   std::printf("\n--tf also takes a ParaView JSON preset file (RGBPoints, Points).\n");
+  return 0;
+}
+
+int RunSeries(const Options& options)
+{
+  std::string problem;
+  const std::vector<std::string> lines =
+    vtkDeepShadowVolumeReader::GetSeriesDescriptions(options.VolumeFile, problem);
+  if (lines.empty())
+  {
+    throw UsageError("cannot list the series of '" + options.VolumeFile + "': " + problem);
+  }
+  for (const std::string& line : lines)
+  {
+    std::printf("%s\n", line.c_str());
+  }
   return 0;
 }
 

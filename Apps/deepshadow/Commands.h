@@ -17,6 +17,7 @@ int RunReference(const Options& options);
 int RunAll(const Options& options);
 int RunScenes(const Options& options);
 int RunPresets(const Options& options);
+int RunSeries(const Options& options);
 int RunGallery(const Options& options);
 int RunView(const Options& options);
 /** view's own options (--keys, --screenshots); false if `key` is not one. */

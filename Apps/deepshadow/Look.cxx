@@ -320,6 +320,11 @@ void ApplyAppearance(const Options& options, vtkImageData* data, vtkVolumeProper
     {
       throw UsageError(presets->GetLastError());
     }
+    const std::string warning = vtkDeepShadowVolumePresets::DataWarning(options.TransferFunction, data);
+    if (!warning.empty())
+    {
+      vtkWarningWithObjectMacro(presets, << warning);
+    }
     property->SetScalarOpacityUnitDistance(SmallestSpacing(data));
   }
   if (options.ShadeGiven || options.TransferFunction.empty())

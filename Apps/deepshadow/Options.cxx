@@ -340,7 +340,7 @@ Options Options::Parse(int argc, char* argv[])
     i = 1;
   }
   static const char* const commands[] = { "render", "reference", "all", "bench", "shadow-bench",
-    "report", "scenes", "presets", "gallery", "view" };
+    "report", "scenes", "presets", "series", "gallery", "view" };
   bool known = false;
   for (const char* c : commands)
   {
@@ -411,6 +411,14 @@ Options Options::Parse(int argc, char* argv[])
     else if (key == "--mask")
     {
       o.MaskFile = next();
+    }
+    else if (key == "--series")
+    {
+      o.Series = next();
+    }
+    else if (key == "--volume-index")
+    {
+      o.VolumeIndex = ParseInteger(key, next(), 0, 1000000);
     }
     else if (key == "--bound")
     {
@@ -689,6 +697,20 @@ Options Options::Parse(int argc, char* argv[])
     o.OutDir = o.Out;
   }
   ValidateLook(o, args);
+  // A medical file is shown with its shadows unless asked otherwise: deep shadow maps, from
+  // the key light a lone headlight becomes (vtkDeepShadowVolumeMapper::HeadlightKeyLight).
+  const bool techniqueGiven = std::any_of(args.begin(), args.end(), [](const std::string& a) {
+    return a == "--technique" || a.rfind("--technique=", 0) == 0;
+  });
+  if (!o.VolumeFile.empty() && !techniqueGiven &&
+    (o.Command == "render" || o.Command == "reference" || o.Command == "view"))
+  {
+    o.Technique = "dsm";
+  }
+  if (o.Command == "series" && o.VolumeFile.empty())
+  {
+    throw UsageError("series needs --volume DIR (a DICOM folder)");
+  }
   if (o.Frames == 0 && o.Command != "report")
   {
     throw UsageError("--frames 0 (errors only, no timing) is for report");

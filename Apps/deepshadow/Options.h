@@ -56,7 +56,7 @@ struct NamedFile
 
 struct Options
 {
-  std::string Command; // render | view | reference | all | gallery | bench | shadow-bench | report | scenes | presets | help
+  std::string Command; // render | view | reference | all | gallery | bench | shadow-bench | report | scenes | presets | series | help
   std::vector<std::string> Arguments; // as given, after the command
   std::string HelpCommand; // help: the command whose --help it is ("" for all)
 
@@ -64,6 +64,8 @@ struct Options
   std::string Scene;      // standard scene name
   std::string VolumeFile; // or a file
   std::string MaskFile;   // --mask: a binary mask volume of the data's dimensions
+  std::string Series;     // --series: the DICOM series of a folder, by number or UID
+  int VolumeIndex = 0;    // --volume-index: the volume of a 4D NIfTI file
   double SceneScale = 1.0;
   int ObjectCount = 0;    // --objects: the sparse scene's first N objects (0: all)
   std::vector<std::string> BoundFiles; // --bound, repeatable: bounds A, B, ...
@@ -97,7 +99,8 @@ struct Options
   unsigned int JitterSeed = 0;
   bool EmptySpaceSkipping = true;
   bool ReplaceNonFinite = false;
-  std::string Technique = "none"; // a name of the technique registry (ShadowTechniques.h)
+  // A name of the technique registry (ShadowTechniques.h); a --volume file given none: dsm.
+  std::string Technique = "none";
   // The technique parameters given (--KEY or a spec's KEY=VALUE, registry keys, checked),
   // in order; the others keep the technique's defaults.
   std::vector<std::pair<std::string, std::vector<double>>> TechniqueSettings;

@@ -119,6 +119,7 @@ Usage:
                        [--error-size WxH] [--frames N]
   deepshadow scenes
   deepshadow presets
+  deepshadow series    --volume DIR
   deepshadow --version
   deepshadow --help
 
@@ -162,6 +163,8 @@ Commands:
               sweep at 256x256, errors at 128x128, 3 frames. Progress on stderr.
   scenes      Lists the standard scenes.
   presets     Lists the transfer-function presets --tf takes.
+  series      Lists the DICOM series of a folder (number, modality, description, slices,
+              size, UID), as --series takes them.
 
 SCENE (default: --scene box):
   --scene NAME            a standard scene (see `deepshadow scenes`)
@@ -169,7 +172,11 @@ SCENE (default: --scene box):
   --objects N             sparse: its first N objects (1-24; default its 19; above 19,
                           smaller ones between its cells), for scaling studies
   --volume FILE|DIR       a volume file instead: .vti, .mhd/.mha, .nrrd/.nhdr, .nii/.nii.gz
-                          (placed by its s/q-form), or a directory of one DICOM series
+                          (placed by its s/q-form), a DICOM folder (read with GDCM; placed
+                          by its slices' positions), or a multi-frame DICOM file
+  --series N|UID          the DICOM series of the folder to read, by its number or UID (a
+                          folder of several: see `deepshadow series`)
+  --volume-index N        the volume of a 4D NIfTI file to read (default 0, the first)
   --replace-nonfinite     render NaN/Inf samples as the data's extremes instead of failing
   --mask FILE             a binary mask, a volume file of the data's dimensions: samples whose
                           nearest mask voxel is 0 or less are clear, drawn and cast (VTK's
@@ -283,7 +290,7 @@ std::string Options::CommandUsage(const std::string& command)
       options += line + "\n";
     }
   }
-  const bool takesOptions = command != "scenes" && command != "presets";
+  const bool takesOptions = command != "scenes" && command != "presets" && command != "series";
   return "Usage:\n" + synopsis + "\n" + paragraph + (takesOptions ? "\n" + options : std::string());
 }
 

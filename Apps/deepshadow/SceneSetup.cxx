@@ -12,6 +12,7 @@
 #include "vtkDeepShadowImageConversion.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
+#include "vtkDeepShadowVolumePresets.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowTechnique.h"
@@ -103,33 +104,34 @@ void FiniteRange(vtkImageData* data, double range[2])
   range[1] = hi;
 }
 
-// A neutral look for files that come with none: grey, transparent low values, shaded. It
-// shows nothing of a constant volume (all of it at the ramp's transparent start): said, when
-// no --tf is given to replace it.
-vtkSmartPointer<vtkVolumeProperty> DefaultProperty(vtkImageData* data, bool replaced)
+// The look of a file given none (--tf): by its modality (vtkDeepShadowVolumePresets::
+// ApplyDefault: CT-Bone for CT, MR-Default windowed from the data's histogram otherwise). A
+// constant volume has no look that shows it: said, when no --tf is given to replace it.
+vtkSmartPointer<vtkVolumeProperty> DefaultProperty(
+  vtkImageData* data, const std::string& modality, bool replaced, std::string& look)
 {
   double range[2];
   FiniteRange(data, range);
-  if (range[0] == range[1] && !replaced)
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetInterpolationTypeToLinear();
+  property->SetScalarOpacityUnitDistance(SmallestSpacing(data));
+  if (replaced)
+  {
+    return property;
+  }
+  if (range[0] == range[1])
   {
     std::ostringstream message;
-    message << "the volume is constant (every finite sample is " << range[0] << "): the default "
-            << "transfer function, a ramp over the data's range, shows nothing of it; give --tf";
+    message << "the volume is constant (every finite sample is " << range[0] << "): no transfer "
+            << "function chosen from its values shows anything of it; give --tf";
     throw UsageError(message.str());
   }
-  const double width = range[1] > range[0] ? range[1] - range[0] : 1.0;
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
-  color->AddRGBPoint(range[0] + width, 1.0, 1.0, 1.0);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(range[0], 0.0);
-  opacity->AddPoint(range[0] + 0.2 * width, 0.0);
-  opacity->AddPoint(range[0] + width, 0.6);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetInterpolationTypeToLinear();
-  property->ShadeOn();
+  vtkNew<vtkDeepShadowVolumePresets> presets;
+  look = presets->ApplyDefault(modality, data, property);
+  if (look.empty())
+  {
+    throw UsageError(presets->GetLastError());
+  }
   property->SetScalarOpacityUnitDistance(SmallestSpacing(data));
   return property;
 }
@@ -335,6 +337,8 @@ SceneSetup SceneSetup::Build(const Options& options)
   {
     vtkNew<vtkDeepShadowVolumeReader> reader;
     reader->SetFileName(options.VolumeFile.c_str());
+    reader->SetSeries(options.Series);
+    reader->SetVolumeIndex(options.VolumeIndex);
     reader->Update();
     if (!reader->GetLastError().empty())
     {
@@ -342,7 +346,8 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Data = reader->GetOutput();
     setup.Name = options.VolumeFile;
-    property = DefaultProperty(setup.Data, !options.TransferFunction.empty());
+    setup.Modality = reader->GetModality();
+    property = DefaultProperty(setup.Data, setup.Modality, !options.TransferFunction.empty(), setup.Look);
   }
   else
   {

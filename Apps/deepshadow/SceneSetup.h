@@ -34,6 +34,8 @@ struct SceneSetup
   vtkSmartPointer<vtkDeepShadowTechnique> Technique; // null for --technique none
   vtkSmartPointer<vtkImageData> Data;
   std::string Name; // scene name or file name
+  std::string Modality; // a DICOM file's ("CT", "MR", ...); "" otherwise
+  std::string Look;     // the look chosen for a file given no --tf (e.g. "CT-Bone")
   double GenerationSeconds = 0.0;
   // The polyhedral bound (--bound / --csg, or a bounded scene's), as given to the mapper.
   std::vector<vtkSmartPointer<vtkPolyData>> Bounds;

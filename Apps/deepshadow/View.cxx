@@ -74,23 +74,35 @@ public:
     this->Text->GetTextProperty()->SetFontSize(12);
     this->Text->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
     this->Text->SetDisplayPosition(8, 8);
-    this->Scene.Renderer->AddActor2D(this->Text);
+    // The status line in a renderer of its own, drawn after the scene's in the same frame:
+    // it shows the figures of the frame beneath it, whoever asked for the frame (a key, or
+    // the interactor turning the camera).
+    this->Window->SetNumberOfLayers(2);
+    this->Overlay->SetLayer(1);
+    this->Overlay->InteractiveOff();
+    this->Overlay->AddActor2D(this->Text);
+    this->Window->AddRenderer(this->Overlay);
+    this->Scene.Renderer->AddObserver(vtkCommand::StartEvent, this, &Viewer::SceneStarted);
+    this->Scene.Renderer->AddObserver(vtkCommand::EndEvent, this, &Viewer::SceneDrawn);
+    this->Overlay->AddObserver(vtkCommand::StartEvent, this, &Viewer::ShowStatus);
     this->Key = vtkLight::SafeDownCast(this->Scene.Renderer->GetLights()->GetItemAsObject(0));
   }
 
   vtkRenderWindow* GetWindow() { return this->Window; }
   vtkLight* GetKeyLight() { return this->Key; }
 
-  /** Renders a frame; the status line shows the state and the previous frame's time (one
-   * render per frame: the line is drawn with the frame it describes the settings of). */
-  void Render()
+  /** Renders a frame; its status line shows that frame's time, memory and builds. */
+  void Render() { this->Window->Render(); }
+
+  // The scene's renderer times its frame (GL finished); the overlay, drawn next, shows it.
+  void SceneStarted() { this->SceneStart = std::chrono::steady_clock::now(); }
+  void SceneDrawn()
   {
-    this->Text->SetInput(this->Status().c_str());
-    const auto start = std::chrono::steady_clock::now();
-    this->Window->Render();
+    this->Window->WaitForCompletion();
     this->FrameMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - this->SceneStart).count();
   }
+  void ShowStatus() { this->Text->SetInput(this->Status().c_str()); }
 
   std::string Status() const
   {
@@ -216,6 +228,8 @@ private:
   SceneSetup Scene;
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkNew<vtkTextActor> Text;
+  vtkNew<vtkRenderer> Overlay; // layer 1: the status line over the scene
+  std::chrono::steady_clock::time_point SceneStart;
   vtkLight* Key = nullptr;
   std::vector<std::string> Names;
   size_t Index = 0;

@@ -72,6 +72,10 @@ int Run(const deepshadow::tool::Options& options)
   {
     return RunPresets(options);
   }
+  if (options.Command == "series")
+  {
+    return RunSeries(options);
+  }
   return RunScenes(options);
 }
 }

@@ -151,22 +151,50 @@ expect 2 "window without a preset" -- "$tool" render --window 100 --level 0 --ou
 expect 2 "bad shade" -- "$tool" render --shade maybe --out x.png
 expect 2 "ambient out of range" -- "$tool" render --ambient 2 --out x.png
 
-# Real medical files (python3-nibabel's test data): a NIfTI MR scan and a DICOM series
-# directory render with shadows from an anterior view.
+# Real medical files (python3-nibabel's test data): a NIfTI MR scan renders with shadows from
+# an anterior view, and a look chosen from its histogram when no --tf is given.
 nibabel=/usr/lib/python3/dist-packages/nibabel/tests/data
 if [ -f "$nibabel/example4d.nii.gz" ]; then
   expect 0 "a NIfTI MR scan, anterior, deep shadow maps" -- "$tool" render --volume "$nibabel/example4d.nii.gz" \
     --tf MR-Default --technique dsm --view anterior --size 64x64 --frames 1 --out nifti.png
   not_flat nifti.png "a NIfTI MR scan"
-  mkdir -p dicom && cp "$nibabel/0.dcm" "$nibabel/1.dcm" dicom/
-  expect 0 "a DICOM series, anterior, deep shadow maps" -- "$tool" render --volume dicom \
-    --technique dsm --view anterior --elevation 30 --size 64x64 --frames 1 --out dicom.png
-  not_flat dicom.png "a DICOM series"
-  mkdir -p no-dicom && echo "notes" > no-dicom/readme.txt
-  expect 2 "a directory with no DICOM" "no DICOM files" -- "$tool" render --volume no-dicom --out x.png
+  expect 0 "a NIfTI MR scan, no --tf and no --technique" -- "$tool" render --volume "$nibabel/example4d.nii.gz" \
+    --view anterior --size 64x64 --frames 1 --out nifti-default.png --json nifti-default.json
+  grep -q '"technique": "dsm"' nifti-default.json && grep -q '"look": "MR-Default, window' nifti-default.json &&
+    echo "ok: a medical file's defaults: dsm, MR-Default windowed from its histogram" ||
+    fail "a medical file's defaults: $(grep -E '"technique"|"look"' nifti-default.json)"
+  not_flat nifti-default.png "a NIfTI MR scan with its defaults"
+  expect 0 "the second volume of the 4D file" -- "$tool" render --volume "$nibabel/example4d.nii.gz" --volume-index 1 \
+    --view anterior --size 64x64 --frames 1 --out nifti-1.png
+  rmse_at_least nifti-1.png nifti-default.png 0.001 "volume 1 is not volume 0"
+  expect 2 "a volume index past the file's volumes" "holds 2 volumes" -- "$tool" render --volume "$nibabel/example4d.nii.gz" \
+    --volume-index 2 --out x.png
+  "$tool" render --volume "$nibabel/example4d.nii.gz" --tf CT-Bone --size 32x32 --frames 1 --out x.png 2> ct-on-mr.txt
+  grep -q "^deepshadow: warning: the CT preset CT-Bone is in Hounsfield units" ct-on-mr.txt &&
+    echo "ok: a CT preset on MR data warns" || fail "a CT preset on MR data: $(cat ct-on-mr.txt)"
 else
   echo "skipped: python3-nibabel's test data is not installed"
 fi
+# A real DICOM series (python3-pydicom's test files): 5 axial CT slices, with GDCM.
+pydicom=/usr/lib/python3/dist-packages/pydicom/data/test_files/dicomdirtests
+if [ -d "$pydicom/98892001/CT5N" ]; then
+  rm -rf dicom && cp -r "$pydicom/98892001/CT5N" dicom
+  expect 0 "a DICOM CT series, anterior, its defaults" -- "$tool" render --volume dicom \
+    --view anterior --elevation 30 --size 64x64 --frames 1 --out dicom.png --json dicom.json
+  not_flat dicom.png "a DICOM series"
+  grep -q '"modality": "CT"' dicom.json && grep -q '"look": "CT-Bone"' dicom.json &&
+    echo "ok: a CT series is shown with CT-Bone" || fail "a CT series' look: $(grep -E '"modality"|"look"' dicom.json)"
+  expect 2 "one file of the series" "give the folder of the series" -- "$tool" render --volume dicom/2062 --out x.png
+  expect 0 "the series of a folder of several" -- "$tool" series --volume "$pydicom/98892003/MR2"
+  [ "$(grep -c "UID" out.txt)" -eq 3 ] && echo "ok: three series listed" || fail "series: $(cat out.txt)"
+  expect 2 "a folder of several series" "holds 3 series" -- "$tool" render --volume "$pydicom/98892003/MR2" --out x.png
+  expect 2 "a series number three series share" "choose one by its UID" -- "$tool" render --volume "$pydicom/98892003/MR2" \
+    --series 2 --out x.png
+else
+  echo "skipped: python3-pydicom's test files are not installed"
+fi
+mkdir -p no-dicom && echo "notes" > no-dicom/readme.txt
+expect 2 "a directory with no DICOM" "no DICOM files" -- "$tool" render --volume no-dicom --out x.png
 
 # The camera: patient views, turns, and a camera file that reproduces a view exactly.
 expect 0 "anterior view" -- "$tool" render --scene head --scale 0.25 --tf CT-Bone --view anterior \

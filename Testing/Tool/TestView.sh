@@ -2,7 +2,8 @@
 # deepshadow view, the interactive viewer, under Xvfb (a virtual X display): keys sent through
 # its interactor (--keys), screenshots taken and compared. A light move rebuilds only the
 # light's structure (one light: one build), a technique switch changes the picture, g hides
-# the meshes; without a display the command says so and exits 2.
+# the meshes, the status line shows the frame beneath it; without a display the command says
+# so and exits 2, and with a display nobody serves as well.
 # Usage: TestView.sh path/to/deepshadow path/to/deepshadow-testkit work-directory
 set -u
 tool=$1
@@ -22,6 +23,7 @@ else
   fail "no display: exit $code, $(cat err.txt)"
 fi
 expect 2 "unknown key" "--keys takes" -- "$tool" view --keys t,x
+expect 2 "a display no X server serves (SIGSEGV before)" "no X server answers" -- env DISPLAY=:4711 "$tool" view --scene rods
 
 if ! command -v Xvfb > /dev/null; then
   echo "skipped: no Xvfb (scripts/setup.sh installs it)"
@@ -51,6 +53,18 @@ rmse_at_least shots/view-1.png shots/view-1-window.png 0.001 "the status line sh
 rmse_at_least shots/view-1.png shots/view-2.png 0.005 "a light move moves the shadows"
 [ "$(field shots/view-2.json shadow_builds)" -eq $(( $(field shots/view-1.json shadow_builds) + 1 )) ] ||
   fail "a light move made $(field shots/view-1.json shadow_builds) -> $(field shots/view-2.json shadow_builds) builds, not one more"
+# The status line speaks of the frame beneath it: the rebuild the light move caused, the
+# time the frame took (it showed the frame before's).
+builds=$(field shots/view-2.json shadow_builds)
+status=$(field shots/view-2.json status)
+case "$status" in
+  *"builds $builds"*"") echo "ok: the status line shows this frame's $builds builds" ;;
+  *) fail "the status line '$status' is not of the frame with $builds builds" ;;
+esac
+case "$status" in
+  *"| $(printf '%.0f' "$(field shots/view-2.json frame_ms)") ms |"*) echo "ok: the status line shows this frame's time" ;;
+  *) fail "the status line '$status' shows another frame's time than $(field shots/view-2.json frame_ms) ms" ;;
+esac
 [ "$(field shots/view-3.json technique)" != "$(field shots/view-2.json technique)" ] || fail "t did not switch the technique"
 rmse_at_least shots/view-2.png shots/view-3.png 0.005 "a technique switch changes the picture"
 rmse_at_least shots/view-3.png shots/view-4.png 0.01 "g hides the ground"
