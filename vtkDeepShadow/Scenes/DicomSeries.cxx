@@ -168,51 +168,37 @@ int RescaledType(int bits, bool isSigned, double slope, double intercept)
   return VTK_FLOAT;
 }
 
+// Element i of a decoded buffer holding values of type T; memcpy because GDCM's buffer
+// carries no alignment promise.
+template <typename T>
+double Element(const char* buffer, size_t i)
+{
+  T v;
+  std::memcpy(&v, buffer + sizeof(T) * i, sizeof(T));
+  return static_cast<double>(v);
+}
+
 // Stored value i of a decoded buffer of GDCM scalar type `type`, as a double.
 double Stored(const char* buffer, gdcm::PixelFormat::ScalarType type, size_t i)
 {
   switch (type)
   {
     case gdcm::PixelFormat::UINT8:
-      return reinterpret_cast<const std::uint8_t*>(buffer)[i];
+      return Element<std::uint8_t>(buffer, i);
     case gdcm::PixelFormat::INT8:
-      return reinterpret_cast<const std::int8_t*>(buffer)[i];
+      return Element<std::int8_t>(buffer, i);
     case gdcm::PixelFormat::UINT16:
-    {
-      std::uint16_t v;
-      std::memcpy(&v, buffer + 2 * i, 2);
-      return v;
-    }
+      return Element<std::uint16_t>(buffer, i);
     case gdcm::PixelFormat::INT16:
-    {
-      std::int16_t v;
-      std::memcpy(&v, buffer + 2 * i, 2);
-      return v;
-    }
+      return Element<std::int16_t>(buffer, i);
     case gdcm::PixelFormat::UINT32:
-    {
-      std::uint32_t v;
-      std::memcpy(&v, buffer + 4 * i, 4);
-      return v;
-    }
+      return Element<std::uint32_t>(buffer, i);
     case gdcm::PixelFormat::INT32:
-    {
-      std::int32_t v;
-      std::memcpy(&v, buffer + 4 * i, 4);
-      return v;
-    }
+      return Element<std::int32_t>(buffer, i);
     case gdcm::PixelFormat::FLOAT32:
-    {
-      float v;
-      std::memcpy(&v, buffer + 4 * i, 4);
-      return v;
-    }
+      return Element<float>(buffer, i);
     case gdcm::PixelFormat::FLOAT64:
-    {
-      double v;
-      std::memcpy(&v, buffer + 8 * i, 8);
-      return v;
-    }
+      return Element<double>(buffer, i);
     default:
       return std::numeric_limits<double>::quiet_NaN();
   }

@@ -35,6 +35,18 @@ def lps_volume(path=COLIN27):
     return numpy.asarray(data), affine[:3, 3], spacing
 
 
+def new_dataset(sop_class):
+    """An empty explicit-little-endian dataset of `sop_class` with a new instance UID."""
+    meta = FileMetaDataset()
+    meta.MediaStorageSOPClassUID = sop_class
+    meta.MediaStorageSOPInstanceUID = generate_uid()
+    meta.TransferSyntaxUID = ExplicitVRLittleEndian
+    ds = FileDataset(None, {}, file_meta=meta, preamble=b"\0" * 128)
+    ds.is_little_endian, ds.is_implicit_VR = True, False
+    ds.SOPClassUID, ds.SOPInstanceUID = meta.MediaStorageSOPClassUID, meta.MediaStorageSOPInstanceUID
+    return ds
+
+
 def write_series(folder, orientation="axial", descending=False, step=1, modality="MR",
                  slope=1.0, intercept=0.0, series_number=1, description=None, crop=None,
                  shear=0.0, volume=None):
@@ -77,13 +89,7 @@ def write_series(folder, orientation="axial", descending=False, step=1, modality
         if column[ca] < 0:
             image = image[::-1, :]
         stored = numpy.round((image.astype(float) - intercept) / slope).astype(numpy.uint16)
-        meta = FileMetaDataset()
-        meta.MediaStorageSOPClassUID = pydicom.uid.MRImageStorage
-        meta.MediaStorageSOPInstanceUID = generate_uid()
-        meta.TransferSyntaxUID = ExplicitVRLittleEndian
-        ds = FileDataset(None, {}, file_meta=meta, preamble=b"\0" * 128)
-        ds.is_little_endian, ds.is_implicit_VR = True, False
-        ds.SOPClassUID, ds.SOPInstanceUID = meta.MediaStorageSOPClassUID, meta.MediaStorageSOPInstanceUID
+        ds = new_dataset(pydicom.uid.MRImageStorage)
         ds.Modality, ds.PatientName, ds.PatientID = modality, "Colin27", "colin27"
         ds.StudyInstanceUID, ds.SeriesInstanceUID = study_uid, series_uid
         ds.SeriesNumber, ds.InstanceNumber = series_number, instance
@@ -111,13 +117,7 @@ def write_multiframe(path, orientation="axial", crop=None, slope=1.0, intercept=
     slices = sorted((pydicom.dcmread(os.path.join(folder, f)) for f in os.listdir(folder)),
                     key=lambda d: d.InstanceNumber)
     first = slices[0]
-    meta = FileMetaDataset()
-    meta.MediaStorageSOPClassUID = pydicom.uid.EnhancedMRImageStorage
-    meta.MediaStorageSOPInstanceUID = generate_uid()
-    meta.TransferSyntaxUID = ExplicitVRLittleEndian
-    ds = FileDataset(None, {}, file_meta=meta, preamble=b"\0" * 128)
-    ds.is_little_endian, ds.is_implicit_VR = True, False
-    ds.SOPClassUID, ds.SOPInstanceUID = meta.MediaStorageSOPClassUID, meta.MediaStorageSOPInstanceUID
+    ds = new_dataset(pydicom.uid.EnhancedMRImageStorage)
     for key in ("Modality", "PatientName", "PatientID", "StudyInstanceUID", "SeriesInstanceUID",
                 "SeriesNumber", "SeriesDescription", "Rows", "Columns", "SamplesPerPixel",
                 "PhotometricInterpretation", "BitsAllocated", "BitsStored", "HighBit",
