@@ -584,13 +584,13 @@ std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light>
   keyLight.Positional = false;
   keyLight.FocalPoint = ToGlm3(focal);
   keyLight.Position = keyLight.FocalPoint + towardsLight;
-  keyLight.Diffuse = head.Diffuse * key.KeyShare;
-  keyLight.Specular = head.Specular * key.KeyShare;
+  keyLight.Diffuse = head.Diffuse * key.KeyIntensity;
+  keyLight.Specular = head.Specular * key.KeyIntensity;
   keyLight.ConeAngle = 180.0;
   keyLight.ShadedFromEye = false;
   Light fill = head;
-  fill.Diffuse = head.Diffuse * (1.0 - key.KeyShare);
-  fill.Specular = head.Specular * (1.0 - key.KeyShare);
+  fill.Diffuse = head.Diffuse * key.FillIntensity;
+  fill.Specular = head.Specular * key.FillIntensity;
   fill.ShadowAttenuation = 0.0;
   fill.ShadedFromEye = false;
   return { keyLight, fill };

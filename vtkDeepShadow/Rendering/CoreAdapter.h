@@ -178,13 +178,16 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated = nullptr);
  * What a lone headlight becomes in a shadowed scene: a key light above and to the side of the
  * camera, as a light kit's key light (the headlight casts its shadows straight behind what it
  * lights, where the camera cannot see them), and a fill from the eye that casts none, keeping
- * the key's shadowed side readable. Their intensities sum to the headlight's.
+ * the key's shadowed side readable. Together brighter than the headlight, as a light kit is:
+ * the key reaches a surface facing the camera at an angle, and through the volume's own
+ * outer layers (a dense medium lit along the view loses half its light to them).
  */
 struct KeyLight
 {
-  double Elevation = 45.0; // degrees above the view direction
-  double Azimuth = 45.0;   // degrees to the right: its shadows fall beside what casts them
-  double KeyShare = 0.75;  // of the headlight's intensity; the fill has the rest
+  double Elevation = 45.0;    // degrees above the view direction
+  double Azimuth = 45.0;      // degrees to the right: its shadows fall beside what casts them
+  double KeyIntensity = 1.0;  // of the headlight's
+  double FillIntensity = 0.5; // of the headlight's
 };
 
 /**

@@ -148,11 +148,14 @@ public:
   ///@{
   /**
    * With a shadow technique, a renderer lit only by VTK's automatic headlight is lit instead
-   * by a key light above and to the side of the camera (elevation 50, azimuth 10 degrees, as
-   * vtkLightKit's key light; three quarters of the headlight's intensity, casting the
-   * shadows) and a fill from the eye (the rest, casting none): a headlight casts its shadows
-   * straight behind what it lights, where the camera cannot see them, and the picture only
-   * darkened. On by default; off: the headlight as it is. Any other lighting is kept.
+   * by a key light 45 degrees above and 45 to the right of the camera (as bright as the
+   * headlight, casting the shadows) and a fill from the eye (half as bright, casting none),
+   * as a light kit lights a scene: a headlight casts its shadows straight behind what it
+   * lights, where the camera cannot see them, and the picture only darkened. Together
+   * brighter than the headlight, since the key meets a surface facing the camera at an angle
+   * and through the volume's own outer layers: the lit side keeps about 0.8 to 0.9 of the
+   * unshadowed picture's brightness. On by default; off: the headlight as it is. Any other
+   * lighting is kept.
    */
   vtkSetMacro(HeadlightKeyLight, bool);
   vtkGetMacro(HeadlightKeyLight, bool);
