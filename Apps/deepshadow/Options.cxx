@@ -573,6 +573,15 @@ Options Options::Parse(int argc, char* argv[])
     else if (ParseLookOption(o, key, next))
     {
     }
+    else if (key == "--shading")
+    {
+      const std::string model = next();
+      if (model != "vtk" && model != "blinn-phong")
+      {
+        throw UsageError("--shading must be vtk or blinn-phong, got '" + model + "'");
+      }
+      o.VTKShading = model == "vtk";
+    }
     else if (key == "--jitter")
     {
       o.Jitter = true;

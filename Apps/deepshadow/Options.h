@@ -97,6 +97,7 @@ struct Options
   std::string ScreenshotDir; // view --screenshots: where 's' writes view-N.png and .json
   bool Jitter = false;
   unsigned int JitterSeed = 0;
+  bool VTKShading = false; // --shading vtk (the mapper's default); the tool draws Blinn-Phong
   bool EmptySpaceSkipping = true;
   bool ReplaceNonFinite = false;
   // A name of the technique registry (ShadowTechniques.h); a --volume file given none: dsm.

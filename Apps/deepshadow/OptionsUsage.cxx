@@ -220,7 +220,10 @@ RENDERING:
   --sample-distance D     world distance between samples (default: half the smallest voxel edge)
 )" + TechniqueUsage() + R"(  --no-shading            no gradient shading (emission and absorption only); the same
                           as --shade off
-)" + LookUsage() + R"(  --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
+)" + LookUsage() + R"(  --shading MODEL         blinn-phong (default: the true gradient normal, Ka x colour x the
+                          renderer's ambient light) or vtk (VTK 9.1's volume shading, as a
+                          swapped-in mapper draws it; under scene lights no ambient term)
+  --jitter SEED           jitter ray starts with a hash of the pixel and SEED (reproducible)
   --no-empty-space-skipping
   --backend osmesa|egl    headless OpenGL backend (default: VTK_DEEPSHADOW_BACKEND or osmesa)
 

@@ -210,6 +210,7 @@ void AddSecondVolume(SceneSetup& setup, const Options& options, const std::vecto
   setup.SecondMapper->SetSampleDistance(step);
   setup.SecondMapper->SetJitter(options.Jitter);
   setup.SecondMapper->SetJitterSeed(options.JitterSeed);
+  setup.SecondMapper->SetShadingModel(setup.Mapper->GetShadingModel());
   setup.SecondTechnique = MakeTechnique(options);
   setup.SecondMapper->SetShadowTechnique(setup.SecondTechnique);
   setup.SecondVolume = vtkSmartPointer<vtkVolume>::New();
@@ -431,6 +432,8 @@ SceneSetup SceneSetup::Build(const Options& options)
   setup.Mapper->SetSampleDistance(options.SampleDistance);
   setup.Mapper->SetJitter(options.Jitter);
   setup.Mapper->SetJitterSeed(options.JitterSeed);
+  setup.Mapper->SetShadingModel(options.VTKShading ? vtkDeepShadowVolumeMapper::VTK_SHADING
+                                                   : vtkDeepShadowVolumeMapper::BLINN_PHONG_SHADING);
   setup.Mapper->SetEmptySpaceSkipping(options.EmptySpaceSkipping);
   setup.Mapper->SetReplaceNonFiniteScalars(options.ReplaceNonFinite);
   if (!options.IsoValues.empty())

@@ -9,7 +9,7 @@ namespace deepshadow
 
 double Light::ConeCosine() const
 {
-  return this->ConeAngle < 90.0 ? std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0) : -2.0;
+  return this->ConeAngle <= 90.0 ? std::cos(this->ConeAngle * 3.14159265358979323846 / 180.0) : -2.0;
 }
 
 LightSample Light::At(const glm::dvec3& p) const

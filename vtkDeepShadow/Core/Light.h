@@ -1,6 +1,7 @@
 // Lights in world space, with VTK's semantics (vtkLight): directional unless positional;
-// positional lights attenuate by 1 / (c + l d + q d^2); a cone angle below 90 degrees makes a
-// spot light whose intensity falls off as cos^exponent inside the cone and is 0 outside.
+// positional lights attenuate by 1 / (c + l d + q d^2); a cone angle of 90 degrees or less
+// makes a spot light (VTK's shaders: "per OpenGL standard cone angle is 90 or less") whose
+// intensity falls off as cos^exponent inside the cone and is 0 outside.
 #ifndef deepshadow_Light_h
 #define deepshadow_Light_h
 
@@ -33,7 +34,7 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
   bool ShadedFromEye = false;
   glm::dvec3 Eye{ 0.0 };
 
-  /** The spot's cone cosine, cos(ConeAngle); -2 (below any cosine) when it is no spot. */
+  /** The spot's cone cosine, cos(ConeAngle <= 90); -2 (below any cosine) when it is no spot. */
   double ConeCosine() const;
 
   /** Direction and colour of this light as seen from world point `p`. */

@@ -93,13 +93,6 @@ inline glm::dvec3 PhongLight(const glm::dvec3& color, const glm::dvec3& normal,
     material.Specular * specular * light.Specular;
 }
 
-/** Outward unit normal from a world-space gradient (zero stays zero). */
-inline glm::dvec3 NormalFromGradient(const glm::dvec3& gradient)
-{
-  const double length = glm::length(gradient);
-  return length > 0.0 ? -gradient / length : glm::dvec3(0.0);
-}
-
 /** Rays stop once accumulated opacity exceeds this (VTK's value: 1 - 1/255). */
 constexpr double DefaultTerminationOpacity = 1.0 - 1.0 / 255.0;
 

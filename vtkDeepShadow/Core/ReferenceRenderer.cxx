@@ -357,13 +357,15 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       };
       // What the lights give colour `c` of normal `normal` (Phong) or none (isotropic).
       auto shade = [&](const glm::dvec3& c, const glm::dvec3& normal, const Material& material) {
+        if (volume.Shade)
+        {
+          return ShadeVolumeSample(volume.Shading, c, normal, position, -ray.Direction, scene.Lights,
+            material, scene.TwoSidedLighting, factorOf);
+        }
         glm::dvec3 light = material.Ambient * c * scene.AmbientLight;
         for (size_t l = 0; l < scene.Lights.size(); ++l)
         {
-          const LightSample sample = scene.Lights[l].VolumeSampleAt(position);
-          const glm::dvec3 contribution = volume.Shade
-            ? PhongLight(c, normal, -ray.Direction, sample, material, scene.TwoSidedLighting)
-            : material.Diffuse * sample.Diffuse * c;
+          const glm::dvec3 contribution = material.Diffuse * scene.Lights[l].VolumeSampleAt(position).Diffuse * c;
           if (contribution != glm::dvec3(0.0))
           {
             light += contribution * factorOf(l);
@@ -395,7 +397,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
           if (c.a > 0.0 && volume.Components->Weights[i] > 0.0)
           {
             const glm::dvec3 normal =
-              NormalFromGradient(volume.Components->Grid(grid, i).WorldGradient(index, volume.Sampling));
+              volume.Shading.Normal(volume.Components->Grid(grid, i).IndexGradient(index, volume.Sampling));
             c = glm::dvec4(shade(glm::dvec3(c), normal, volume.Components->Materials[static_cast<size_t>(i)]), c.a);
           }
         }
@@ -404,7 +406,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       else
       {
         const glm::dvec3 normal =
-          volume.Shade ? NormalFromGradient(grid.WorldGradient(index, volume.Sampling)) : glm::dvec3(0.0);
+          volume.Shade ? volume.Shading.Normal(grid.IndexGradient(index, volume.Sampling)) : glm::dvec3(0.0);
         color = shade(color, normal, volume.Surface);
       }
       termColor = glm::clamp(term, 0.0, 1.0);

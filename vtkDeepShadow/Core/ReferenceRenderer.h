@@ -7,7 +7,7 @@
 // composited front to back, and the volumes blended over the background in scene order.
 //
 // Lighting: a shaded volume is Phong-lit (ambient + per light diffuse and specular of the
-// gradient normal); an unshaded volume with a shadow technique scatters light isotropically
+// gradient normal, in the volume's VolumeShading: VTK's or Blinn-Phong); an unshaded volume with a shadow technique scatters light isotropically
 // (ambient + per light diffuse without the normal), so that it can receive shadows; an
 // unshaded volume without shadows just emits its colour. Each light's diffuse and specular
 // part is multiplied by its visibility 1 - ShadowAttenuation * (1 - V(p)), per colour
@@ -46,6 +46,7 @@
 #include "Core/EmptySpace.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
+#include "Core/VolumeShading.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <glm/vec4.hpp>
@@ -64,6 +65,8 @@ struct VolumeInstance
   TransferFunction Transfer;
   Material Surface;
   bool Shade = false;
+  /** How the lights shade it when Shade (VTK's shading or Blinn-Phong, VolumeShading.h). */
+  VolumeShading Shading;
   Interpolation Sampling = Interpolation::Linear;
   /** How the volume shadows itself (ShadowKind::None: not at all). */
   ShadowParameters Shadows;

@@ -1,5 +1,6 @@
-// VTK objects -> Core: inputs and their checks, placement, bounds, lights, camera. How a
-// volume looks (its property and blend mode) is in CoreAdapterAppearance.cxx.
+// VTK objects -> Core: inputs and their checks, placement, bounds, camera. How a volume looks
+// (its property and blend mode) is in CoreAdapterAppearance.cxx, how it is lit in
+// CoreAdapterLighting.cxx.
 #include "CoreAdapter.h"
 
 #include "Core/Geometry/PolygonTriangulation.h"
@@ -9,8 +10,6 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -22,7 +21,6 @@
 #include "vtkVolumeMapper.h"
 
 #include <glm/common.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -63,11 +61,11 @@ bool IsSupportedType(int type)
       return false;
   }
 }
+}
 
 glm::dvec3 ToGlm3(const double v[3])
 {
   return { v[0], v[1], v[2] };
-}
 }
 
 glm::dmat4 ToGlm(const vtkMatrix4x4* matrix)
@@ -284,37 +282,6 @@ std::string CheckVolumePlacement(const glm::dmat4& indexToWorld, const glm::ivec
   return std::string();
 }
 
-std::string CheckLights(const std::vector<Light>& lights)
-{
-  for (size_t i = 0; i < lights.size(); ++i)
-  {
-    const Light& light = lights[i];
-    const glm::dvec3 p = light.Position, f = light.FocalPoint;
-    const std::string name = "light " + std::to_string(i);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(f.x) ||
-      !std::isfinite(f.y) || !std::isfinite(f.z))
-    {
-      return name + "'s position or focal point is not finite";
-    }
-    const glm::dvec3 d = p - f;
-    if (!light.Positional &&
-      (p == f || !std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)))
-    {
-      return name + " is directional and its position minus its focal point is " +
-        (p == f ? "zero" : "not finite") + ": it has no direction";
-    }
-    const double farthest = std::max({ std::abs(p.x), std::abs(p.y), std::abs(p.z) });
-    if (light.Positional && farthest > MaxLightCoordinate)
-    {
-      std::ostringstream why;
-      why << name << " is positional at " << farthest << " world units; single-precision GPU "
-          << "lighting needs at most " << MaxLightCoordinate << " (make it directional)";
-      return why.str();
-    }
-  }
-  return std::string();
-}
-
 glm::dmat4 IndexToWorld(vtkImageData* image, const vtkMatrix4x4* propMatrix)
 {
   vtkNew<vtkMatrix4x4> indexToPhysical;
@@ -480,120 +447,6 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
   material.Shading.Specular = property->GetSpecular();
   material.Shading.SpecularPower = property->GetSpecularPower();
   return material;
-}
-
-std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
-{
-  std::vector<Light> lights;
-  if (truncated)
-  {
-    *truncated = false;
-  }
-  vtkLightCollection* collection = renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
-    {
-      continue;
-    }
-    if (static_cast<int>(lights.size()) == MaxLights)
-    {
-      if (truncated)
-      {
-        *truncated = true;
-      }
-      break;
-    }
-    Light l;
-    l.Positional = light->GetPositional() != 0;
-    double position[3], focal[3];
-    light->GetTransformedPosition(position);
-    light->GetTransformedFocalPoint(focal);
-    l.Position = ToGlm3(position);
-    l.FocalPoint = ToGlm3(focal);
-    if (!l.Positional)
-    {
-      // Only the direction matters: one unit from the focal point, normalised after scaling
-      // by the largest component, so that 1e308 does not overflow to an infinite length.
-      const glm::dvec3 d = l.Position - l.FocalPoint;
-      const double largest = std::max({ std::abs(d.x), std::abs(d.y), std::abs(d.z) });
-      if (std::isfinite(largest) && largest > 0.0)
-      {
-        l.Position = l.FocalPoint + glm::normalize(d / largest);
-      }
-    }
-    l.Diffuse = ToGlm3(light->GetDiffuseColor()) * light->GetIntensity();
-    l.Specular = ToGlm3(light->GetSpecularColor()) * light->GetIntensity();
-    l.Attenuation = ToGlm3(light->GetAttenuationValues());
-    l.ConeAngle = light->GetConeAngle();
-    l.Exponent = light->GetExponent();
-    l.ShadowAttenuation = light->GetShadowAttenuation();
-    l.Eye = ToGlm3(position);
-    l.ShadedFromEye = light->LightTypeIsHeadlight() && light->GetIntensity() == 1.0;
-    lights.push_back(l);
-  }
-  // VTK's mappers treat a lone headlight of intensity 1 as their simplest lighting; the
-  // volume mapper then shades it from the eye (Light::ShadedFromEye).
-  int switchedOn = 0;
-  collection->InitTraversal(it);
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    switchedOn += light->GetSwitch() ? 1 : 0;
-  }
-  if (switchedOn != 1 || lights.size() != 1)
-  {
-    for (Light& light : lights)
-    {
-      light.ShadedFromEye = false;
-    }
-  }
-  return lights;
-}
-
-std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light> lights, const KeyLight& key)
-{
-  int switchedOn = 0, headlights = 0;
-  vtkCollectionSimpleIterator it;
-  vtkLightCollection* collection = renderer->GetLights();
-  collection->InitTraversal(it);
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    switchedOn += light->GetSwitch() ? 1 : 0;
-    headlights += light->GetSwitch() && light->LightTypeIsHeadlight() ? 1 : 0;
-  }
-  if (switchedOn != 1 || headlights != 1 || lights.size() != 1)
-  {
-    return lights;
-  }
-  // The camera's frame: forward (camera to focal point), up, right.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double position[3], focal[3], up[3];
-  camera->GetPosition(position);
-  camera->GetFocalPoint(focal);
-  camera->GetViewUp(up);
-  const glm::dvec3 forward = glm::normalize(ToGlm3(focal) - ToGlm3(position));
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, ToGlm3(up)));
-  const glm::dvec3 upward = glm::cross(right, forward);
-  const double e = glm::radians(key.Elevation), a = glm::radians(key.Azimuth);
-  const glm::dvec3 towardsLight =
-    std::cos(e) * std::sin(a) * right + std::sin(e) * upward - std::cos(e) * std::cos(a) * forward;
-  const Light head = lights.front();
-  Light keyLight = head;
-  keyLight.Positional = false;
-  keyLight.FocalPoint = ToGlm3(focal);
-  keyLight.Position = keyLight.FocalPoint + towardsLight;
-  keyLight.Diffuse = head.Diffuse * key.KeyIntensity;
-  keyLight.Specular = head.Specular * key.KeyIntensity;
-  keyLight.ConeAngle = 180.0;
-  keyLight.ShadedFromEye = false;
-  Light fill = head;
-  fill.Diffuse = head.Diffuse * key.FillIntensity;
-  fill.Specular = head.Specular * key.FillIntensity;
-  fill.ShadowAttenuation = 0.0;
-  fill.ShadedFromEye = false;
-  return { keyLight, fill };
 }
 
 Camera MakeCamera(vtkRenderer* renderer)

@@ -14,6 +14,7 @@
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
+#include "Core/VolumeShading.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -29,6 +30,7 @@ class vtkMatrix4x4;
 class vtkPolyData;
 class vtkProperty;
 class vtkRenderer;
+class vtkVolume;
 class vtkVolumeMapper;
 class vtkVolumeProperty;
 
@@ -192,9 +194,32 @@ struct KeyLight
 
 /**
  * `lights` (MakeLights) with a lone headlight replaced as KeyLight says, seen from the
- * renderer's camera; the same lights otherwise.
+ * renderer's camera (`replaced` set); the same lights otherwise.
  */
-std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light> lights, const KeyLight& key = KeyLight());
+std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light> lights,
+  const KeyLight& key = KeyLight(), bool* replaced = nullptr);
+
+/**
+ * VTK 9.1's lighting path for the renderer's lights, as vtkOpenGLGPUVolumeRayCastMapper picks
+ * its "lighting complexity" (every light of the collection is looked at, on or off):
+ * VTKHeadlight for one light on that is a headlight of intensity 1, VTKPositional when a light
+ * is positional, VTKDirectional otherwise; BlinnPhong when no light is on.
+ */
+ShadingPath VTKLightingPath(vtkRenderer* renderer);
+
+/**
+ * How `volume`'s shaded samples are lit (Core/VolumeShading.h) under `model`, VTK's on `path`
+ * (VTKLightingPath, or the path a mapper reached): `drawn` is the image the ray caster
+ * samples, `indexToWorld` its placement, `input` the mapper's input (the box VTK's texture
+ * spans), `keyLit` whether KeyForLoneHeadlight replaced the lights. Under VTK's model,
+ * `lights` are shaded from the eye exactly when VTK's headlight path is taken.
+ */
+VolumeShading MakeVolumeShading(vtkRenderer* renderer, vtkVolume* volume, vtkImageData* drawn,
+  vtkImageData* input, const glm::dmat4& indexToWorld, ShadingModel model, ShadingPath path, bool keyLit,
+  std::vector<Light>& lights);
+
+/** {v[0], v[1], v[2]}. */
+glm::dvec3 ToGlm3(const double v[3]);
 
 /** The renderer's active camera over its (tiled) viewport. */
 Camera MakeCamera(vtkRenderer* renderer);

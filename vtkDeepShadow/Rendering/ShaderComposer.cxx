@@ -100,6 +100,11 @@ ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices)
   return WithDefines("TranslucentLayers", vtkDeepShadowFeatureTranslucentLayers, defines);
 }
 
+ShaderFeature VTKShadingShaderFeature(int path)
+{
+  return WithDefines("VTKShading", vtkDeepShadowFeatureVTKShading, "#define VTK_SHADING_PATH " + std::to_string(path));
+}
+
 ShaderFeature VolumeSegmentsShaderFeature(int segments)
 {
   std::string outputs = "#define SEGMENT_OUTPUTS";

@@ -48,6 +48,8 @@ ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart);
  */
 ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices);
 
+/** The VTKShading feature for VTK's lighting path `path` (1 to 3, VTK_SHADING_PATH). */
+ShaderFeature VTKShadingShaderFeature(int path);
 /** The VolumeSegments feature: the march written as `segments` pieces (Rendering/Translucency). */
 ShaderFeature VolumeSegmentsShaderFeature(int segments);
 

@@ -66,8 +66,9 @@ deepshadow::Scene MakeSceneFrame(vtkRenderer* renderer)
 // One visible volume as the reference renders it: its grid, transfer, material, technique
 // parameters and bound, as the GPU mapper builds them. False, with `error`, when the data or
 // the bound cannot be converted.
-bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replaceNonFinite,
-  bool groundTruth, deepshadow::VolumeInstance& instance, std::string& error)
+bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMapper* mapper,
+  bool replaceNonFinite, bool groundTruth, bool keyLit, std::vector<deepshadow::Light>& lights,
+  deepshadow::VolumeInstance& instance, std::string& error)
 {
   // The array the mapper selects, as its point scalars (cell scalars resampled as drawn).
   deepshadow::DrawnScalars drawn;
@@ -119,6 +120,14 @@ bool MakeVolumeInstance(vtkVolume* volume, vtkVolumeMapper* mapper, bool replace
   instance.Projection = several ? deepshadow::ProjectionSettings() : adapter::MakeProjection(mapper, grid->GetRange());
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
+  // Shaded as the mapper shades: VTK's mapper, and ours by default, as VTK 9.1 does.
+  // (The path VTK's mapper would reach, or the one ours has: VTK's never goes back.)
+  const bool blinnPhong = ours && ours->GetShadingModel() == vtkDeepShadowVolumeMapper::BLINN_PHONG_SHADING;
+  const int path = std::max(static_cast<int>(adapter::VTKLightingPath(renderer)), ours ? ours->GetVTKLightingComplexity() : 0);
+  instance.Shading = adapter::MakeVolumeShading(renderer, volume, image,
+    vtkImageData::SafeDownCast(mapper->GetDataSetInput()), grid->GetIndexToWorld(),
+    blinnPhong ? deepshadow::ShadingModel::BlinnPhong : deepshadow::ShadingModel::VTK,
+    static_cast<deepshadow::ShadingPath>(path), keyLit, lights);
   instance.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(mapper, property);
   auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
   if (vtkImageData* mask = gpuMapper && !several ? adapter::UsableMask(gpuMapper, image) : nullptr)
@@ -246,6 +255,18 @@ bool vtkDeepShadowReferenceRenderer::Render(
   deepshadow::MarchSettings settings;
   vtkVolumeCollection* volumes = renderer->GetVolumes();
   vtkCollectionSimpleIterator it;
+  // Lit as the GPU mapper lights it: a lone headlight becomes a key and a fill.
+  bool keyLit = false;
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(volume->GetMapper());
+    if (volume->GetVisibility() && ours && ours->GetShadowTechnique() && ours->GetHeadlightKeyLight())
+    {
+      scene.Lights = adapter::KeyForLoneHeadlight(renderer, scene.Lights, adapter::KeyLight(), &keyLit);
+      break;
+    }
+  }
   volumes->InitTraversal(it);
   while (vtkVolume* volume = volumes->GetNextVolume(it))
   {
@@ -260,8 +281,8 @@ bool vtkDeepShadowReferenceRenderer::Render(
     }
     std::string error;
     deepshadow::VolumeInstance instance;
-    if (!MakeVolumeInstance(volume, mapper, this->ReplaceNonFiniteScalars,
-          this->Shadows == GroundTruthShadows, instance, error))
+    if (!MakeVolumeInstance(renderer, volume, mapper, this->ReplaceNonFiniteScalars,
+          this->Shadows == GroundTruthShadows, keyLit, scene.Lights, instance, error))
     {
       this->LastError = error;
       vtkErrorMacro(<< error);
@@ -271,11 +292,6 @@ bool vtkDeepShadowReferenceRenderer::Render(
     if (auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper))
     {
       TakeMapperSettings(ours, this->GpuTwin, scene.Volumes.size(), sampleDistance, settings);
-      // Lit as the GPU mapper lights it: a lone headlight becomes a key and a fill.
-      if (ours->GetShadowTechnique() && ours->GetHeadlightKeyLight())
-      {
-        scene.Lights = adapter::KeyForLoneHeadlight(renderer, scene.Lights);
-      }
     }
   }
   std::vector<deepshadow::SurfaceMesh> drawn, casting;

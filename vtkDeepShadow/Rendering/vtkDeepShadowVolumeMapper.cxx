@@ -513,10 +513,21 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   deepshadow::ShadowContext& context = frame.Context;
   bool truncated = false;
   context.Lights = frame.Lit ? adapter::MakeLights(frame.Renderer, &truncated) : std::vector<deepshadow::Light>();
+  bool keyLit = false;
   if (this->ShadowTechnique && this->HeadlightKeyLight)
   {
-    context.Lights = adapter::KeyForLoneHeadlight(frame.Renderer, context.Lights);
+    context.Lights = adapter::KeyForLoneHeadlight(frame.Renderer, context.Lights, adapter::KeyLight(), &keyLit);
   }
+  // VTK 9.1's mapper raises its lighting complexity while it shades and never lowers it.
+  if (frame.Shade)
+  {
+    this->VTKLightingComplexity =
+      std::max(this->VTKLightingComplexity, static_cast<int>(adapter::VTKLightingPath(frame.Renderer)));
+  }
+  context.Shading = adapter::MakeVolumeShading(frame.Renderer, frame.Volume, this->GetImageInput(),
+    this->GetImageInput(), context.IndexToWorld,
+    this->ShadingModel == VTK_SHADING ? deepshadow::ShadingModel::VTK : deepshadow::ShadingModel::BlinnPhong,
+    static_cast<deepshadow::ShadingPath>(this->VTKLightingComplexity), keyLit, context.Lights);
   if (truncated)
   {
     vtkWarningMacro("Only the first " << adapter::MaxLights << " lights are used");
@@ -652,6 +663,9 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";
   os << indent << "ReplaceNonFiniteScalars: " << this->ReplaceNonFiniteScalars << "\n";
+  os << indent << "HeadlightKeyLight: " << this->HeadlightKeyLight << "\n";
+  os << indent << "ShadingModel: " << (this->ShadingModel == VTK_SHADING ? "VTK" : "BlinnPhong") << "\n";
+  os << indent << "VTKLightingComplexity: " << this->VTKLightingComplexity << "\n";
   os << indent << "Bounds: " << this->Impl->Bounds.size() << " (expression \"" << this->BoundExpression
      << "\")\n";
   os << indent << "OutputMode: " << (this->OutputMode == OutputShadowTerm ? "ShadowTerm" : "Color") << "\n";

@@ -162,6 +162,38 @@ public:
   vtkBooleanMacro(HeadlightKeyLight, bool);
   ///@}
 
+  enum ShadingModels
+  {
+    VTK_SHADING = 0,
+    BLINN_PHONG_SHADING = 1
+  };
+
+  ///@{
+  /**
+   * How the lights shade a volume whose property shades (ShadeOn). VTK_SHADING, the default,
+   * draws what VTK 9.1's vtkOpenGLGPUVolumeRayCastMapper draws, quirks included, so that a
+   * swapped-in mapper keeps a script's picture: under scene lights or a light kit the ambient
+   * term is Ka times the lights' ambient colours (black unless vtkLight::SetAmbientColor: a
+   * shadow is then black), the normal leans towards the volume's long axes, the specular
+   * highlight is VTK's (Core/VolumeShading.h lists each difference). BLINN_PHONG_SHADING
+   * lights with the gradient's true normal, the half vector normalize(L + V) and Ka x colour x
+   * the renderer's ambient light: the shading the deepshadow tool and its report use. Both
+   * have their CPU twin (vtkDeepShadowReferenceRenderer follows this setting).
+   */
+  vtkSetClampMacro(ShadingModel, int, VTK_SHADING, BLINN_PHONG_SHADING);
+  vtkGetMacro(ShadingModel, int);
+  void SetShadingModelToVTK() { this->SetShadingModel(VTK_SHADING); }
+  void SetShadingModelToBlinnPhong() { this->SetShadingModel(BLINN_PHONG_SHADING); }
+  ///@}
+
+  /**
+   * VTK 9.1's "lighting complexity" this mapper has reached while shading (0 none yet, 1 a
+   * lone headlight, 2 directional lights, 3 a positional light): the path of VTK's shading it
+   * draws. As in VTK 9.1's mapper it only grows, so a mapper that once shaded under a
+   * positional light keeps VTK's positional path when the lights change back.
+   */
+  vtkGetMacro(VTKLightingComplexity, int);
+
   ///@{
   /**
    * How the volume shadows itself (null, the default: no shadows, and no shadow code in the
@@ -356,6 +388,8 @@ protected:
   std::vector<std::string> UnsupportedSaid; // each said once
   bool ErrorThisFrame = false;
   bool HeadlightKeyLight = true;
+  int ShadingModel = VTK_SHADING;
+  int VTKLightingComplexity = 0;
 
 private:
   vtkDeepShadowVolumeMapper(const vtkDeepShadowVolumeMapper&) = delete;

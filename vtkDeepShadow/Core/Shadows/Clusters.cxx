@@ -195,7 +195,7 @@ IndexBox SurfacesBox(const SurfaceSet& surfaces, const glm::dmat4& indexToWorld)
 // Whether a sphere lies wholly outside a spot light's cone.
 bool OutsideSpot(const Light& light, const glm::dvec3& centre, double radius)
 {
-  if (!light.Positional || !(light.ConeAngle < 90.0))
+  if (!light.Positional || light.ConeCosine() < -1.0)
   {
     return false;
   }

@@ -6,6 +6,7 @@
 
 #include "GL/UniformSink.h"
 #include "Core/Light.h"
+#include "Core/VolumeShading.h"
 #include "ShaderComposer.h"
 #include "Core/Camera.h"
 #include "Core/Components.h"
@@ -139,6 +140,7 @@ struct ShadowContext
   glm::dvec2 ComponentTableMap(int c) const;
 
   std::vector<Light> Lights;      // the lights the ray caster uses, in its order
+  VolumeShading Shading;          // how they shade the volume's gradient (RayCastFrame::Shade)
   /** The centre of the camera's near plane (world): clustered maps weigh objects by it. */
   glm::dvec3 Eye{ 0.0 };
   /** The camera and viewport of the frame: resolution-matched maps build the pages its pixels need. */

@@ -105,8 +105,28 @@ bool Normals(const Frame& f)
 void BindLighting(const Frame& f, UniformSink& sink)
 {
   SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property), true);
-  sink.Set("u_indexGradientToWorld", glm::mat3(glm::transpose(glm::dmat3(f.Context.WorldToIndex))));
+  if (Normals(f))
+  {
+    const VolumeShading& shading = f.Context.Shading;
+    sink.Set("u_ambientLight", glm::vec3(shading.Ambient));
+    sink.Set("u_indexGradientToNormal", glm::mat3(shading.IndexGradientToNormal));
+  }
   sink.Set("u_gradientReach", static_cast<float>(f.Context.GradientReach));
+}
+
+// VTK's shading of a shaded volume (Core/VolumeShading.h): its path's code and frame.
+bool VTKShading(const Frame& f)
+{
+  return Normals(f) && f.Context.Shading.Path != ShadingPath::BlinnPhong;
+}
+
+void BindVTKShading(const Frame& f, UniformSink& sink)
+{
+  const VolumeShading& shading = f.Context.Shading;
+  sink.Set("u_worldToShading", glm::mat3(shading.WorldToShading));
+  sink.Set("u_eye", glm::vec3(shading.Eye));
+  sink.Set("u_mirrorCentre", glm::vec3(shading.MirrorCentre));
+  sink.Set("u_lightingTransform", glm::mat4(shading.LightingTransform));
 }
 
 void ComposeShadow(const Frame& f, ComposedFeatures& features)
@@ -191,6 +211,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "Lighting", [](const Frame& f) { return f.Lit; }, nullptr, BindLighting, nullptr },
     { "Gradient", Normals, nullptr, nullptr, nullptr },
     { "Phong", Normals, nullptr, nullptr, nullptr },
+    { "VTKShading", VTKShading,
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Runtime["VTKShading"] = VTKShadingShaderFeature(static_cast<int>(f.Context.Shading.Path));
+        features.Labels.emplace_back("VTKShading");
+      },
+      BindVTKShading, nullptr },
     { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr, nullptr, nullptr },
     { "ShadowTerm", [](const Frame& f) { return f.ShadowTerm; }, nullptr, nullptr, nullptr },
     { "Hash", [](const Frame& f) { return f.Jitter; }, nullptr, nullptr, nullptr },

@@ -1,14 +1,11 @@
-// Feature Gradient: the normal of a volume sample from its gradient (deepshadow::VolumeGrid::
-// WorldGradient is the CPU twin), shaded by Phong. A zero gradient gets ambient only.
+// Feature Gradient: the normal of a volume sample from its gradient (deepshadow::VolumeShading::
+// Normal is the CPU twin), shaded by Phong. A zero gradient gets ambient only.
 //@Dec
-uniform mat3 u_indexGradientToWorld; // transpose of the world-to-index Jacobian
-
-vec3 worldGradient(vec3 index)
-{
-  return u_indexGradientToWorld * indexGradient(index);
-}
+// The index gradient to the normal's direction (inward): the world gradient (the transpose of
+// the world-to-index Jacobian) under Blinn-Phong, VTK's own matrix under VTKShading.
+uniform mat3 u_indexGradientToNormal;
 //@Normal
-  vec3 gradient = worldGradient(index);
+  vec3 gradient = u_indexGradientToNormal * indexGradient(index);
   float gradientLength = length(gradient);
   if (gradientLength <= 0.0)
   {

@@ -1,4 +1,4 @@
-// Feature Lighting: the renderer's lights, in world space (deepshadow::Light::At and the
+// Feature Lighting: the renderer's lights, in world space (VTKShading: VTK's shading of them) (deepshadow::Light::At and the
 // lighting of deepshadow::ReferenceRenderer::MarchRay are the CPU twins). What a light does
 // at a sample comes from Gradient (Phong of the gradient normal) or Isotropic (scattering
 // without a normal, for unshaded volumes that receive shadows); Shadow scales each light by
@@ -21,6 +21,7 @@ uniform vec3 u_lightEye;                   // the eye, for it
 uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
+//DeepShadow::VTKShading::Dec
 
 // The material of what is lit: the volume's, or the component's being lit.
 vec4 lightMaterial()
@@ -37,9 +38,12 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
 {
   vec4 material = lightMaterial();
   vec3 lit = material.x * color * u_ambientLight;
+  //DeepShadow::VTKShading::Ambient
   //DeepShadow::ShadowTerm::Start
   //DeepShadow::Gradient::Normal
   //DeepShadow::MeshNormal::Normal
+  vec3 litPosition = position; // where the lights are evaluated (shadows: at position)
+  //DeepShadow::VTKShading::Start
   for (int i = 0; i < u_lightCount; ++i)
   {
     vec3 toLight = u_lightDirection[i];
@@ -47,7 +51,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
     float lightDistance = 1e30;
     if (u_lightPositional[i] != 0)
     {
-      vec3 fromLight = position - u_lightPosition[i];
+      vec3 fromLight = litPosition - u_lightPosition[i];
       lightDistance = length(fromLight);
       toLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
       attenuation = 1.0 / (u_lightAttenuation[i].x + u_lightAttenuation[i].y * lightDistance +
@@ -59,6 +63,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
       }
     }
     vec3 shadowToLight = toLight; // shadows keep the light's own direction
+    //DeepShadow::VTKShading::ShadowRay
     if (i == u_lightFromEye && position != u_lightEye)
     {
       toLight = normalize(u_lightEye - position);
@@ -68,11 +73,15 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
       continue;
     }
     vec3 contribution = vec3(0.0);
+    vec3 specularPart = vec3(0.0); // what of contribution is specular
+    bool specularLit = false;      // N.H > 0
     //DeepShadow::Phong::Surface
     //DeepShadow::Isotropic::Surface
     //DeepShadow::Shadow::Impl
+    //DeepShadow::VTKShading::Accumulate
     lit += attenuation * contribution;
   }
+  //DeepShadow::VTKShading::Finish
   //DeepShadow::ShadowTerm::Return
   return clamp(lit, 0.0, 1.0);
 }

@@ -26,6 +26,7 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
       {
         vec3 shadowFactor = 1.0 - u_shadowAttenuation[i] * (1.0 - visibility);
         contribution *= shadowFactor;
+        specularPart *= shadowFactor;
         //DeepShadow::ShadowTerm::Accumulate
       }
     }

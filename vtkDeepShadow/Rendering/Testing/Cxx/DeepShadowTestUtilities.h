@@ -393,6 +393,7 @@ struct StandardSceneView
   {
     this->Scene->SetScene(name);
     this->Scene->SetResolutionScale(scale);
+    this->Mapper->SetShadingModelToBlinnPhong(); // the scenes' own look, as the tool draws them
     this->Mapper->SetInputData(this->Scene->GetVolume());
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(this->Scene->GetVolumeProperty());
@@ -556,6 +557,9 @@ struct ShadowScene
     this->Window->SetSize(160, 160);
     this->Renderer->SetBackground(0.05, 0.05, 0.08);
     this->Window->AddRenderer(this->Renderer);
+    // Shadows are what these tests measure: lit by Blinn-Phong (VTK's shading has no ambient
+    // light under a scene light, and would draw every shadow black).
+    this->Mapper->SetShadingModelToBlinnPhong();
     this->Mapper->SetInputData(this->Data);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(this->Property);

@@ -99,6 +99,8 @@ int TestBricksShareShadows(int, char*[])
   lowerPiece->Update();
   upperPiece->Update();
   vtkNew<vtkDeepShadowVolumeMapper> lowerMapper, upperMapper;
+  lowerMapper->SetShadingModelToBlinnPhong(); // as the whole volume's: VTK's shading
+  upperMapper->SetShadingModelToBlinnPhong(); // depends on each brick's box
   lowerMapper->SetInputData(lowerPiece->GetOutput());
   upperMapper->SetInputData(upperPiece->GetOutput());
   vtkNew<vtkVolume> lower, upper;

@@ -125,6 +125,7 @@ int TestTranslucentLayers(int argc, char* argv[])
   //    merges the layers; the second is blended over the picture, as VTK does.
   {
     vtkNew<vtkDeepShadowVolumeMapper> secondMapper;
+    secondMapper->SetShadingModelToBlinnPhong(); // as the scene's
     secondMapper->SetInputData(deepshadow::testing::MakeShadowVolume(16));
     vtkNew<vtkVolume> second;
     second->SetMapper(secondMapper);

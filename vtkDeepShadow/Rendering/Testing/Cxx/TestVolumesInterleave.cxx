@@ -45,6 +45,7 @@ int TestVolumesInterleave(int argc, char* argv[])
   smokeProperty->SetColor(smokeColor);
   smokeProperty->SetScalarOpacity(smokeOpacity);
   vtkNew<vtkDeepShadowVolumeMapper> smokeMapper;
+  smokeMapper->SetShadingModelToBlinnPhong(); // as the scene's
   smokeMapper->SetInputData(deepshadow::testing::MakeSmokeVolume({ 0.0, 0.0, 10.0 }));
   vtkNew<vtkVolume> smoke;
   smoke->SetMapper(smokeMapper);

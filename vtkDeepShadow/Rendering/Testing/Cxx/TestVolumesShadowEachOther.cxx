@@ -46,6 +46,7 @@ int TestVolumesShadowEachOther(int argc, char* argv[])
   smokeProperty->SetScalarOpacity(smokeOpacity);
   smokeProperty->SetAmbient(0.3);
   vtkNew<vtkDeepShadowVolumeMapper> smokeMapper;
+  smokeMapper->SetShadingModelToBlinnPhong(); // as the scene's
   smokeMapper->SetInputData(deepshadow::testing::MakeSmokeVolume({ 25.0, 15.0, 80.0 })); // its shadow falls on the plate
   vtkNew<vtkVolume> smoke;
   smoke->SetMapper(smokeMapper);

@@ -17,6 +17,7 @@ class RodsScene:
         self.scene.SetScene(name)
         self.scene.SetResolutionScale(0.5)
         self.mapper = vtkDeepShadowVolumeMapper()
+        self.mapper.SetShadingModelToBlinnPhong()  # the scene's own look, as the tool draws it
         self.mapper.SetInputData(self.scene.GetVolume())
         self.mapper.SetShadowTechnique(technique)
         self.volume = vtkVolume()
