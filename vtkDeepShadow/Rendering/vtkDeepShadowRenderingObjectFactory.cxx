@@ -1,5 +1,6 @@
 #include "vtkDeepShadowRenderingObjectFactory.h"
 
+#include "vtkDeepShadowHeadlessInteractor.h"
 #include "vtkDeepShadowRenderWindow.h"
 #include "vtkDeepShadowVolumeMapperFactory.h"
 #include "vtkVersion.h"
@@ -16,6 +17,11 @@ vtkObject* CreateHeadlessRenderWindow()
   return vtkDeepShadowRenderWindow::New();
 }
 
+vtkObject* CreateHeadlessInteractor()
+{
+  return vtkDeepShadowHeadlessInteractor::New();
+}
+
 bool IsSet(const char* name)
 {
   const char* value = std::getenv(name);
@@ -27,6 +33,8 @@ vtkDeepShadowRenderingObjectFactory::vtkDeepShadowRenderingObjectFactory()
 {
   this->RegisterOverride("vtkRenderWindow", "vtkDeepShadowRenderWindow",
     "Headless OSMesa/EGL render window", 1, CreateHeadlessRenderWindow);
+  this->RegisterOverride("vtkRenderWindowInteractor", "vtkDeepShadowHeadlessInteractor",
+    "Interactor without an event loop: Start() renders and returns", 1, CreateHeadlessInteractor);
 }
 
 const char* vtkDeepShadowRenderingObjectFactory::GetVTKSourceVersion()
@@ -63,18 +71,21 @@ void vtkDeepShadowRenderingObjectFactory::RegisterIfHeadless()
     return;
   }
   registered = true;
-  // Switch off every earlier vtkRenderWindow override (the X11 one), then ours on.
+  // Switch off every earlier vtkRenderWindow and interactor override (the X11 ones), then
+  // ours on.
   vtkObjectFactory::SetAllEnableFlags(0, "vtkRenderWindow");
+  vtkObjectFactory::SetAllEnableFlags(0, "vtkRenderWindowInteractor");
   auto* factory = vtkDeepShadowRenderingObjectFactory::New();
   vtkObjectFactory::RegisterFactory(factory);
   factory->Delete();
   vtkObjectFactory::SetAllEnableFlags(1, "vtkRenderWindow", "vtkDeepShadowRenderWindow");
+  vtkObjectFactory::SetAllEnableFlags(1, "vtkRenderWindowInteractor", "vtkDeepShadowHeadlessInteractor");
 }
 
 void vtkDeepShadowRenderingObjectFactory::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Overrides vtkRenderWindow: "
+  os << indent << "Overrides vtkRenderWindow and vtkRenderWindowInteractor: "
      << (ShouldOverrideRenderWindow() ? "yes" : "no") << "\n";
 }
 

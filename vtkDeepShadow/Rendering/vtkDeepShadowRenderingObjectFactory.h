@@ -1,11 +1,12 @@
 /**
  * @class   vtkDeepShadowRenderingObjectFactory
- * @brief   Makes `vtkRenderWindow::New()` return a vtkDeepShadowRenderWindow when headless.
+ * @brief   Makes `vtkRenderWindow::New()` return a vtkDeepShadowRenderWindow when headless,
+ *          and `vtkRenderWindowInteractor::New()` a vtkDeepShadowHeadlessInteractor.
  *
  * Registered by VTK's module auto-initialisation when a program links DeepShadow::Rendering.
  * Policy (ShouldOverrideRenderWindow): VTK_DEEPSHADOW_HEADLESS=1 always, =0 never; unset:
  * when neither DISPLAY nor WAYLAND_DISPLAY is set. When it overrides, it also disables the
- * X11 window's override so that the headless window wins whatever the registration order.
+ * X11 window's and interactor's overrides so that ours win whatever the registration order.
  */
 #ifndef vtkDeepShadowRenderingObjectFactory_h
 #define vtkDeepShadowRenderingObjectFactory_h
