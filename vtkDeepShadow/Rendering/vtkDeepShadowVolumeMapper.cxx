@@ -18,6 +18,8 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkOpenGLUniforms.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkPolyData.h"
@@ -395,6 +397,13 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     deepshadow::UnsupportedSettings(this, input, impl.Drawn.FromCells(),
       1 + static_cast<int>(impl.Drawn.GetOtherComponents().size()), property, volume->GetMatrix(),
       this->ShadowTechnique != nullptr);
+  // A vtkShaderProperty's fragment code, where our shader has its place (or refused, said).
+  impl.UserCode = deepshadow::ReadUserShaderCode(volume);
+  if (!impl.UserCode.Refusal.empty())
+  {
+    this->Unsupported.push_back(impl.UserCode.Refusal);
+  }
+  frame.UserCode = impl.UserCode.Empty() || !impl.UserCode.Refusal.empty() ? nullptr : &impl.UserCode;
   // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
   const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
   for (const std::string& setting : this->Unsupported)
@@ -474,7 +483,8 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   // A projection counts clear samples too: nothing is skipped for being transparent; an
   // isosurface's crossings lie in clear blocks as well.
   // The block map knows component 0's opacity only.
-  context.Occupancy = !projection && !isosurface && !several && this->EmptySpaceSkipping &&
+  // (A vtkShaderProperty's code runs at every sample, as in VTK's mapper: nothing skipped.)
+  context.Occupancy = !projection && !isosurface && !several && !frame.UserCode && this->EmptySpaceSkipping &&
       impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()
     : nullptr;
@@ -624,6 +634,15 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   // Each feature's uniforms and textures, then the back faces of the box.
   deepshadow::UniformSink sink(program);
   deepshadow::BindVolumeFeatures(frame, sink);
+  if (frame.UserCode)
+  {
+    // The vtkShaderProperty's own uniforms, as VTK's mapper sets them.
+    auto* shaderProperty = vtkOpenGLShaderProperty::SafeDownCast(frame.Volume->GetShaderProperty());
+    if (auto* uniforms = vtkOpenGLUniforms::SafeDownCast(shaderProperty->GetFragmentCustomUniforms()))
+    {
+      uniforms->SetUniforms(program);
+    }
+  }
   std::function<void()> begin, end;
   if (frame.Segments)
   {

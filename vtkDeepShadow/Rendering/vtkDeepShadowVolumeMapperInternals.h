@@ -14,6 +14,7 @@
 #include "Volume/OccupancyTexture.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
+#include "Volume/UserShaderCode.h"
 #include "Volume/VolumeTexture.h"
 
 #include "vtkPolyData.h"
@@ -31,6 +32,8 @@ class vtkDeepShadowVolumeMapper::Internals
 public:
   // The input's selected array as the point scalars drawn (cell scalars resampled).
   deepshadow::DrawnScalars Drawn;
+  // The fragment code of the volume's vtkShaderProperty, read each frame.
+  deepshadow::UserShaderCode UserCode;
   // The GPU resources, each with its own update and release (Volume/).
   deepshadow::VolumeTexture Volume;
   deepshadow::TransferTableTexture Transfer;

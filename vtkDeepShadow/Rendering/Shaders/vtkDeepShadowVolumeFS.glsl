@@ -56,6 +56,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::TranslucentLayers::Dec
 //DeepShadow::VolumeSegments::Dec
 //DeepShadow::Projection::Dec
+//DeepShadow::UserShader::Dec
 
 void main()
 {
@@ -89,6 +90,7 @@ void main()
   //DeepShadow::VolumeSegments::Init
   //DeepShadow::Projection::Init
   //DeepShadow::Isosurface::Init
+  //DeepShadow::UserShader::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -99,6 +101,8 @@ void main()
     //DeepShadow::TranslucentLayers::Impl
     //DeepShadow::Bound::Impl
     vec3 index = indexOrigin + t * indexDirection;
+    //DeepShadow::UserShader::Impl
+    //DeepShadow::UserShader::ImplEnd
     //DeepShadow::EmptySpace::Impl
 
     float scalar = sampleScalar(index);
@@ -116,12 +120,16 @@ void main()
     vec3 color = transfer.rgb;
     //DeepShadow::Lighting::Impl
     //DeepShadow::VolumeSegments::Impl
+    //DeepShadow::UserShader::Sample
     compositeFrontToBack(accumulated, color, transfer.a);
   }
   //DeepShadow::TranslucentLayers::Exit
   //DeepShadow::VolumeSegments::Exit
   //DeepShadow::Projection::Exit
+  //DeepShadow::UserShader::Exit
+  //DeepShadow::UserShader::ExitEnd
   // Premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA), or replacing the pixel when the
   // translucent layers (and the opaque image behind them) are composited here.
   fragColor = accumulated;
+  //DeepShadow::UserShader::Output
 }

@@ -21,6 +21,7 @@ class FramebufferCopy;
 class OtherVolumeShadows;
 class TranslucentLayers;
 class VolumeSegments;
+struct UserShaderCode;
 
 struct RayCastFrame
 {
@@ -48,6 +49,7 @@ struct RayCastFrame
   const TranslucentLayers* Layers = nullptr;  // null: no translucent meshes
   VolumeSegments* Segments = nullptr;         // drawn into, not onto the screen (not with Layers)
   int SegmentGuest = 0;                       // this volume's slice of Segments
+  const UserShaderCode* UserCode = nullptr;   // a vtkShaderProperty's code taken; null: none
 };
 
 }

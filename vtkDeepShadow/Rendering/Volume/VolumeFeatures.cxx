@@ -6,9 +6,14 @@
 #include "Shadows/OtherVolumeShadows.h"
 #include "Translucency/TranslucentLayers.h"
 #include "Volume/RayCastFrame.h"
+#include "Volume/UserShaderCode.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 
 #include <glm/matrix.hpp>
 
@@ -129,6 +134,35 @@ void BindVTKShading(const Frame& f, UniformSink& sink)
   sink.Set("u_lightingTransform", glm::mat4(shading.LightingTransform));
 }
 
+// A vtkShaderProperty's code: the matrices and camera VTK's names stand for.
+void BindUserShader(const Frame& f, UniformSink& sink)
+{
+  vtkCamera* camera = f.Renderer->GetActiveCamera();
+  const glm::dmat4 view = adapter::ToGlm(camera->GetModelViewTransformMatrix());
+  const glm::dmat4 projection =
+    adapter::ToGlm(camera->GetProjectionTransformMatrix(f.Renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  const glm::dmat4 volume = adapter::ToGlm(f.Volume->GetMatrix());
+  // VTK's texture-to-dataset matrix spans the first to the last point over [0, 1]: index
+  // (Dims - 1) t, in dataset coordinates (the volume's matrix undone).
+  glm::dmat4 textureToIndex(1.0);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    textureToIndex[axis][axis] = std::max(f.Context.Dims[axis] - 1, 1);
+  }
+  const glm::dmat4 textureToDataset = glm::inverse(volume) * f.Context.IndexToWorld * textureToIndex;
+  sink.Set("in_projectionMatrix", glm::mat4(projection));
+  sink.Set("in_modelViewMatrix", glm::mat4(view));
+  sink.Set("in_inverseModelViewMatrix", glm::mat4(glm::inverse(view)));
+  sink.Set("in_volumeMatrix[0]", glm::mat4(volume));
+  sink.Set("in_inverseVolumeMatrix[0]", glm::mat4(glm::inverse(volume)));
+  sink.Set("in_textureDatasetMatrix[0]", glm::mat4(textureToDataset));
+  sink.Set("in_inverseTextureDatasetMatrix[0]", glm::mat4(glm::inverse(textureToDataset)));
+  double eye[3];
+  camera->GetPosition(eye);
+  sink.Set("in_cameraPos", glm::vec3(eye[0], eye[1], eye[2]));
+  sink.Set("u_textureSize", glm::vec3(f.Context.Dims));
+}
+
 void ComposeShadow(const Frame& f, ComposedFeatures& features)
 {
   features.Runtime["Shadow"] = ShaderFeature("Shadow", f.Technique->GetShaderFeatureSource());
@@ -211,6 +245,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "Lighting", [](const Frame& f) { return f.Lit; }, nullptr, BindLighting, nullptr },
     { "Gradient", Normals, nullptr, nullptr, nullptr },
     { "Phong", Normals, nullptr, nullptr, nullptr },
+    { "UserShader", [](const Frame& f) { return f.UserCode != nullptr; },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Runtime["UserShader"] = UserShaderFeature(*f.UserCode);
+        features.Labels.emplace_back("UserShader");
+      },
+      BindUserShader, nullptr },
     { "VTKShading", VTKShading,
       [](const Frame& f, ComposedFeatures& features) {
         features.Runtime["VTKShading"] = VTKShadingShaderFeature(static_cast<int>(f.Context.Shading.Path));
