@@ -69,7 +69,11 @@ vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
 {
   // The superclass keeps its mapper in VolumeMapper and drives it with vtkVolumeMapper's API
   // only (input, array selection, blend mode, cropping): ours takes its place.
-  this->VolumeMapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
+  auto mapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
+  // Blinn-Phong: our model of VTK's shading is VTK 9.1's, ParaView's VTK 9.2 shades otherwise,
+  // and VTK's shading depends on each rank's box (seams between the pieces of MPI ranks).
+  mapper->SetShadingModelToBlinnPhong();
+  this->VolumeMapper = mapper;
   this->Exchange = vtkSmartPointer<vtkDeepShadowMPIBrickExchange>::New();
   this->Ground = vtkSmartPointer<vtkActor>::New();
   vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;

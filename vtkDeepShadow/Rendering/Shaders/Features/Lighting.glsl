@@ -1,5 +1,5 @@
-// Feature Lighting: the renderer's lights, in world space (VTKShading: VTK's shading of them) (deepshadow::Light::At and the
-// lighting of deepshadow::ReferenceRenderer::MarchRay are the CPU twins). What a light does
+// Feature Lighting: the renderer's lights, in world space (deepshadow::Light::At and
+// deepshadow::ShadeVolumeSample are the CPU twins; VTKShading makes it VTK's). What a light does
 // at a sample comes from Gradient (Phong of the gradient normal) or Isotropic (scattering
 // without a normal, for unshaded volumes that receive shadows); Shadow scales each light by
 // its visibility. Ambient light is never shadowed.
