@@ -20,6 +20,10 @@ scene.SetScene("rods")
 mapper = vtkDeepShadowVolumeMapper()
 mapper.SetInputData(scene.GetVolume())
 mapper.SetShadowTechnique(vtkDeepShadowDeepShadowMapTechnique())  # deep shadow maps
+# Lit as the deepshadow tool lights it. The default is VTK's own volume shading (what a mapper
+# swapped into a VTK script must draw), which under a scene light has no ambient light: the
+# rods' unlit sides and their shadows would be black.
+mapper.SetShadingModelToBlinnPhong()
 
 volume = vtkVolume()
 volume.SetMapper(mapper)
