@@ -14,9 +14,11 @@
  * select, of any numeric type, those wider than 16-bit integers kept in single precision;
  * 1 to 4 components, independent or dependent, combined as VTK's mapper combines them: Core/
  * Components.h) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
- * scalar opacity unit distance, nearest or linear interpolation, and Phong shading of the
- * gradient with the renderer's lights. Honours the image's spacing, origin and direction and
- * the vtkVolume's transform. Opaque geometry already drawn ends the rays (depth buffer).
+ * scalar opacity unit distance, nearest or linear interpolation, and shading of the gradient
+ * with the renderer's lights as VTK 9.1's mapper shades it (SetShadingModel). Honours the
+ * image's spacing, origin and direction and the vtkVolume's transform, and the fragment code
+ * of its vtkShaderProperty at VTK's Base and RenderToImage tags (anything else is refused,
+ * said once). Opaque geometry already drawn ends the rays (depth buffer).
  *
  * The optical model is the one of the CPU reference (deepshadow::ReferenceRenderer): samples
  * every SampleDistance world units from the ray's entry into the volume (at the middle of
