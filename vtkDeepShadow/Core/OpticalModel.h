@@ -67,9 +67,44 @@ struct LightSample
   double Reach = 1.0;
 };
 
+/** One light's Phong parts at a point (no ambient): N.L, N.H and the light they give. */
+struct PhongParts
+{
+  double NDotL = 0.0; // |N.L| with two-sided lighting
+  double NDotH = 0.0; // |N.H| with two-sided lighting
+  glm::dvec3 Diffuse{ 0.0 };  // kd C Ld N.L where N.L > 0
+  glm::dvec3 Specular{ 0.0 }; // ks Ls (N.H)^p where N.H > 0
+};
+
+/**
+ * The Phong parts of light `light` reaching unit normal `normal` from `toLight`, with the half
+ * vector `halfway` (Blinn-Phong's, or VTK's: VolumeShading::Halfway).
+ */
+inline PhongParts PhongTerms(const glm::dvec3& color, const glm::dvec3& normal, const glm::dvec3& toLight,
+  const glm::dvec3& halfway, const LightSample& light, const Material& material, bool twoSided)
+{
+  PhongParts parts;
+  parts.NDotL = glm::dot(normal, toLight);
+  parts.NDotH = glm::dot(normal, halfway);
+  if (twoSided)
+  {
+    parts.NDotL = std::abs(parts.NDotL);
+    parts.NDotH = std::abs(parts.NDotH);
+  }
+  if (parts.NDotL > 0.0)
+  {
+    parts.Diffuse = material.Diffuse * parts.NDotL * light.Diffuse * color;
+  }
+  if (parts.NDotH > 0.0)
+  {
+    parts.Specular = material.Specular * std::pow(parts.NDotH, material.SpecularPower) * light.Specular;
+  }
+  return parts;
+}
+
 /**
  * Phong term of one light (no ambient): kd C Ld |N.L| + ks Ls |N.H|^p with two-sided
- * lighting, max(., 0) otherwise. A zero normal gives no diffuse and no specular light.
+ * lighting, max(., 0) otherwise, H = normalize(L + V). A zero normal gives no light.
  */
 inline glm::dvec3 PhongLight(const glm::dvec3& color, const glm::dvec3& normal,
   const glm::dvec3& toViewer, const LightSample& light, const Material& material, bool twoSided)
@@ -78,19 +113,9 @@ inline glm::dvec3 PhongLight(const glm::dvec3& color, const glm::dvec3& normal,
   {
     return glm::dvec3(0.0);
   }
-  const glm::dvec3 halfway = glm::normalize(light.ToLight + toViewer);
-  double nDotL = glm::dot(normal, light.ToLight);
-  double nDotH = glm::dot(normal, halfway);
-  if (twoSided)
-  {
-    nDotL = std::abs(nDotL);
-    nDotH = std::abs(nDotH);
-  }
-  nDotL = std::max(nDotL, 0.0);
-  nDotH = std::max(nDotH, 0.0);
-  const double specular = nDotH > 0.0 ? std::pow(nDotH, material.SpecularPower) : 0.0;
-  return material.Diffuse * nDotL * light.Diffuse * color +
-    material.Specular * specular * light.Specular;
+  const PhongParts parts = PhongTerms(color, normal, light.ToLight, glm::normalize(light.ToLight + toViewer),
+    light, material, twoSided);
+  return parts.Diffuse + parts.Specular;
 }
 
 /** Rays stop once accumulated opacity exceeds this (VTK's value: 1 - 1/255). */

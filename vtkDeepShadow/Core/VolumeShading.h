@@ -123,37 +123,27 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
     }
     glm::dvec3 toLight = sample.ToLight;
     const glm::dvec3 halfway = shading.Halfway(toLight, toViewer, litPosition);
-    double nDotL = glm::dot(normal, toLight);
-    double nDotH = glm::dot(normal, halfway);
-    if (twoSided)
-    {
-      nDotL = std::abs(nDotL);
-      nDotH = std::abs(nDotH);
-    }
-    if (shading.Path == ShadingPath::VTKHeadlight && nDotH < 0.0)
+    const PhongParts parts = PhongTerms(color, normal, toLight, halfway, sample, material, twoSided);
+    if (shading.Path == ShadingPath::VTKHeadlight && parts.NDotH < 0.0)
     {
       return glm::dvec3(0.0); // VTK's pow() of a negative N.H: NaN, clamped to black (Mesa)
     }
-    const glm::dvec3 diffuse = nDotL > 0.0 ? material.Diffuse * nDotL * sample.Diffuse * color : glm::dvec3(0.0);
-    const glm::dvec3 specular = nDotH > 0.0
-      ? material.Specular * std::pow(nDotH, material.SpecularPower) * sample.Specular
-      : glm::dvec3(0.0);
-    if (diffuse == glm::dvec3(0.0) && specular == glm::dvec3(0.0) && nDotH <= 0.0)
+    if (parts.Diffuse == glm::dvec3(0.0) && parts.Specular == glm::dvec3(0.0) && parts.NDotH <= 0.0)
     {
       continue;
     }
     const glm::dvec3 factor = visibility(l);
     if (shading.Path == ShadingPath::VTKDirectional)
     {
-      lit += diffuse * factor;
-      if (nDotH > 0.0)
+      lit += parts.Diffuse * factor;
+      if (parts.NDotH > 0.0)
       {
-        lastSpecular = specular * factor;
+        lastSpecular = parts.Specular * factor;
       }
     }
     else
     {
-      lit += (diffuse + specular) * factor;
+      lit += (parts.Diffuse + parts.Specular) * factor;
     }
   }
   return glm::clamp(lit + lastSpecular, 0.0, 1.0);
