@@ -50,18 +50,6 @@ bool UserShaderCode::Empty() const
     this->Output.empty() && this->Uniforms.empty() && this->Refusal.empty();
 }
 
-const std::vector<std::pair<std::string, std::string>>& UserShaderHooks()
-{
-  static const std::vector<std::pair<std::string, std::string>> hooks = {
-    { "//VTK::Base::Dec", "after our declarations" },
-    { "//VTK::Base::Init", "before the first sample" },
-    { "//VTK::Base::Impl", "at each sample, before it is looked up" },
-    { "//VTK::Base::Exit", "after the last sample, before the colour is written" },
-    { "//VTK::RenderToImage::Exit", "after the colour is written (fragOutput0)" },
-  };
-  return hooks;
-}
-
 UserShaderCode ReadUserShaderCode(vtkVolume* volume)
 {
   UserShaderCode code;
@@ -109,9 +97,9 @@ UserShaderCode ReadUserShaderCode(vtkVolume* volume)
       list += (list.empty() ? "" : ", ") + r;
     }
     std::string taken;
-    for (const auto& [tag, where] : UserShaderHooks())
+    for (const Hook& hook : Hooks())
     {
-      taken += (taken.empty() ? "" : ", ") + tag;
+      taken += (taken.empty() ? "" : ", ") + std::string(hook.Tag);
     }
     code = UserShaderCode();
     code.Refusal = "the volume's vtkShaderProperty replaces what this mapper's shader has no place for: " +

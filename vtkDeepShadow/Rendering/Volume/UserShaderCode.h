@@ -32,8 +32,5 @@ UserShaderCode ReadUserShaderCode(vtkVolume* volume);
 /** The runtime feature "UserShader" for `code` (not Empty, not refused). */
 ShaderFeature UserShaderFeature(const UserShaderCode& code);
 
-/** The VTK 9.1 fragment tags taken, and where (for the README and the error). */
-const std::vector<std::pair<std::string, std::string>>& UserShaderHooks();
-
 }
 #endif
