@@ -57,8 +57,10 @@ glm::dvec4 CombineComponents(const ComponentSet& set, const ComponentColors& col
 }
 
 ComponentLookup::ComponentLookup(
-  const ComponentSet& set, const VolumeGrid& grid, const TransferFunction& first, double tableStep, int tableSize)
+  const ComponentSet& set, const VolumeGrid& grid, const TransferFunction& first, double tableStep, int tableSize,
+  bool uncorrected)
   : Set(set)
+  , Uncorrected(uncorrected)
 {
   for (int i = 0; i < set.Count(); ++i)
   {
@@ -68,7 +70,9 @@ ComponentLookup::ComponentLookup(
     this->Functions.push_back(function);
     if (tableSize > 0)
     {
-      this->Tables.push_back(TransferTable::Sample(*function, range.x, range.y, tableSize, tableStep));
+      // A step of one unit distance corrects nothing.
+      this->Tables.push_back(TransferTable::Sample(
+        *function, range.x, range.y, tableSize, uncorrected ? function->OpacityUnitDistance : tableStep));
     }
   }
 }
@@ -89,7 +93,9 @@ ComponentColors ComponentLookup::Colors(const glm::dvec4& values, double step) c
     else
     {
       const TransferFunction& f = *this->Functions[c];
-      colors[c] = glm::dvec4(f.Color(value), CorrectOpacity(f.Opacity.Evaluate(value), step, f.OpacityUnitDistance));
+      const double opacity = f.Opacity.Evaluate(value);
+      colors[c] = glm::dvec4(
+        f.Color(value), this->Uncorrected ? opacity : CorrectOpacity(opacity, step, f.OpacityUnitDistance));
     }
   }
   return colors;

@@ -85,13 +85,14 @@ inline double RGBAOpacityValue(const ComponentSet& set, double value, const glm:
  * Each component's colour and opacity at its value, opacity corrected for a step: through a
  * table per component of `tableSize` texels sampled for `tableStep` (the GPU twin), or the
  * functions themselves (tableSize 0) for the step asked. The first component uses `first`
- * (the volume's drawn or casting function), the others the set's.
+ * (the volume's drawn or casting function), the others the set's. `uncorrected`: each
+ * opacity as its function gives it, whatever the step (the projections but additive).
  */
 class VTKDEEPSHADOWCORE_EXPORT ComponentLookup
 {
 public:
   ComponentLookup(const ComponentSet& set, const VolumeGrid& grid, const TransferFunction& first,
-    double tableStep, int tableSize);
+    double tableStep, int tableSize, bool uncorrected = false);
 
   /** `step`: the exact functions' (tables keep theirs). */
   ComponentColors Colors(const glm::dvec4& values, double step) const;
@@ -101,12 +102,15 @@ public:
     return CombineComponents(this->Set, this->Colors(values, step), values);
   }
   const ComponentSet& GetSet() const { return this->Set; }
+  /** Component `c`'s finite data range (its table spans it). */
+  const glm::dvec2& GetRange(int c) const { return this->Ranges[static_cast<size_t>(c)]; }
 
 private:
   const ComponentSet& Set;
   std::vector<const TransferFunction*> Functions;
   std::vector<TransferTable> Tables; // empty: exact
   std::array<glm::dvec2, MaxComponents> Ranges{};
+  bool Uncorrected = false;
 };
 
 }

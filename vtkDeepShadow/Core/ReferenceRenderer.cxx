@@ -112,7 +112,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   if (volume.Components)
   {
     prepared.Components = std::make_unique<ComponentLookup>(*volume.Components, *volume.Grid, volume.Transfer,
-      settings.SampleDistance, settings.TransferTableSize);
+      settings.SampleDistance, settings.TransferTableSize, projection && !volume.Projection.CorrectsOpacity());
   }
   // A projection counts transparent samples too; an isosurface's crossings lie anywhere;
   // the block map knows one component's opacity only.
@@ -183,9 +183,9 @@ namespace
 {
 // A projection blend mode along the ray: every sample inside the bound counts, transparent
 // or not, and nothing ends the march early (Features/Projection.glsl).
-glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table,
-  const glm::dvec3& indexOrigin, const glm::dvec3& indexDirection, double t0, double t1,
-  double offset, double dt, std::optional<BoundRegion::Walker>& bound)
+glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table, const ComponentLookup* components,
+  const glm::dvec3& indexOrigin, const glm::dvec3& indexDirection, double t0, double t1, double offset, double dt,
+  std::optional<BoundRegion::Walker>& bound)
 {
   auto colorOpacity = [&](double scalar) {
     if (table)
@@ -198,6 +198,11 @@ glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table,
         : opacity);
   };
   ProjectionAccumulator projection(volume.Projection);
+  std::optional<ComponentProjection> several;
+  if (components)
+  {
+    several.emplace(volume.Projection, *components, dt);
+  }
   for (long k = 0;; ++k)
   {
     const double t = t0 + (static_cast<double>(k) + offset) * dt;
@@ -213,10 +218,16 @@ glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table,
         continue;
       }
     }
-    const double scalar = volume.Grid->Sample(indexOrigin + t * indexDirection, volume.Sampling);
+    const glm::dvec3 index = indexOrigin + t * indexDirection;
+    if (several)
+    {
+      several->Add(volume.Components->Sample(*volume.Grid, index, volume.Sampling));
+      continue;
+    }
+    const double scalar = volume.Grid->Sample(index, volume.Sampling);
     projection.Add(scalar, colorOpacity(scalar).a);
   }
-  return projection.Result(colorOpacity);
+  return several ? several->Result() : projection.Result(colorOpacity);
 }
 }
 
@@ -247,7 +258,8 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   }
   if (volume.Projection.Mode != BlendMode::Composite)
   {
-    return ProjectRay(volume, table, indexOrigin, indexDirection, t0, t1, offset, dt, bound);
+    return ProjectRay(
+      volume, table, prepared.Components.get(), indexOrigin, indexDirection, t0, t1, offset, dt, bound);
   }
 
   glm::dvec4 accumulated(0.0);

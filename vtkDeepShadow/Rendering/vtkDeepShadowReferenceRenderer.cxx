@@ -117,7 +117,7 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
     instance.Components = std::move(set);
   }
   auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
-  instance.Projection = several ? deepshadow::ProjectionSettings() : adapter::MakeProjection(mapper, grid->GetRange());
+  instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
   // Shaded as the mapper shades: VTK's mapper, and ours by default, as VTK 9.1 does.

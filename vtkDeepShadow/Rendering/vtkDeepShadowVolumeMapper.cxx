@@ -433,9 +433,10 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     : vtkTextureObject::Linear;
   impl.Volume.GetTexture()->SetMinificationFilter(filter);
   impl.Volume.GetTexture()->SetMagnificationFilter(filter);
-  // Several components are drawn composite (UnsupportedSettings says so for the rest).
+  // Several components are projected, or drawn composite (UnsupportedSettings says so for
+  // isosurface and slice blending).
   const bool several = !impl.Drawn.GetOtherComponents().empty();
-  frame.Projection = several ? deepshadow::ProjectionSettings() : adapter::MakeProjection(this, impl.Volume.GetRange());
+  frame.Projection = adapter::MakeProjection(this, impl.Volume.GetRange());
   const bool projection = frame.Projection.Mode != deepshadow::BlendMode::Composite;
   frame.Context.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(this, property);
   const bool isosurface = !frame.Context.IsoValues.empty();
@@ -511,7 +512,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.Surfaces = surfaces ? &impl.SurfacesGPU.GetTextures() : nullptr;
   context.CastingSurfaces = surfaces ? impl.Surfaces.get() : nullptr;
   context.SurfacesVersion = this->SurfaceUploads;
-  if (several && !this->UpdateComponents(window, property, step, unitScale, frame))
+  if (several && !this->UpdateComponents(window, property, step, uncorrected, unitScale, frame))
   {
     return false;
   }

@@ -429,12 +429,13 @@ private:
   bool UpdateOpacityFactors(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, vtkImageData* input,
     deepshadow::RayCastFrame& frame);
   /**
-   * Components 1.. of a volume of several: their textures and tables (for the view's `step`),
-   * uploaded and rebuilt when they changed, into the frame's context; false (said) when the
-   * property cannot classify them (3 dependent components) or a component cannot be drawn.
+   * Components 1.. of a volume of several: their textures and tables (for the view's `step`,
+   * or `uncorrected`), uploaded and rebuilt when they changed, into the frame's context; false
+   * (said) when the property cannot classify them (3 dependent components) or a component
+   * cannot be drawn.
    */
   bool UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step,
-    double unitScale, deepshadow::RayCastFrame& frame);
+    bool uncorrected, double unitScale, deepshadow::RayCastFrame& frame);
 #ifndef __VTK_WRAP__
   /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
   double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);

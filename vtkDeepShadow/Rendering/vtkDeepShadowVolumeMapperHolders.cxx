@@ -205,7 +205,7 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
 }
 
 bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property,
-  double step, double unitScale, deepshadow::RayCastFrame& frame)
+  double step, bool uncorrected, double unitScale, deepshadow::RayCastFrame& frame)
 {
   Internals& impl = *this->Impl;
   const auto& others = impl.Drawn.GetOtherComponents();
@@ -241,8 +241,10 @@ bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, 
     texture.GetTexture()->SetMinificationFilter(filter);
     texture.GetTexture()->SetMagnificationFilter(filter);
     const deepshadow::TransferFunction& function = set.Transfers[c + 1];
-    // Its table: its function over its own range, for the view's step.
-    std::vector<double> key{ static_cast<double>(this->VolumeUploads), step,
+    // Its table: its function over its own range, for the view's step (uncorrected: for a
+    // step of its unit distance, which corrects nothing).
+    const double tableStep = uncorrected ? function.OpacityUnitDistance : step;
+    std::vector<double> key{ static_cast<double>(this->VolumeUploads), tableStep,
       static_cast<double>(this->TransferTableSize), texture.GetRange().x, texture.GetRange().y,
       function.OpacityUnitDistance };
     for (const deepshadow::PiecewiseLinear* f : { &function.Opacity, &function.Red, &function.Green, &function.Blue })
@@ -256,7 +258,7 @@ bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, 
     deepshadow::TransferTableTexture& table = impl.ComponentTables[c];
     if (table.NeedsUpdate(key))
     {
-      table.Update(window, function, texture.GetRange(), this->TransferTableSize, step, std::move(key));
+      table.Update(window, function, texture.GetRange(), this->TransferTableSize, tableStep, std::move(key));
       this->LastPasses.emplace_back("component-table");
     }
     deepshadow::ShadowContext::Component component;

@@ -43,11 +43,16 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
   const int blend = mapper->GetBlendMode();
   if (components > 1)
   {
-    // Several components (Core/Components.h) are drawn composite, without these.
-    if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+    // Several components (Core/Components.h) are composited or projected, without these.
+    if (blend == vtkVolumeMapper::ISOSURFACE_BLEND || blend == vtkVolumeMapper::SLICE_BLEND)
     {
-      said.push_back(std::string("several components are drawn with composite blending only: ") +
+      said.push_back(std::string("several components are drawn with composite blending or projected: ") +
         BlendModeName(blend) + " is drawn composite");
+    }
+    else if (blend != vtkVolumeMapper::COMPOSITE_BLEND && shadowed)
+    {
+      said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
+        ": it is drawn exactly, without shadows");
     }
     if (property && adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
     {

@@ -18,6 +18,8 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 namespace deepshadow
 {
@@ -80,19 +82,37 @@ void UnbindComponents(const Frame& f)
   }
 }
 
-// The projection's mode, the normalization of the shaders' scalar over the data's range, and
-// the average's scalar range in the shaders' scalar (clamped to what a float holds).
+// The normalization of a component's shaders' scalar over its data range, and the average's
+// scalar range in that scalar (clamped to what a float holds).
+std::pair<glm::vec2, glm::vec2> ProjectionMaps(
+  const glm::dvec2& dataRange, const glm::dvec2& shaderScalar, const ProjectionSettings& projection)
+{
+  const glm::dvec2 range = dataRange * shaderScalar.x + shaderScalar.y;
+  const double span = range.y > range.x ? range.y - range.x : 1.0;
+  auto toShader = [&shaderScalar](double scalar) {
+    return static_cast<float>(std::clamp(scalar * shaderScalar.x + shaderScalar.y, -3.0e38, 3.0e38));
+  };
+  return { glm::vec2(1.0 / span, -range.x / span),
+    glm::vec2(toShader(projection.AverageMin), toShader(projection.AverageMax)) };
+}
+
+// The projection's mode and maps: the volume's, and each component's for volumes of several.
 void BindProjection(const Frame& f, UniformSink& sink)
 {
   const ShadowContext& c = f.Context;
-  const glm::dvec2 range = c.ShaderRange();
-  const double span = range.y > range.x ? range.y - range.x : 1.0;
-  auto toShader = [&c](double scalar) {
-    return static_cast<float>(std::clamp(scalar * c.ShaderScalar.x + c.ShaderScalar.y, -3.0e38, 3.0e38));
-  };
   sink.Set("u_blendMode", static_cast<int>(f.Projection.Mode));
-  sink.Set("u_normalizeMap", glm::vec2(1.0 / span, -range.x / span));
-  sink.Set("u_averageRange", glm::vec2(toShader(f.Projection.AverageMin), toShader(f.Projection.AverageMax)));
+  const auto [normalize, average] = ProjectionMaps(c.Range, c.ShaderScalar, f.Projection);
+  sink.Set("u_normalizeMap", normalize);
+  sink.Set("u_averageRange", average);
+  for (size_t i = 0; i < c.OtherComponents.size() + (c.OtherComponents.empty() ? 0 : 1); ++i)
+  {
+    const auto [componentNormalize, componentAverage] = i == 0
+      ? std::make_pair(normalize, average)
+      : ProjectionMaps(c.OtherComponents[i - 1].Range, c.OtherComponents[i - 1].ShaderScalar, f.Projection);
+    const std::string index = "[" + std::to_string(i) + "]";
+    sink.Set(("u_componentNormalizeMap" + index).c_str(), componentNormalize);
+    sink.Set(("u_componentAverageRange" + index).c_str(), componentAverage);
+  }
 }
 
 // Surfaces are met by the feelers of lookups only; light-space builds have their own.

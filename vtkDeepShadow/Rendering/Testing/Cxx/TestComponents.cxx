@@ -9,8 +9,12 @@
 // 2. Shadows: the shadow scene's volume as two independent components (the ball in one, the
 //    plate and pillar in the other): every technique matches its CPU twin, and the ball's
 //    shadow darkens the floor, which lies in the other component.
-// 3. 3 dependent components are one error, and so are 5; MIP over components is drawn
-//    composite, said once.
+// 3. Projections (MIP, MinIP, average, additive) over independent and dependent components:
+//    against VTK where VTK 9.1 projects as it means to, else against closed relations (a
+//    mirrored volume's MinIP is the original's MIP; luminance + opacity of one field twice is
+//    that field's projection) and the CPU twin.
+// 4. 3 dependent components are one error, and so are 5; an isosurface over components is
+//    drawn composite, said once.
 #include "DeepShadowTestUtilities.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -94,11 +98,12 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(Mode mode, int count, bool shade
 }
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, vtkVolumeProperty* property, float step = 0.5f,
-  bool jitter = false)
+  bool jitter = false, int blend = vtkVolumeMapper::COMPOSITE_BLEND)
 {
   deepshadow::testing::ComparisonMappers mappers;
-  return deepshadow::testing::DrawForComparison(
-    window, mappers.Pick(vtks, step, jitter), data, property, { 0.1, 0.1, 0.15 }, !vtks);
+  vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
+  mapper->SetBlendMode(blend);
+  return deepshadow::testing::DrawForComparison(window, mapper, data, property, { 0.1, 0.1, 0.15 }, !vtks);
 }
 
 // Component 0 alone, as a volume of one component (what part 1 must tell apart).
@@ -111,24 +116,151 @@ vtkSmartPointer<vtkImageData> FirstComponent(vtkImageData* data)
   return first;
 }
 
-bool MatchesVTK(vtkRenderWindow* window, int count, Mode mode, bool shade, const std::string& what)
+// The volume and its functions mirrored (v -> 255 - v): a minimum of the mirror is the
+// mirror of a maximum, so its minimum intensity picture is the original's maximum one.
+vtkSmartPointer<vtkImageData> Mirrored(vtkImageData* data)
+{
+  auto mirrored = vtkSmartPointer<vtkImageData>::New();
+  mirrored->DeepCopy(data);
+  vtkDataArray* values = mirrored->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < values->GetNumberOfComponents(); ++c)
+    {
+      values->SetComponent(i, c, 255.0 - values->GetComponent(i, c));
+    }
+  return mirrored;
+}
+
+vtkSmartPointer<vtkVolumeProperty> MirroredFunctions(vtkVolumeProperty* property, int count)
+{
+  // Built afresh: DeepCopy would give the copy default gradient opacities.
+  auto mirrored = vtkSmartPointer<vtkVolumeProperty>::New();
+  mirrored->SetIndependentComponents(property->GetIndependentComponents());
+  mirrored->SetInterpolationType(property->GetInterpolationType());
+  for (int c = 0; c < count; ++c)
+  {
+    mirrored->SetComponentWeight(c, property->GetComponentWeight(c));
+    mirrored->SetShade(c, property->GetShade(c));
+  }
+  for (int c = 0; c < count; ++c)
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    vtkColorTransferFunction* from = property->GetRGBTransferFunction(c);
+    for (int n = 0; n < from->GetSize(); ++n)
+    {
+      double node[6];
+      from->GetNodeValue(n, node);
+      color->AddRGBPoint(255.0 - node[0], node[1], node[2], node[3]);
+    }
+    vtkNew<vtkPiecewiseFunction> opacity;
+    vtkPiecewiseFunction* fromOpacity = property->GetScalarOpacity(c);
+    for (int n = 0; n < fromOpacity->GetSize(); ++n)
+    {
+      double node[4];
+      fromOpacity->GetNodeValue(n, node);
+      opacity->AddPoint(255.0 - node[0], node[1]);
+    }
+    mirrored->SetColor(c, color);
+    mirrored->SetScalarOpacity(c, opacity);
+  }
+  return mirrored;
+}
+
+bool MatchesVTK(vtkRenderWindow* window, int count, Mode mode, bool shade, const std::string& what,
+  int blend = vtkVolumeMapper::COMPOSITE_BLEND, bool mirrored = false)
 {
   bool ok = true;
-  const auto data = MakeComponents(count);
-  const auto property = MakeProperty(mode, count, shade);
-  const Drawn ours = Draw(window, data, false, property);
+  auto data = MakeComponents(count);
+  auto property = MakeProperty(mode, count, shade);
+  if (mirrored)
+  {
+    // Minimum intensity: the fields and functions mirrored, so that the minimum shows.
+    data = Mirrored(data);
+    property = MirroredFunctions(property, mode == Mode::Independent || mode == Mode::Weighted ? count : 1);
+  }
+  const Drawn ours = Draw(window, data, false, property, 0.5f, false, blend);
   // Ours reads the property without adding to it: a default gradient opacity made here
   // changed VTK's picture drawn after ours (RMSE 0.044 with 4 weighted components).
   ok = Check((what + ": the property is left as it was").c_str(), !property->HasGradientOpacity(0)) && ok;
-  const Drawn vtks = Draw(window, data, true, property);
+  const Drawn vtks = Draw(window, data, true, property, 0.5f, false, blend);
   const deepshadow::testing::VTKTolerance tolerance = deepshadow::testing::CalibrateOnVTK(what, vtks.Picture,
-    [&](float scale, bool jitter) { return Draw(window, data, true, property, 0.5f * scale, jitter).Picture; });
+    [&](float scale, bool jitter) { return Draw(window, data, true, property, 0.5f * scale, jitter, blend).Picture; });
   ok = WithinTolerance(what.c_str(), ours.Picture, vtks.Picture, tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
   ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0, 0.005) && ok;
   const auto single = MakeProperty(Mode::Independent, 1, shade);
   ok = !WithinTolerance((what + ", component 0 alone (must fail)").c_str(),
-         Draw(window, FirstComponent(data), false, single).Picture, vtks.Picture, tolerance.MaxRMSE, 8.0 / 255.0,
-         tolerance.MaxFraction) && ok;
+         Draw(window, FirstComponent(data), false, single, 0.5f, false, blend).Picture, vtks.Picture,
+         tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
+  return ok;
+}
+
+// Projections of several components: against VTK's mapper where VTK 9.1 projects them as it
+// means to; where its shader slips (minimum over independent components, extremes over
+// luminance + opacity), against closed relations to pictures VTK draws right.
+bool ProjectionsMatch(vtkRenderWindow* window)
+{
+  bool ok = true;
+  ok = MatchesVTK(window, 2, Mode::Independent, false, "2 independent components, MIP",
+         vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND) && ok;
+  ok = MatchesVTK(window, 4, Mode::Weighted, false, "4 independent components, weighted, MIP",
+         vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND) && ok;
+  ok = MatchesVTK(window, 2, Mode::Independent, false, "2 independent components, average",
+         vtkVolumeMapper::AVERAGE_INTENSITY_BLEND) && ok;
+  ok = MatchesVTK(window, 4, Mode::Weighted, false, "4 independent components, weighted, additive",
+         vtkVolumeMapper::ADDITIVE_BLEND) && ok;
+  ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA), MIP",
+         vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND) && ok;
+  ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA), MinIP of the mirror",
+         vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, true) && ok;
+
+  // Minimum over independent components: the mirror's minimum is the original's maximum.
+  for (const int count : { 2, 4 })
+  {
+    const std::string what = std::to_string(count) + " independent components, MinIP of the mirror";
+    const auto data = MakeComponents(count);
+    const auto property = MakeProperty(Mode::Weighted, count, false);
+    const Drawn maximum = Draw(window, data, false, property, 0.5f, false, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND);
+    const auto mirroredProperty = MirroredFunctions(property, count);
+    const Drawn minimum = Draw(
+      window, Mirrored(data), false, mirroredProperty, 0.5f, false, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND);
+    ok = WithinTolerance((what + " vs the original's MIP").c_str(), minimum.Picture, maximum.Picture, 0.004,
+           8.0 / 255.0, 0.002) && ok;
+    ok = WithinTolerance((what + " vs CPU twin").c_str(), minimum.Picture, minimum.Twin, 1.5 / 255.0, 8.0 / 255.0,
+           0.005) && ok;
+    ok = !WithinTolerance((what + ", its MIP (must fail)").c_str(),
+           Draw(window, Mirrored(data), false, mirroredProperty, 0.5f, false,
+             vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND).Picture, maximum.Picture, 0.004, 8.0 / 255.0, 0.002) && ok;
+  }
+
+  // Luminance + opacity of one field twice: its extremes are that field's, as VTK draws one
+  // component (colour and opacity from the volume's functions).
+  for (const int blend : { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND })
+  {
+    const std::string what = std::string("luminance + opacity of one field, ") +
+      (blend == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ? "MIP" : "MinIP");
+    const bool minimum = blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND;
+    auto single = FirstComponent(MakeComponents(1));
+    auto property = MakeProperty(Mode::LuminanceAlpha, 2, false);
+    if (minimum)
+    {
+      single = Mirrored(single);
+      property = MirroredFunctions(property, 1);
+    }
+    auto twice = vtkSmartPointer<vtkImageData>::New();
+    twice->CopyStructure(single);
+    twice->AllocateScalars(VTK_UNSIGNED_CHAR, 2);
+    twice->GetPointData()->GetScalars()->CopyComponent(0, single->GetPointData()->GetScalars(), 0);
+    twice->GetPointData()->GetScalars()->CopyComponent(1, single->GetPointData()->GetScalars(), 0);
+    const Drawn ours = Draw(window, twice, false, property, 0.5f, false, blend);
+    auto oneComponent = vtkSmartPointer<vtkVolumeProperty>::New();
+    oneComponent->DeepCopy(property);
+    oneComponent->SetIndependentComponents(true);
+    const Drawn vtks = Draw(window, single, true, oneComponent, 0.5f, false, blend);
+    ok = WithinTolerance((what + " vs VTK's one component").c_str(), ours.Picture, vtks.Picture, 0.01, 8.0 / 255.0,
+           0.01) && ok;
+    ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0, 0.005) &&
+      ok;
+  }
   return ok;
 }
 }
@@ -143,6 +275,7 @@ int TestComponents(int, char*[])
   ok = MatchesVTK(window, 4, Mode::Weighted, true, "4 independent components, weighted, shaded") && ok;
   ok = MatchesVTK(window, 2, Mode::LuminanceAlpha, true, "2 dependent components (luminance, opacity)") && ok;
   ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA)") && ok;
+  ok = ProjectionsMatch(window) && ok;
 
   // Shadows: the ball (200) in component 0, the plate and pillar in component 1.
   deepshadow::testing::ShadowScene scene;
@@ -190,7 +323,7 @@ int TestComponents(int, char*[])
     five->AllocateScalars(VTK_UNSIGNED_CHAR, 5);
     return says(five, true, "5 components; at most 4");
   }()) && ok;
-  scene.Mapper->SetBlendModeToMaximumIntensity();
-  ok = Check("MIP with components: drawn composite, said", says(scene.Data, true, "drawn composite")) && ok;
+  scene.Mapper->SetBlendModeToIsoSurface();
+  ok = Check("isosurface with components: drawn composite, said", says(scene.Data, true, "drawn composite")) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
