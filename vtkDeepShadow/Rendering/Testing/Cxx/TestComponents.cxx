@@ -301,7 +301,7 @@ int TestComponents(int, char*[])
   ok = scene.DeepShadowDarkensFloor("the ball (component 0) over the floor (component 1)") && ok;
   ok = Check("composed with Components", deepshadow::testing::HasFeature(scene.Mapper, "Components")) && ok;
 
-  // What is not drawn is said: 3 dependent components, 5 components; MIP drawn composite.
+  // What is not drawn is said: 3 dependent components, 5 components; an isosurface drawn composite.
   auto says = [&](vtkImageData* data, bool independent, const std::string& needle) {
     vtkNew<deepshadow::testing::MessageCapture> capture;
     capture->Watch(scene.Mapper);
