@@ -109,14 +109,24 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
       range.x, range.y, settings.TransferTableSize,
       uncorrected ? volume.Transfer.OpacityUnitDistance : settings.SampleDistance));
   }
+  if (volume.Labels && settings.TransferTableSize > 0)
+  {
+    // Each label's function over the volume's range, uncorrected (a step of its unit distance).
+    prepared.LabelTables = std::make_unique<std::vector<TransferTable>>();
+    for (const TransferFunction& function : volume.Labels->Functions)
+    {
+      prepared.LabelTables->push_back(TransferTable::Sample(
+        function, range.x, range.y, settings.TransferTableSize, function.OpacityUnitDistance));
+    }
+  }
   if (volume.Components)
   {
     prepared.Components = std::make_unique<ComponentLookup>(*volume.Components, *volume.Grid, volume.Transfer,
       settings.SampleDistance, settings.TransferTableSize, projection && !volume.Projection.CorrectsOpacity());
   }
   // A projection counts transparent samples too; an isosurface's crossings lie anywhere;
-  // the block map knows one component's opacity only.
-  if (settings.EmptySpaceSkipping && !projection && !isosurface && !volume.Components)
+  // the block map knows one component's opacity only, and not the labels'.
+  if (settings.EmptySpaceSkipping && !projection && !isosurface && !volume.Components && !volume.Labels)
   {
     prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
   }
@@ -136,9 +146,12 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.IsoValues = isosurface ? &volume.IsoValues : nullptr;
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   caster.Mask = volume.Mask.get();
+  caster.Labels = volume.Labels.get();
+  caster.LabelStep = settings.SampleDistance;
+  caster.LabelTables = prepared.LabelTables.get();
   caster.Eye = scene.View.Unproject(0.5 * scene.View.GetWidth(), 0.5 * scene.View.GetHeight(), 0.0);
   caster.View = &scene.View;
-  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components)
+  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components && !volume.Labels)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
     caster.Empty = prepared.ShadowEmpty.get();
@@ -331,7 +344,20 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
       alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
     }
-    alpha *= MaskFactor(volume.Mask.get(), index);
+    glm::dvec3 unlit(0.0); // a label map's colour added unlit (Mask.h)
+    if (volume.Labels)
+    {
+      const LabelledSample labelled = volume.Labels->Apply(glm::dvec4(color, alpha), scalar,
+        volume.Labels->LabelOf(volume.Mask->Sample(index, Interpolation::Nearest)), 1.0,
+        prepared.LabelTables.get());
+      color = glm::dvec3(labelled.Lit);
+      alpha = labelled.Lit.a;
+      unlit = labelled.Unlit;
+    }
+    else
+    {
+      alpha *= MaskFactor(volume.Mask.get(), index);
+    }
     if (volume.Gradient && alpha > 0.0)
     {
       alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);
@@ -422,6 +448,10 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
         color = shade(color, normal, volume.Surface);
       }
       termColor = glm::clamp(term, 0.0, 1.0);
+    }
+    if (!termOnly)
+    {
+      color += unlit;
     }
     if (shadowTerm)
     {

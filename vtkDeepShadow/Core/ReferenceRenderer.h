@@ -88,6 +88,8 @@ struct VolumeInstance
   std::optional<GradientOpacity> Gradient;
   /** A binary mask (Mask.h) of the grid's dimensions, or null; what it clears neither shows nor casts. */
   std::shared_ptr<const VolumeGrid> Mask;
+  /** With Mask: Mask is a label map (Mask.h), whose labels' colours and opacities show and cast. */
+  std::shared_ptr<const LabelMap> Labels;
   /** Several components per voxel (Components.h; composite only): Grid is component 0. */
   std::optional<ComponentSet> Components;
 };
@@ -191,6 +193,8 @@ public:
     std::unique_ptr<TransferTable> FeelerTable; // GPU twin with shadows only
     std::unique_ptr<ComponentLookup> Components;       // several components: the view's step
     std::unique_ptr<ComponentLookup> FeelerComponents; // and the light rays'
+    // GPU twin with a label map: label k's table at [k - 1] (held apart: casters point at it)
+    std::unique_ptr<std::vector<TransferTable>> LabelTables;
     std::unique_ptr<EmptySpaceMap> Empty;       // blocks rays may skip (exact)
     std::unique_ptr<EmptySpaceMap> ShadowEmpty; // the same for a separate shadow transfer
     std::vector<std::unique_ptr<LightShadow>> Shadows; // per scene light; null: no shadow

@@ -71,9 +71,14 @@ glm::ivec3 ShadowVolumeDims(const glm::ivec3& dataDims, int size)
 
 CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) const
 {
-  const double kept = MaskFactor(this->Mask, index);
+  // A label map keeps every sample (its label decides how it casts); a binary mask clears.
+  const double kept = this->Labels ? 1.0 : MaskFactor(this->Mask, index);
   CastSample sample(crossings.Next(this->Grid->Sample(index, this->Sampling)),
     kept * (this->Gradient && kept > 0.0 ? this->Gradient->Factor(*this->Grid, index, this->Sampling) : 1.0));
+  if (this->Labels)
+  {
+    sample.Label = this->Labels->LabelOf(this->Mask->Sample(index, Interpolation::Nearest));
+  }
   if (this->Components)
   {
     sample.Values = this->Components->GetSet().Sample(*this->Grid, index, this->Sampling);
@@ -103,6 +108,10 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
                                       : glm::dvec4(this->Transfer->Color(scalar),
                                           CorrectOpacity(this->Transfer->Opacity.Evaluate(scalar), step,
                                             this->Transfer->OpacityUnitDistance));
+  if (this->Labels)
+  {
+    rgba = this->Labels->Apply(rgba, scalar, sample.Label, step / this->LabelStep, this->LabelTables).Whole();
+  }
   rgba.a *= sample.OpacityScale;
   return rgba;
 }
@@ -124,9 +133,10 @@ bool ShadowCaster::AboveThreshold(const CastSample& sample, double step, const S
     const double width = range.y > range.x ? range.y - range.x : 1.0;
     return (scalar - range.x) / width > parameters.Threshold;
   }
-  if (this->Components)
+  if (this->Components || (this->Labels && sample.Label > 0))
   {
-    // The sample's combined opacity, corrected for the step: against the corrected threshold.
+    // The sample's combined (or labelled) opacity, corrected for the step: against the
+    // corrected threshold.
     return this->Sample(sample, step).a >
       CorrectOpacity(parameters.Threshold, step, this->Transfer->OpacityUnitDistance);
   }

@@ -42,6 +42,7 @@ class BoundRegion;
 class Camera;
 class ComponentLookup;
 class IsoCrossings;
+struct LabelMap;
 class SurfaceSet;
 struct GradientOpacity;
 
@@ -185,6 +186,7 @@ struct CastSample
   double Scalar;
   double OpacityScale;
   glm::dvec4 Values{ 0.0 }; // every component's value (Components.h), when there are several
+  int Label = 0;            // its label under a label map (Mask.h)
 };
 
 /** A box in a volume's continuous index space, corners included. */
@@ -223,6 +225,13 @@ struct ShadowCaster
   const GradientOpacity* Gradient = nullptr;
   /** Optional: a binary mask (Mask.h, the data's dimensions); what it clears casts nothing. */
   const VolumeGrid* Mask = nullptr;
+  /**
+   * Optional, with Mask: Mask is a label map, whose labels' colours and opacities cast (from
+   * LabelTables, GPU twin, or the functions), their opacities holding for a step of LabelStep.
+   */
+  const LabelMap* Labels = nullptr;
+  const std::vector<TransferTable>* LabelTables = nullptr;
+  double LabelStep = 1.0;
   /** Several components (Components.h): their colours and opacities replace Transfer's. */
   const ComponentLookup* Components = nullptr;
   /**

@@ -9,6 +9,7 @@
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Light.h"
+#include "Core/Mask.h"
 #include "Core/OpticalModel.h"
 #include "Core/Projection.h"
 #include "Core/Geometry/SurfaceSet.h"
@@ -157,6 +158,14 @@ std::optional<GradientOpacity> MakeGradientOpacity(
  * composite blending; null otherwise (UnsupportedSettings says why when one is set).
  */
 vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume);
+
+/**
+ * A label-map mask's labels (Core/Mask.h) when the mapper's mask type is a label map and
+ * anything changes: labels with functions and a mask blend factor above 0; null otherwise
+ * (VTK then draws the volume as if unmasked). `maskRange`: the mask's finite range.
+ */
+std::shared_ptr<const LabelMap> MakeLabelMap(
+  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& maskRange);
 
 /**
  * The polyhedral bound of a volume in voxel-index space: each vtkPolyData's polygons and

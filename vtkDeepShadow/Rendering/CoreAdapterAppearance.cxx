@@ -5,12 +5,14 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <type_traits>
 
@@ -242,6 +244,41 @@ TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitSc
   }
   tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(component) * unitScale;
   return tf;
+}
+
+std::shared_ptr<const LabelMap> MakeLabelMap(
+  vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& maskRange)
+{
+  if (!property || mapper->GetMaskType() != vtkGPUVolumeRayCastMapper::LabelMapMaskType ||
+    !(mapper->GetMaskBlendFactor() > 0.0f))
+  {
+    return nullptr;
+  }
+  const std::set<int> labels = property->GetLabelMapLabels();
+  if (labels.empty() || *labels.rbegin() < 1)
+  {
+    return nullptr;
+  }
+  auto map = std::make_shared<LabelMap>();
+  map->MaskRange = maskRange;
+  map->BlendFactor = mapper->GetMaskBlendFactor();
+  const TransferFunction volume = MakeTransferFunction(property);
+  for (int label = 1; label <= *labels.rbegin(); ++label)
+  {
+    // The label's own functions, else the volume's; opacity as given (a unit step's).
+    TransferFunction function = volume;
+    if (vtkColorTransferFunction* color = property->GetLabelColor(label))
+    {
+      FromVTK(color, function);
+    }
+    if (vtkPiecewiseFunction* opacity = property->GetLabelScalarOpacity(label))
+    {
+      function.Opacity = FromVTK(opacity);
+    }
+    function.OpacityUnitDistance = 1.0;
+    map->Functions.push_back(std::move(function));
+  }
+  return map;
 }
 
 Material MakeMaterial(vtkVolumeProperty* property, int component)

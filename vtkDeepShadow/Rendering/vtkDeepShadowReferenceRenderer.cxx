@@ -138,6 +138,15 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
       error = "the mask: " + error;
       return false;
     }
+    if (gpuMapper->GetMaskType() == vtkGPUVolumeRayCastMapper::LabelMapMaskType)
+    {
+      // A label map without labels (or blended away) changes nothing, as in VTK's mapper.
+      instance.Labels = adapter::MakeLabelMap(gpuMapper, property, instance.Mask->GetRange());
+      if (!instance.Labels)
+      {
+        instance.Mask = nullptr;
+      }
+    }
   }
   if (!several)
   {

@@ -485,7 +485,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   // isosurface's crossings lie in clear blocks as well.
   // The block map knows component 0's opacity only.
   // (A vtkShaderProperty's code runs at every sample, as in VTK's mapper: nothing skipped.)
-  context.Occupancy = !projection && !isosurface && !several && !frame.UserCode && this->EmptySpaceSkipping &&
+  // (The block map knows the volume's opacity only, not a label map's labels'.)
+  context.Occupancy = !projection && !isosurface && !several && !frame.UserCode && !context.LabelTable &&
+      this->EmptySpaceSkipping &&
       impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()
     : nullptr;

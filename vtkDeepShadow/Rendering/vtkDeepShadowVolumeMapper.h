@@ -62,6 +62,7 @@
 class vtkDeepShadowTechnique;
 namespace deepshadow
 {
+struct LabelMap;
 struct PassFrame;
 struct RayCastFrame;
 struct ShadowContext;
@@ -436,6 +437,9 @@ private:
    */
   bool UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step,
     bool uncorrected, double unitScale, deepshadow::RayCastFrame& frame);
+  /** A label map's tables (a row per label), rebuilt when they changed, into the frame's context. */
+  void UpdateLabelTables(
+    vtkOpenGLRenderWindow* window, const deepshadow::LabelMap& labels, deepshadow::RayCastFrame& frame);
 #ifndef __VTK_WRAP__
   /** The world step of the view rays: locked to the spacing as VTK's, set, or the default. */
   double SampleStep(vtkImageData* input, const glm::dmat4& indexToWorld);

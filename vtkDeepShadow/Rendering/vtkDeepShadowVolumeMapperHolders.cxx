@@ -107,9 +107,10 @@ bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* wind
     frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
     frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
   }
-  // The binary mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
+  // The mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
   if (vtkImageData* mask = adapter::UsableMask(this, input))
   {
+    const bool labelMap = this->GetMaskType() == vtkGPUVolumeRayCastMapper::LabelMapMaskType;
     if (impl.Mask.NeedsUpdate(mask, false))
     {
       std::string warning;
@@ -123,14 +124,58 @@ bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* wind
       ++impl.MaskUploads;
       this->LastPasses.emplace_back("mask-upload");
     }
+    const std::shared_ptr<const deepshadow::LabelMap> labels =
+      labelMap ? adapter::MakeLabelMap(this, property, impl.Mask.GetRange()) : nullptr;
+    if (labelMap && !labels)
+    {
+      return true; // a label map without labels (or blended away) changes nothing, as in VTK's
+    }
     // texel -> the shaders' scalar -> the mask's data value.
     const glm::dvec2 toShader = impl.Mask.GetScalarMap();
     const glm::dvec2 shader = impl.Mask.GetShaderScalar();
     frame.Context.Mask = impl.Mask.GetTexture();
     frame.Context.MaskToData = glm::dvec2(toShader.x / shader.x, (toShader.y - shader.y) / shader.x);
     frame.Context.MaskVersion = impl.MaskUploads;
+    if (labels)
+    {
+      this->UpdateLabelTables(window, *labels, frame);
+    }
   }
   return true;
+}
+
+void vtkDeepShadowVolumeMapper::UpdateLabelTables(
+  vtkOpenGLRenderWindow* window, const deepshadow::LabelMap& labels, deepshadow::RayCastFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  // Each label's function over the volume's range, in the view table's texels (its map serves).
+  const glm::dvec2 range = impl.Volume.GetRange();
+  std::vector<double> key{ range.x, range.y, static_cast<double>(this->TransferTableSize) };
+  for (const deepshadow::TransferFunction& function : labels.Functions)
+  {
+    for (const deepshadow::PiecewiseLinear* f : { &function.Opacity, &function.Red, &function.Green, &function.Blue })
+    {
+      for (const auto& [x, y] : f->GetNodes())
+      {
+        key.insert(key.end(), { x, y });
+      }
+      key.push_back(-1.0);
+    }
+  }
+  if (impl.LabelTables.NeedsUpdate(key))
+  {
+    impl.LabelTables.UpdateRows(window, labels.Functions, range, this->TransferTableSize, key);
+    this->LastPasses.emplace_back("label-tables");
+  }
+  deepshadow::ShadowContext& context = frame.Context;
+  context.LabelTable = impl.LabelTables.GetTexture();
+  context.LabelCount = labels.Count();
+  context.MaskToLabel = labels.LabelMapping();
+  context.MaskBlendFactor = labels.BlendFactor;
+  // What the shadows depend on: the tables' content, the labels' mapping and the blend.
+  context.LabelKey = key;
+  context.LabelKey.insert(context.LabelKey.end(),
+    { context.MaskToLabel.x, context.MaskToLabel.y, context.MaskBlendFactor });
 }
 
 bool vtkDeepShadowVolumeMapper::UpdateBound(

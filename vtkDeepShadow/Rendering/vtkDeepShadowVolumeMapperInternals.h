@@ -38,7 +38,8 @@ public:
   deepshadow::VolumeTexture Volume;
   deepshadow::TransferTableTexture Transfer;
   deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
-  deepshadow::VolumeTexture Mask;                   // a binary mask (Core/Mask.h)
+  deepshadow::VolumeTexture Mask;                   // a binary mask or a label map (Core/Mask.h)
+  deepshadow::TransferTableTexture LabelTables;     // a label map's: a row per label
   // Components 1.. of a volume of several (Core/Components.h): a texture and a table each.
   std::array<deepshadow::VolumeTexture, 3> ComponentVolumes;
   std::array<deepshadow::TransferTableTexture, 3> ComponentTables;
@@ -79,6 +80,7 @@ public:
       this->ComponentTables[c].Release(window);
     }
     this->Mask.Release(window);
+    this->LabelTables.Release(window);
     this->Occupancy.Release(window);
     this->Bound.Release(window);
     this->SurfacesGPU.Release(window);

@@ -13,6 +13,7 @@ const int MaxLights = 8;
 //DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
+//DeepShadow::LabelMap::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

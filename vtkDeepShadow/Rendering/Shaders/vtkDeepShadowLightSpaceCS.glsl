@@ -14,6 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
+//DeepShadow::LabelMap::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
@@ -157,6 +158,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     //DeepShadow::OpacityScale::TexelSample
     //DeepShadow::GradientOpacity::TexelSample
     //DeepShadow::Mask::TexelSample
+    //DeepShadow::LabelMap::TexelSample
     if (!visitSample(j, t, scalar))
     {
       return;

@@ -16,6 +16,7 @@ uniform float u_opacity;      // the actor's
 //DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
+//DeepShadow::LabelMap::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

@@ -18,6 +18,7 @@ layout(location = 0) out vec4 fragColor;
 //DeepShadow::OpacityScale::Dec
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
+//DeepShadow::LabelMap::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
 //DeepShadow::Components::ViewDec
 uniform mat4 u_clipToWorld;      // inverse view-projection
@@ -112,6 +113,7 @@ void main()
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
     //DeepShadow::Components::Impl
     //DeepShadow::Mask::Impl
+    //DeepShadow::LabelMap::Impl
     //DeepShadow::GradientOpacity::Impl
     if (transfer.a <= 0.0)
     {
@@ -119,6 +121,7 @@ void main()
     }
     vec3 color = transfer.rgb;
     //DeepShadow::Lighting::Impl
+    //DeepShadow::LabelMap::Lit
     //DeepShadow::VolumeSegments::Impl
     //DeepShadow::UserShader::Sample
     compositeFrontToBack(accumulated, color, transfer.a);

@@ -31,6 +31,7 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
   if (this->Mask)
   {
     key.push_back(static_cast<double>(this->MaskVersion));
+    key.insert(key.end(), this->LabelKey.begin(), this->LabelKey.end());
   }
   if (this->GradientOpacityTable)
   {
@@ -77,9 +78,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   }
   if (this->Mask)
   {
-    enabled.insert("Mask");
+    enabled.insert(this->MaskFeature());
   }
-  if (this->GradientOpacityTable || this->Mask)
+  // A label map replaces opacity instead of scaling it.
+  if (this->GradientOpacityTable || (this->Mask && !this->LabelTable))
   {
     enabled.insert("OpacityScale");
   }
@@ -219,6 +221,14 @@ void ShadowContext::SetMaskUniforms(UniformSink& sink) const
 {
   sink.Set("u_mask", this->Mask->GetTextureUnit());
   sink.Set("u_maskToData", glm::vec2(this->MaskToData));
+  if (this->LabelTable)
+  {
+    sink.Set("u_labelTable", this->LabelTable->GetTextureUnit());
+    sink.Set("u_labelCount", this->LabelCount);
+    sink.Set("u_maskToLabel", glm::vec2(this->MaskToLabel));
+    sink.Set("u_maskBlendFactor", static_cast<float>(this->MaskBlendFactor));
+    sink.Set("u_labelViewStep", static_cast<float>(this->ShadowStep));
+  }
 }
 
 void ShadowContext::SetEmptySpaceUniforms(UniformSink& sink) const
@@ -258,6 +268,10 @@ void ShadowContext::ActivateVolumeTextures() const
   {
     this->Mask->Activate();
   }
+  if (this->LabelTable)
+  {
+    this->LabelTable->Activate();
+  }
   if (this->Occupancy)
   {
     this->Occupancy->Activate();
@@ -288,6 +302,10 @@ void ShadowContext::DeactivateVolumeTextures() const
   if (this->Mask)
   {
     this->Mask->Deactivate();
+  }
+  if (this->LabelTable)
+  {
+    this->LabelTable->Deactivate();
   }
   if (this->Occupancy)
   {

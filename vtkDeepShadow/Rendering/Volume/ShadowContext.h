@@ -117,6 +117,17 @@ struct ShadowContext
   vtkTextureObject* Mask = nullptr;
   glm::dvec2 MaskToData{ 1.0, 0.0 }; // texel -> the mask's data value
   int MaskVersion = 0;               // increments with every mask upload
+  /**
+   * With Mask: Mask is a label map (Features/LabelMap.glsl, Core/Mask.h), its labels' tables a
+   * row each over the volume's range; null: a binary mask.
+   */
+  vtkTextureObject* LabelTable = nullptr;
+  int LabelCount = 0;
+  glm::dvec2 MaskToLabel{ 1.0, 0.0 }; // the mask's data value -> label (floored)
+  double MaskBlendFactor = 1.0;
+  std::vector<double> LabelKey;       // the tables' content, mapping and blend, to compare builds by
+  /** The mask's feature: LabelMap or Mask ("" when there is no mask). */
+  std::string MaskFeature() const { return !this->Mask ? "" : this->LabelTable ? "LabelMap" : "Mask"; }
 
   /**
    * A volume of several components (Core/Components.h, Features/Components.glsl), drawn and

@@ -129,8 +129,25 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
     }
     else if (mapper->GetMaskType() == vtkGPUVolumeRayCastMapper::LabelMapMaskType)
     {
-      said.push_back("label-map masks (per-label colour and opacity) are not supported: the mask is drawn "
-                     "as a binary one (labels above 0 kept)");
+      if (!property || property->GetLabelMapLabels().empty())
+      {
+        said.push_back("a label-map mask (the mask type by default) without label functions "
+                       "(vtkVolumeProperty::SetLabelColor/SetLabelScalarOpacity) changes nothing, as in VTK's "
+                       "mapper: SetMaskTypeToBinary for a binary mask");
+      }
+      else
+      {
+        if (property->HasLabelGradientOpacity())
+        {
+          said.push_back("label gradient opacity (SetLabelGradientOpacity) is not drawn: labelled samples are "
+                         "drawn without it");
+        }
+        if (adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
+        {
+          said.push_back("gradient opacity with a label map applies to labelled samples too (VTK 9.1's mapper "
+                         "applies it to label 0 only)");
+        }
+      }
     }
   }
   if (mapper->GetImageSampleDistance() != 1.0f)

@@ -115,6 +115,27 @@ void BindProjection(const Frame& f, UniformSink& sink)
   }
 }
 
+// A binary mask or a label map (and its labels' tables).
+void BindMask(const Frame& f, UniformSink& sink)
+{
+  f.Context.Mask->Activate();
+  if (f.Context.LabelTable)
+  {
+    f.Context.LabelTable->Activate();
+  }
+  f.Context.SetMaskUniforms(sink);
+  sink.Set("u_labelUnlitWeight", f.ShadowTerm ? 0.0f : 1.0f);
+}
+
+void UnbindMask(const Frame& f)
+{
+  f.Context.Mask->Deactivate();
+  if (f.Context.LabelTable)
+  {
+    f.Context.LabelTable->Deactivate();
+  }
+}
+
 // Surfaces are met by the feelers of lookups only; light-space builds have their own.
 bool SurfacesMet(const Frame& f)
 {
@@ -215,15 +236,15 @@ const std::vector<VolumeFeature>& VolumeFeatures()
         f.Context.SetGradientOpacityUniforms(sink);
       },
       [](const Frame& f) { f.Context.GradientOpacityTable->Deactivate(); } },
-    // The light's per-sample opacity factor, which the two above set in the feelers.
-    { "OpacityScale", [](const Frame& f) { return f.Context.GradientOpacityTable || f.Context.Mask; }, nullptr,
-      nullptr, nullptr },
-    { "Mask", [](const Frame& f) { return f.Context.Mask != nullptr; }, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        f.Context.Mask->Activate();
-        f.Context.SetMaskUniforms(sink);
-      },
-      [](const Frame& f) { f.Context.Mask->Deactivate(); } },
+    // The light's per-sample opacity factor, which the two above set in the feelers (a label
+    // map replaces opacity instead).
+    { "OpacityScale",
+      [](const Frame& f) { return f.Context.GradientOpacityTable || f.Context.MaskFeature() == "Mask"; },
+      nullptr, nullptr, nullptr },
+    { "Mask", [](const Frame& f) { return f.Context.MaskFeature() == "Mask"; }, nullptr, BindMask,
+      UnbindMask },
+    { "LabelMap", [](const Frame& f) { return f.Context.MaskFeature() == "LabelMap"; }, nullptr,
+      BindMask, UnbindMask },
     { "EmptySpace", [](const Frame& f) { return f.Context.Occupancy != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Context.Occupancy->Activate();

@@ -25,6 +25,7 @@ vec4 feelerSample(float scalar)
   //DeepShadow::Isosurface::FeelerLookup
   vec4 rgba = texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
   //DeepShadow::Components::FeelerLookup
+  //DeepShadow::LabelMap::FeelerLookup
   //DeepShadow::OpacityScale::FeelerLookup
   return rgba;
 }
@@ -113,6 +114,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     //DeepShadow::OpacityScale::FeelerSample
     //DeepShadow::GradientOpacity::FeelerSample
     //DeepShadow::Mask::FeelerSample
+    //DeepShadow::LabelMap::FeelerSample
     if (opaque)
     {
       if (feelerOccludes(scalar, occluderTransmittance))

@@ -1,5 +1,5 @@
-// Binary masks (vtkGPUVolumeRayCastMapper::SetMaskInput), drawn as VTK's mapper draws them and
-// cast into every shadow technique.
+// Binary masks and label maps (vtkGPUVolumeRayCastMapper::SetMaskInput), drawn as VTK's
+// mapper draws them and cast into every shadow technique.
 //
 // 1. The comparison volume with a mask that keeps a ball and the half x < 0 of the slab,
 //    shaded, drawn by our mapper and by VTK's in one run, within a tolerance calibrated on VTK
@@ -9,6 +9,12 @@
 //    plate's shadow term where the ball's shadow was gets the light, since what the mask
 //    clears casts nothing, and drops nowhere; every technique's picture matches its CPU twin
 //    with a mask that keeps half of the ball.
+// 3. Label maps against VTK's mapper in one run (shaded): labels 1 and 2 with their own colour
+//    and opacity functions, at mask blend factors 1 and 0.5, and a mask whose range is not
+//    [0, N] (VTK maps labels over the mask's range); ours drawing it as a binary mask must
+//    fail; the GPU matches its CPU twin. A label map without labels draws the volume
+//    unmasked, as VTK's. In the shadow scene, the ball labelled clear casts no shadow, and
+//    every technique matches its twin under a label map.
 #include "DeepShadowTestUtilities.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -21,9 +27,8 @@ using deepshadow::testing::WithinTolerance;
 
 namespace
 {
-// An unsigned char mask of `image`'s grid: 1 where `keep` (at normalized coordinates in
-// [-1, 1]^3) says so, else 0.
-vtkSmartPointer<vtkImageData> MakeMask(vtkImageData* image, const std::function<bool(double, double, double)>& keep)
+// An unsigned char mask of `image`'s grid: `label` (at normalized coordinates in [-1, 1]^3).
+vtkSmartPointer<vtkImageData> MakeLabels(vtkImageData* image, const std::function<int(double, double, double)>& label)
 {
   int dims[3];
   image->GetDimensions(dims);
@@ -39,22 +44,67 @@ vtkSmartPointer<vtkImageData> MakeMask(vtkImageData* image, const std::function<
       {
         const double x = 2.0 * i / (dims[0] - 1) - 1.0, y = 2.0 * j / (dims[1] - 1) - 1.0,
                      z = 2.0 * k / (dims[2] - 1) - 1.0;
-        v[i + dims[0] * (j + dims[1] * k)] = keep(x, y, z) ? 1 : 0;
+        v[i + dims[0] * (j + dims[1] * k)] = static_cast<unsigned char>(label(x, y, z));
       }
   return mask;
+}
+
+// A binary mask: 1 where `keep` says so, else 0.
+vtkSmartPointer<vtkImageData> MakeMask(vtkImageData* image, const std::function<bool(double, double, double)>& keep)
+{
+  return MakeLabels(image, [&](double x, double y, double z) { return keep(x, y, z) ? 1 : 0; });
 }
 
 using Drawn = deepshadow::testing::ComparisonPicture;
 
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, vtkImageData* mask, bool vtks, float step = 0.5f,
-  bool jitter = false)
+  bool jitter = false, vtkVolumeProperty* labelled = nullptr, float blend = 1.0f)
 {
   deepshadow::testing::ComparisonMappers mappers;
   vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
   mapper->SetMaskInput(mask);
-  mapper->SetMaskTypeToBinary();
-  return deepshadow::testing::DrawForComparison(
-    window, mapper, data, deepshadow::testing::MakeComparisonProperty(true), { 0.1, 0.1, 0.15 }, !vtks);
+  mapper->SetMaskType(labelled ? vtkGPUVolumeRayCastMapper::LabelMapMaskType : vtkGPUVolumeRayCastMapper::BinaryMaskType);
+  mapper->SetMaskBlendFactor(blend);
+  return deepshadow::testing::DrawForComparison(window, mapper, data,
+    labelled ? labelled : deepshadow::testing::MakeComparisonProperty(true).GetPointer(), { 0.1, 0.1, 0.15 }, !vtks);
+}
+
+// The comparison property with labels 1 (red, denser) and 2 (its own opacity, the volume's colour).
+vtkSmartPointer<vtkVolumeProperty> LabelledProperty()
+{
+  vtkSmartPointer<vtkVolumeProperty> property = deepshadow::testing::MakeComparisonProperty(true);
+  vtkNew<vtkColorTransferFunction> red;
+  red->AddRGBPoint(0, 0.3, 0.0, 0.0);
+  red->AddRGBPoint(255, 1.0, 0.2, 0.1);
+  vtkNew<vtkPiecewiseFunction> dense;
+  dense->AddPoint(0, 0.0);
+  dense->AddPoint(10, 0.0);
+  dense->AddPoint(255, 0.6);
+  vtkNew<vtkPiecewiseFunction> faint;
+  faint->AddPoint(0, 0.0);
+  faint->AddPoint(100, 0.0);
+  faint->AddPoint(255, 0.08);
+  property->SetLabelColor(1, red);
+  property->SetLabelScalarOpacity(1, dense);
+  property->SetLabelScalarOpacity(2, faint);
+  return property;
+}
+
+bool LabelMapMatchesVTK(vtkRenderWindow* window, vtkImageData* data, vtkImageData* labels, float blend,
+  const std::string& what)
+{
+  bool ok = true;
+  const auto property = LabelledProperty();
+  const Drawn ours = Draw(window, data, labels, false, 0.5f, false, property, blend);
+  const Drawn vtks = Draw(window, data, labels, true, 0.5f, false, property, blend);
+  const deepshadow::testing::VTKTolerance tolerance = deepshadow::testing::CalibrateOnVTK(what, vtks.Picture,
+    [&](float scale, bool jitter) { return Draw(window, data, labels, true, 0.5f * scale, jitter, property, blend).Picture; });
+  ok = WithinTolerance(what.c_str(), ours.Picture, vtks.Picture, tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
+  ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0, 0.005) && ok;
+  ok = !WithinTolerance((what + ", ours as a binary mask (must fail)").c_str(),
+         Draw(window, data, labels, false).Picture, vtks.Picture, tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) &&
+    ok;
+  return ok;
 }
 }
 
@@ -80,8 +130,32 @@ int TestMask(int, char*[])
            tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
   }
 
+  {
+    vtkNew<vtkDeepShadowRenderWindow> window;
+    window->SetSize(200, 200);
+    vtkSmartPointer<vtkImageData> data = deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR);
+    // Label 1: a ball; label 2: the half x < 0 outside it; 0 elsewhere (the mask's range [0, 2]).
+    const auto labels = MakeLabels(data, [](double x, double y, double z) {
+      return x * x + y * y + z * z < 0.3 ? 1 : x < 0.0 ? 2 : 0;
+    });
+    ok = LabelMapMatchesVTK(window, data, labels, 1.0f, "label map") && ok;
+    ok = LabelMapMatchesVTK(window, data, labels, 0.5f, "label map, blend factor 0.5") && ok;
+    // Labels 0, 1 and 3 with functions for 1 and 2: VTK maps the mask's range [0, 3] onto the
+    // labels 0..2 (1 -> 0, 3 -> 2), and so do we.
+    const auto spread = MakeLabels(data, [](double x, double y, double z) {
+      return x * x + y * y + z * z < 0.3 ? 3 : x < 0.0 ? 1 : 0;
+    });
+    ok = LabelMapMatchesVTK(window, data, spread, 1.0f, "label map over a mask of range [0, 3]") && ok;
+    // No label functions: the volume as if unmasked, as VTK's.
+    const Drawn plain = Draw(window, data, nullptr, false);
+    const auto noLabels = deepshadow::testing::MakeComparisonProperty(true);
+    ok = WithinTolerance("a label map without labels vs no mask", Draw(window, data, labels, false, 0.5f, false,
+                           noLabels).Picture, plain.Picture, 0.0005, 8.0 / 255.0, 0.0) && ok;
+  }
+
   // Shadows: the volume's shadow term, where the ball's shadow falls on the plate.
   deepshadow::testing::ShadowScene scene;
+  scene.Mapper->SetMaskTypeToBinary();
   scene.Mapper->SetOutputModeToShadowTerm();
   vtkSmartPointer<vtkDeepShadowTechnique> dsm = vtkDeepShadowTechniqueFactory::New("dsm");
   scene.Mapper->SetShadowTechnique(dsm);
@@ -131,5 +205,31 @@ int TestMask(int, char*[])
   scene.Mapper->SetMaskInput(
     MakeMask(scene.Data, [&](double x, double y, double z) { return !ball(x, y, z) || x < -0.1; }));
   ok = scene.AllMatchTwins("mask") && ok;
+
+  // A label map in the shadow scene: the ball labelled clear (label 1, opacity 0) casts no
+  // shadow onto the plate (label 0, the volume's functions).
+  scene.Mapper->SetMaskTypeToLabelMap();
+  vtkNew<vtkPiecewiseFunction> clear;
+  clear->AddPoint(0.0, 0.0);
+  clear->AddPoint(255.0, 0.0);
+  scene.Property->SetLabelScalarOpacity(1, clear);
+  scene.Mapper->SetMaskInput(MakeLabels(scene.Data, [&](double x, double y, double z) { return ball(x, y, z) ? 1 : 0; }));
+  scene.Mapper->SetOutputModeToShadowTerm();
+  scene.Mapper->SetShadowTechnique(dsm);
+  scene.Window->Render();
+  const deepshadow::Image labelledClear = Grab(scene.Window);
+  ok = Check("composed with LabelMap", deepshadow::testing::HasFeature(scene.Mapper, "LabelMap")) && ok;
+  const double labelledTerm = darkest >= 0 ? labelledClear.At(darkest % plain.Width, darkest / plain.Width).x : 0.0;
+  std::printf("the plate's darkest term with the ball labelled clear %.3f\n", labelledTerm);
+  ok = Check("a label's opacity casts: the ball labelled clear casts no shadow", labelledTerm > darkestTerm + 0.5) && ok;
+  scene.Mapper->SetOutputModeToColor();
+  // The ball half dense (label 1 at the volume's opacity x 2), the twins compared.
+  vtkNew<vtkPiecewiseFunction> dense;
+  dense->AddPoint(0.0, 0.0);
+  dense->AddPoint(255.0, 0.9);
+  scene.Property->SetLabelScalarOpacity(1, dense);
+  scene.Mapper->SetMaskInput(
+    MakeLabels(scene.Data, [&](double x, double y, double z) { return ball(x, y, z) && x < -0.1 ? 1 : 0; }));
+  ok = scene.AllMatchTwins("label map") && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

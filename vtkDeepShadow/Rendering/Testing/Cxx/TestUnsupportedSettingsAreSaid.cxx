@@ -102,14 +102,24 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
       } },
     { "2D transfer function", "2D transfer functions",
       [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
-    { "label-map mask", "label-map masks",
+    { "label-map mask without labels", "without label functions",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
         m->SetMaskTypeToLabelMap();
       } },
+    { "label gradient opacity", "label gradient opacity",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetMaskTypeToLabelMap();
+        vtkNew<vtkPiecewiseFunction> opacity;
+        opacity->AddPoint(0.0, 1.0);
+        p->SetLabelScalarOpacity(1, opacity);
+        p->SetLabelGradientOpacity(1, opacity);
+      } },
     { "mask of other dimensions", "the mask's dimensions 40x40x40 differ from the volume's 48x48x48",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR, 40));
+        m->SetMaskTypeToBinary();
       } },
     { "mask over cell scalars", "masks are not drawn over cell scalars",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
@@ -118,10 +128,12 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
         cells->GetCellData()->SetScalars(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR)->GetPointData()->GetScalars());
         m->SetInputData(cells);
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetMaskTypeToBinary();
       } },
     { "mask under MIP", "masks apply to composite blending only",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetMaskTypeToBinary();
         m->SetBlendModeToMaximumIntensity();
       } },
     { "image sample distance", "image sample distance 2",
