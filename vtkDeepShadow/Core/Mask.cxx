@@ -1,4 +1,5 @@
 #include "Core/Mask.h"
+#include "Core/OpticalModel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +46,7 @@ LabelledSample LabelMap::Apply(const glm::dvec4& volume, double scalar, int labe
     const TransferFunction& f = this->Functions[row];
     own = glm::dvec4(f.Color(scalar), f.Opacity.Evaluate(scalar));
   }
-  own.a = 1.0 - std::pow(std::max(1.0 - own.a, 0.0), stepRatio);
+  own.a = CorrectOpacity(own.a, stepRatio, 1.0); // its opacity holds for one view step
   if (this->BlendFactor >= 1.0)
   {
     return { own };

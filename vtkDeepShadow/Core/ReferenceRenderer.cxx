@@ -125,8 +125,9 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
       settings.SampleDistance, settings.TransferTableSize, projection && !volume.Projection.CorrectsOpacity());
   }
   // A projection counts transparent samples too; an isosurface's crossings lie anywhere;
-  // the block map knows one component's opacity only, and not the labels'.
-  if (settings.EmptySpaceSkipping && !projection && !isosurface && !volume.Components && !volume.Labels)
+  // the block map knows one component's 1D opacity only, and not the labels'.
+  if (settings.EmptySpaceSkipping && !projection && !isosurface && !volume.Components && !volume.Labels &&
+    !volume.Function2D)
   {
     prepared.Empty = std::make_unique<EmptySpaceMap>(*volume.Grid, volume.Transfer.Opacity);
   }
@@ -147,11 +148,13 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Gradient = volume.Gradient ? &*volume.Gradient : nullptr;
   caster.Mask = volume.Mask.get();
   caster.Labels = volume.Labels.get();
+  caster.Function2D = volume.Function2D.get();
   caster.LabelStep = settings.SampleDistance;
   caster.LabelTables = prepared.LabelTables.get();
   caster.Eye = scene.View.Unproject(0.5 * scene.View.GetWidth(), 0.5 * scene.View.GetHeight(), 0.0);
   caster.View = &scene.View;
-  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components && !volume.Labels)
+  if (volume.ShadowTransfer && settings.EmptySpaceSkipping && !isosurface && !volume.Components && !volume.Labels &&
+    !volume.Function2D)
   {
     prepared.ShadowEmpty = std::make_unique<EmptySpaceMap>(*volume.Grid, casting.Opacity);
     caster.Empty = prepared.ShadowEmpty.get();
@@ -343,6 +346,12 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       color = volume.Transfer.Color(scalar);
       const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
       alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
+    }
+    if (volume.Function2D)
+    {
+      const glm::dvec4 looked = volume.Function2D->At(grid, index, volume.Sampling, scalar);
+      color = glm::dvec3(looked);
+      alpha = looked.a;
     }
     glm::dvec3 unlit(0.0); // a label map's colour added unlit (Mask.h)
     if (volume.Labels)

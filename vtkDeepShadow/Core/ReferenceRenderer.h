@@ -41,6 +41,7 @@
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Projection.h"
+#include "Core/Transfer2D.h"
 #include "Core/Shadows.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Core/EmptySpace.h"
@@ -90,6 +91,8 @@ struct VolumeInstance
   std::shared_ptr<const VolumeGrid> Mask;
   /** With Mask: Mask is a label map (Mask.h), whose labels' colours and opacities show and cast. */
   std::shared_ptr<const LabelMap> Labels;
+  /** A 2D transfer function (Transfer2D.h; composite, one component) replacing Transfer's looks. */
+  std::shared_ptr<const Transfer2D> Function2D;
   /** Several components per voxel (Components.h; composite only): Grid is component 0. */
   std::optional<ComponentSet> Components;
 };

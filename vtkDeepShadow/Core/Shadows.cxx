@@ -7,6 +7,7 @@
 #include "Core/GradientOpacity.h"
 #include "Core/Isosurface.h"
 #include "Core/Mask.h"
+#include "Core/Transfer2D.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Core/OpticalModel.h"
 #include "Core/Parallel.h"
@@ -79,6 +80,10 @@ CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) 
   {
     sample.Label = this->Labels->LabelOf(this->Mask->Sample(index, Interpolation::Nearest));
   }
+  if (this->Function2D)
+  {
+    sample.Magnitude = this->Function2D->Gradient.Magnitude(*this->Grid, index, this->Sampling);
+  }
   if (this->Components)
   {
     sample.Values = this->Components->GetSet().Sample(*this->Grid, index, this->Sampling);
@@ -104,10 +109,19 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
     rgba.a *= sample.OpacityScale;
     return rgba;
   }
-  glm::dvec4 rgba = this->FeelerTable ? this->FeelerTable->Lookup(scalar)
-                                      : glm::dvec4(this->Transfer->Color(scalar),
-                                          CorrectOpacity(this->Transfer->Opacity.Evaluate(scalar), step,
-                                            this->Transfer->OpacityUnitDistance));
+  glm::dvec4 rgba;
+  if (this->Function2D)
+  {
+    rgba = this->Function2D->Lookup(scalar, sample.Magnitude);
+    rgba.a = CorrectOpacity(rgba.a, step / this->LabelStep, 1.0); // it holds for one view step
+  }
+  else
+  {
+    rgba = this->FeelerTable ? this->FeelerTable->Lookup(scalar)
+                             : glm::dvec4(this->Transfer->Color(scalar),
+                                 CorrectOpacity(this->Transfer->Opacity.Evaluate(scalar), step,
+                                   this->Transfer->OpacityUnitDistance));
+  }
   if (this->Labels)
   {
     rgba = this->Labels->Apply(rgba, scalar, sample.Label, step / this->LabelStep, this->LabelTables).Whole();
@@ -133,7 +147,7 @@ bool ShadowCaster::AboveThreshold(const CastSample& sample, double step, const S
     const double width = range.y > range.x ? range.y - range.x : 1.0;
     return (scalar - range.x) / width > parameters.Threshold;
   }
-  if (this->Components || (this->Labels && sample.Label > 0))
+  if (this->Components || this->Function2D || (this->Labels && sample.Label > 0))
   {
     // The sample's combined (or labelled) opacity, corrected for the step: against the
     // corrected threshold.

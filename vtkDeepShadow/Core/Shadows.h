@@ -43,6 +43,7 @@ class Camera;
 class ComponentLookup;
 class IsoCrossings;
 struct LabelMap;
+struct Transfer2D;
 class SurfaceSet;
 struct GradientOpacity;
 
@@ -187,6 +188,7 @@ struct CastSample
   double OpacityScale;
   glm::dvec4 Values{ 0.0 }; // every component's value (Components.h), when there are several
   int Label = 0;            // its label under a label map (Mask.h)
+  double Magnitude = 0.0;   // its gradient magnitude under a 2D transfer function (Transfer2D.h)
 };
 
 /** A box in a volume's continuous index space, corners included. */
@@ -232,6 +234,9 @@ struct ShadowCaster
   const LabelMap* Labels = nullptr;
   const std::vector<TransferTable>* LabelTables = nullptr;
   double LabelStep = 1.0;
+  /** Optional: a 2D transfer function (Transfer2D.h) replacing Transfer's colour and opacity,
+   * its opacities holding for a step of LabelStep. */
+  const Transfer2D* Function2D = nullptr;
   /** Several components (Components.h): their colours and opacities replace Transfer's. */
   const ComponentLookup* Components = nullptr;
   /**

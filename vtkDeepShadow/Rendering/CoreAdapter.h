@@ -13,6 +13,7 @@
 #include "Core/OpticalModel.h"
 #include "Core/Projection.h"
 #include "Core/Geometry/SurfaceSet.h"
+#include "Core/Transfer2D.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
 #include "Core/VolumeShading.h"
@@ -42,6 +43,8 @@ namespace adapter
 
 /** Lights beyond this many (per renderer) are ignored, with a warning, on GPU and CPU alike. */
 constexpr int MaxLights = 8;
+/** The largest 2D transfer function read, texels an axis (VTK's texture holds at most this). */
+constexpr int MaxTransfer2DSize = 16384;
 
 glm::dmat4 ToGlm(const vtkMatrix4x4* matrix);
 
@@ -158,6 +161,16 @@ std::optional<GradientOpacity> MakeGradientOpacity(
  * composite blending; null otherwise (UnsupportedSettings says why when one is set).
  */
 vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume);
+
+/**
+ * The property's 2D transfer function image when the mapper draws one (TF_2D, composite
+ * blending, one component); null otherwise, with `error` set when the image cannot be read
+ * (none, or not a 2D image of 4 float components, as VTK's mapper reads it).
+ */
+vtkImageData* UsableTransfer2D(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, int components, std::string& error);
+/** A usable 2D transfer function for data of `range` and `spacing`; its texels only if asked. */
+Transfer2D MakeTransfer2D(vtkImageData* image, const glm::dvec2& range, const glm::dvec3& spacing, bool texels);
 
 /**
  * A label-map mask's labels (Core/Mask.h) when the mapper's mask type is a label map and

@@ -5,7 +5,10 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
+#include "vtkDataArray.h"
 #include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -244,6 +247,61 @@ TransferFunction MakeTransferFunction(vtkVolumeProperty* property, double unitSc
   }
   tf.OpacityUnitDistance = property->GetScalarOpacityUnitDistance(component) * unitScale;
   return tf;
+}
+
+vtkImageData* UsableTransfer2D(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, int components, std::string& error)
+{
+  if (!property || property->GetTransferFunctionMode() != vtkVolumeProperty::TF_2D ||
+    mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND || components != 1)
+  {
+    return nullptr; // UnsupportedSettings says what is drawn instead
+  }
+  vtkImageData* image = property->GetTransferFunction2D();
+  vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  std::ostringstream problem;
+  if (!image)
+  {
+    problem << "the transfer function mode is TF_2D but the property has no 2D transfer function "
+               "(vtkVolumeProperty::SetTransferFunction2D)";
+  }
+  else if (!texels || texels->GetDataType() != VTK_FLOAT || texels->GetNumberOfComponents() != 4 || dims[2] != 1 ||
+    dims[0] < 1 || dims[1] < 1)
+  {
+    problem << "the 2D transfer function is a " << dims[0] << "x" << dims[1] << "x" << dims[2] << " image of "
+            << (texels ? texels->GetDataTypeAsString() : "no scalars") << " with "
+            << (texels ? texels->GetNumberOfComponents() : 0)
+            << " components; VTK's mapper reads a W x H x 1 image of 4 float components (RGBA)";
+  }
+  else if (dims[0] > MaxTransfer2DSize || dims[1] > MaxTransfer2DSize)
+  {
+    problem << "the 2D transfer function is " << dims[0] << "x" << dims[1] << " texels; at most " << MaxTransfer2DSize
+            << " an axis are read";
+  }
+  error = problem.str();
+  return error.empty() ? image : nullptr;
+}
+
+Transfer2D MakeTransfer2D(vtkImageData* image, const glm::dvec2& range, const glm::dvec3& spacing, bool texels)
+{
+  Transfer2D function;
+  int dims[3];
+  image->GetDimensions(dims);
+  function.Width = dims[0];
+  function.Height = dims[1];
+  function.Range = range;
+  function.Gradient = GradientOpacity::For(PiecewiseLinear({ { 0.0, 1.0 } }), range, spacing);
+  if (texels)
+  {
+    const auto* values = static_cast<const float*>(image->GetPointData()->GetScalars()->GetVoidPointer(0));
+    function.RGBA.assign(values, values + 4 * static_cast<size_t>(dims[0]) * static_cast<size_t>(dims[1]));
+  }
+  return function;
 }
 
 std::shared_ptr<const LabelMap> MakeLabelMap(

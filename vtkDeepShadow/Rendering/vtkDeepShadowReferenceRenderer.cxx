@@ -153,6 +153,15 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
     instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
       glm::make_vec3(image->GetSpacing()));
   }
+  if (vtkImageData* function = adapter::UsableTransfer2D(mapper, property, several ? 2 : 1, error))
+  {
+    instance.Function2D = std::make_shared<deepshadow::Transfer2D>(
+      adapter::MakeTransfer2D(function, grid->GetRange(), glm::make_vec3(image->GetSpacing()), true));
+  }
+  else if (!error.empty())
+  {
+    return false;
+  }
   vtkDeepShadowTechnique* technique = ours && !projection ? ours->GetShadowTechnique() : nullptr;
   if (technique)
   {

@@ -485,8 +485,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   // isosurface's crossings lie in clear blocks as well.
   // The block map knows component 0's opacity only.
   // (A vtkShaderProperty's code runs at every sample, as in VTK's mapper: nothing skipped.)
-  // (The block map knows the volume's opacity only, not a label map's labels'.)
+  // (The block map knows the volume's 1D opacity only, not a label map's or a 2D function's.)
   context.Occupancy = !projection && !isosurface && !several && !frame.UserCode && !context.LabelTable &&
+      !context.Transfer2DImage &&
       this->EmptySpaceSkipping &&
       impl.Occupancy.AnyEmptyBlock()
     ? impl.Occupancy.GetTexture()

@@ -20,6 +20,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include <cstdint>
+
 namespace adapter = deepshadow::adapter;
 
 bool vtkDeepShadowVolumeMapper::UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input)
@@ -106,6 +108,32 @@ bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* wind
     frame.Context.Gradient = *gradient;
     frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
     frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+  }
+  // A 2D transfer function's image, uploaded when it changed; drawn and cast.
+  std::string problem;
+  if (vtkImageData* image = adapter::UsableTransfer2D(this, property, 1, problem))
+  {
+    const deepshadow::Transfer2D shape =
+      adapter::MakeTransfer2D(image, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()), false);
+    std::vector<double> key{ static_cast<double>(reinterpret_cast<std::uintptr_t>(image)),
+      static_cast<double>(image->GetMTime()), static_cast<double>(image->GetPointData()->GetScalars()->GetMTime()),
+      static_cast<double>(shape.Width), static_cast<double>(shape.Height) };
+    if (impl.Transfer2D.NeedsUpdate(key))
+    {
+      impl.Transfer2D.UpdateImage(window, shape.Width, shape.Height,
+        static_cast<const float*>(image->GetPointData()->GetScalars()->GetVoidPointer(0)), key);
+      this->LastPasses.emplace_back("transfer-2d-upload");
+    }
+    frame.Context.Transfer2DImage = impl.Transfer2D.GetTexture();
+    frame.Context.Transfer2DShape = shape;
+    frame.Context.Transfer2DKey = key;
+    frame.Context.Transfer2DKey.insert(frame.Context.Transfer2DKey.end(),
+      { shape.Range.x, shape.Range.y, shape.Gradient.MaxMagnitude });
+  }
+  else if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return false;
   }
   // The mask, uploaded when it changed; drawn and cast, read nearest as VTK reads it.
   if (vtkImageData* mask = adapter::UsableMask(this, input))

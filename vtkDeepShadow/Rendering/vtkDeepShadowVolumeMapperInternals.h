@@ -40,6 +40,7 @@ public:
   deepshadow::TransferTableTexture GradientOpacity; // the function in alpha (GradientOpacity.h)
   deepshadow::VolumeTexture Mask;                   // a binary mask or a label map (Core/Mask.h)
   deepshadow::TransferTableTexture LabelTables;     // a label map's: a row per label
+  deepshadow::TransferTableTexture Transfer2D;      // a 2D transfer function's image (Core/Transfer2D.h)
   // Components 1.. of a volume of several (Core/Components.h): a texture and a table each.
   std::array<deepshadow::VolumeTexture, 3> ComponentVolumes;
   std::array<deepshadow::TransferTableTexture, 3> ComponentTables;
@@ -81,6 +82,7 @@ public:
     }
     this->Mask.Release(window);
     this->LabelTables.Release(window);
+    this->Transfer2D.Release(window);
     this->Occupancy.Release(window);
     this->Bound.Release(window);
     this->SurfacesGPU.Release(window);

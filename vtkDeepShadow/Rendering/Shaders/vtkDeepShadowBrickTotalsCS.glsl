@@ -10,6 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::LabelMap::Dec
+//DeepShadow::Transfer2D::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

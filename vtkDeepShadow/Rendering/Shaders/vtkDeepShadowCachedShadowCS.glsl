@@ -14,6 +14,7 @@ const int MaxLights = 8;
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::LabelMap::Dec
+//DeepShadow::Transfer2D::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

@@ -15,6 +15,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::LabelMap::Dec
+//DeepShadow::Transfer2D::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec
@@ -159,6 +160,7 @@ void marchTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     //DeepShadow::GradientOpacity::TexelSample
     //DeepShadow::Mask::TexelSample
     //DeepShadow::LabelMap::TexelSample
+    //DeepShadow::Transfer2D::TexelSample
     if (!visitSample(j, t, scalar))
     {
       return;

@@ -17,6 +17,7 @@ uniform float u_opacity;      // the actor's
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::LabelMap::Dec
+//DeepShadow::Transfer2D::Dec
 //DeepShadow::EmptySpace::Dec
 //DeepShadow::TriangleHierarchy::Dec
 //DeepShadow::Bound::Dec

@@ -19,6 +19,7 @@ layout(location = 0) out vec4 fragColor;
 //DeepShadow::GradientOpacity::Dec
 //DeepShadow::Mask::Dec
 //DeepShadow::LabelMap::Dec
+//DeepShadow::Transfer2D::Dec
 uniform sampler2D u_transfer;    // RGBA table: colour, opacity corrected for u_step
 //DeepShadow::Components::ViewDec
 uniform mat4 u_clipToWorld;      // inverse view-projection
@@ -111,6 +112,7 @@ void main()
     //DeepShadow::Isosurface::Impl
     //DeepShadow::Projection::Impl
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+    //DeepShadow::Transfer2D::Impl
     //DeepShadow::Components::Impl
     //DeepShadow::Mask::Impl
     //DeepShadow::LabelMap::Impl

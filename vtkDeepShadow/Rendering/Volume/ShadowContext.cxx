@@ -33,6 +33,7 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
     key.push_back(static_cast<double>(this->MaskVersion));
     key.insert(key.end(), this->LabelKey.begin(), this->LabelKey.end());
   }
+  key.insert(key.end(), this->Transfer2DKey.begin(), this->Transfer2DKey.end());
   if (this->GradientOpacityTable)
   {
     add(this->Gradient.Function);
@@ -75,6 +76,10 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   if (this->GradientOpacityTable)
   {
     enabled.insert("GradientOpacity");
+  }
+  if (this->Transfer2DImage)
+  {
+    enabled.insert("Transfer2D");
   }
   if (this->Mask)
   {
@@ -169,6 +174,10 @@ void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
   {
     this->SetGradientOpacityUniforms(sink);
   }
+  if (this->Transfer2DImage)
+  {
+    this->SetTransfer2DUniforms(sink);
+  }
   if (this->Mask)
   {
     this->SetMaskUniforms(sink);
@@ -214,6 +223,22 @@ void ShadowContext::SetGradientOpacityUniforms(UniformSink& sink) const
   // The shaders' scalar is the data's times ShaderScalar.x: back to data units.
   sink.Set("u_gradientOpacityScale", glm::vec3(this->Gradient.IndexScale / this->ShaderScalar.x));
   sink.Set("u_gradientOpacityMax", static_cast<float>(this->Gradient.MaxMagnitude));
+  sink.Set("u_gradientReach", static_cast<float>(this->GradientReach));
+}
+
+void ShadowContext::SetTransfer2DUniforms(UniformSink& sink) const
+{
+  const Transfer2D& shape = this->Transfer2DShape;
+  const glm::dvec2 range = this->ShaderRange();
+  const double span = range.y > range.x ? range.y - range.x : 1.0;
+  sink.Set("u_transfer2D", this->Transfer2DImage->GetTextureUnit());
+  sink.Set("u_transfer2DSize", glm::vec2(shape.Width, shape.Height));
+  sink.Set("u_transfer2DImageMap", glm::vec4(shape.ImageMap()));
+  sink.Set("u_transfer2DNormalize", glm::vec2(1.0 / span, -range.x / span));
+  // The shaders' scalar is the data's times ShaderScalar.x: back to data units.
+  sink.Set("u_transfer2DGradientScale", glm::vec3(shape.Gradient.IndexScale / this->ShaderScalar.x));
+  sink.Set("u_transfer2DGradientMax", static_cast<float>(shape.Gradient.MaxMagnitude));
+  sink.Set("u_transfer2DViewStep", static_cast<float>(this->ShadowStep));
   sink.Set("u_gradientReach", static_cast<float>(this->GradientReach));
 }
 
@@ -264,6 +289,10 @@ void ShadowContext::ActivateVolumeTextures() const
   {
     this->GradientOpacityTable->Activate();
   }
+  if (this->Transfer2DImage)
+  {
+    this->Transfer2DImage->Activate();
+  }
   if (this->Mask)
   {
     this->Mask->Activate();
@@ -298,6 +327,10 @@ void ShadowContext::DeactivateVolumeTextures() const
   if (this->GradientOpacityTable)
   {
     this->GradientOpacityTable->Deactivate();
+  }
+  if (this->Transfer2DImage)
+  {
+    this->Transfer2DImage->Deactivate();
   }
   if (this->Mask)
   {

@@ -10,6 +10,7 @@
 #include "ShaderComposer.h"
 #include "Core/Camera.h"
 #include "Core/Components.h"
+#include "Core/Transfer2D.h"
 #include "Core/EmptySpace.h"
 #include "Core/GradientOpacity.h"
 #include "Core/TransferFunction.h"
@@ -126,6 +127,13 @@ struct ShadowContext
   glm::dvec2 MaskToLabel{ 1.0, 0.0 }; // the mask's data value -> label (floored)
   double MaskBlendFactor = 1.0;
   std::vector<double> LabelKey;       // the tables' content, mapping and blend, to compare builds by
+  /**
+   * A 2D transfer function (Features/Transfer2D.glsl, Core/Transfer2D.h) replacing Transfer's
+   * colour and opacity, drawn and cast; null: none.
+   */
+  vtkTextureObject* Transfer2DImage = nullptr;
+  Transfer2D Transfer2DShape;         // its size, range and gradient axis (RGBA left empty)
+  std::vector<double> Transfer2DKey;  // its content, to compare builds by
   /** The mask's feature: LabelMap or Mask ("" when there is no mask). */
   std::string MaskFeature() const { return !this->Mask ? "" : this->LabelTable ? "LabelMap" : "Mask"; }
 
@@ -178,6 +186,8 @@ struct ShadowContext
   void SetEmptySpaceUniforms(UniformSink& sink) const;
   void SetGradientOpacityUniforms(UniformSink& sink) const;
   void SetMaskUniforms(UniformSink& sink) const;
+  /** Feature Transfer2D's uniforms (the image, its maps, the gradient's measure). */
+  void SetTransfer2DUniforms(UniformSink& sink) const;
   /** Feature Components' volume uniforms (textures, maps, ranges, weights). */
   void SetComponentUniforms(UniformSink& sink) const;
   void SetBoundUniforms(UniformSink& sink) const;

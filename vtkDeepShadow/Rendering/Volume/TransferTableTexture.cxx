@@ -43,6 +43,19 @@ void TransferTableTexture::UpdateRows(vtkOpenGLRenderWindow* window, const std::
   this->Key = std::move(key);
 }
 
+void TransferTableTexture::UpdateImage(
+  vtkOpenGLRenderWindow* window, int width, int height, const float* rgba, std::vector<double> key)
+{
+  this->Release(window);
+  this->Table.Size = width;
+  this->Rows = height;
+  this->Texture = NewClampedTexture(window);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->Texture->Create2DFromRaw(width, height, 4, VTK_FLOAT, const_cast<float*>(rgba));
+  this->Key = std::move(key);
+}
+
 void TransferTableTexture::Release(vtkWindow* window)
 {
   if (this->Texture)

@@ -1,7 +1,8 @@
 // Internal: a transfer function sampled into a table (deepshadow::TransferTable) and held as a
 // 1-row RGBA float texture. The ray caster's table and a technique's feeler table are two of
 // these, each with its own key of what it was sampled from. A label map's tables are one
-// texture of a row per label (UpdateRows).
+// texture of a row per label (UpdateRows); a 2D transfer function is its image as given
+// (UpdateImage).
 #ifndef vtkDeepShadowTransferTableTexture_h
 #define vtkDeepShadowTransferTableTexture_h
 
@@ -32,6 +33,8 @@ public:
    * own unit distance (uncorrected), uploaded as one texture; keeps `key`. */
   void UpdateRows(vtkOpenGLRenderWindow* window, const std::vector<TransferFunction>& functions,
     const glm::dvec2& range, int size, std::vector<double> key);
+  /** `width` x `height` RGBA float texels as given, uploaded; keeps `key`. */
+  void UpdateImage(vtkOpenGLRenderWindow* window, int width, int height, const float* rgba, std::vector<double> key);
   void Release(vtkWindow* window);
 
   vtkTextureObject* GetTexture() const { return this->Texture; }

@@ -91,7 +91,27 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
   }
   if (property && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {
-    said.push_back("2D transfer functions (TF_2D) are not supported: the 1D functions are used");
+    // Drawn under composite blending over one component (Core/Transfer2D.h).
+    if (mapper->GetTransfer2DYAxisArray())
+    {
+      said.push_back("a 2D transfer function's Y axis array (SetTransfer2DYAxisArray) is not read: its Y axis is "
+                     "the gradient magnitude");
+    }
+    if (components > 1)
+    {
+      said.push_back("2D transfer functions are not drawn over several components (VTK 9.1's shader does "
+                     "not compile them): the 1D functions are used");
+    }
+    else if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+    {
+      said.push_back(std::string("2D transfer functions apply to composite blending: ") + BlendModeName(blend) +
+        " uses the 1D functions");
+    }
+    else if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
+    {
+      said.push_back("a 2D transfer function is read with linear interpolation (VTK's mapper reads it nearest "
+                     "under nearest interpolation)");
+    }
   }
   // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
   vtkImageData* mask = mapper->GetMaskInput();

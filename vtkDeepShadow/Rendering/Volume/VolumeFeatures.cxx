@@ -241,6 +241,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "OpacityScale",
       [](const Frame& f) { return f.Context.GradientOpacityTable || f.Context.MaskFeature() == "Mask"; },
       nullptr, nullptr, nullptr },
+    { "Transfer2D", [](const Frame& f) { return f.Context.Transfer2DImage != nullptr; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.Context.Transfer2DImage->Activate();
+        f.Context.SetTransfer2DUniforms(sink);
+      },
+      [](const Frame& f) { f.Context.Transfer2DImage->Deactivate(); } },
     { "Mask", [](const Frame& f) { return f.Context.MaskFeature() == "Mask"; }, nullptr, BindMask,
       UnbindMask },
     { "LabelMap", [](const Frame& f) { return f.Context.MaskFeature() == "LabelMap"; }, nullptr,

@@ -24,6 +24,7 @@ vec4 feelerSample(float scalar)
 {
   //DeepShadow::Isosurface::FeelerLookup
   vec4 rgba = texture(u_feelerTable, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
+  //DeepShadow::Transfer2D::FeelerLookup
   //DeepShadow::Components::FeelerLookup
   //DeepShadow::LabelMap::FeelerLookup
   //DeepShadow::OpacityScale::FeelerLookup
@@ -115,6 +116,7 @@ vec3 feelerVisibility(vec3 start, vec3 indexDirection, float tStart, float tEnd,
     //DeepShadow::GradientOpacity::FeelerSample
     //DeepShadow::Mask::FeelerSample
     //DeepShadow::LabelMap::FeelerSample
+    //DeepShadow::Transfer2D::FeelerSample
     if (opaque)
     {
       if (feelerOccludes(scalar, occluderTransmittance))

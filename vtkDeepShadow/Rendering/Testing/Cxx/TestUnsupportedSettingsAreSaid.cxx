@@ -100,8 +100,11 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
         m->SetBlendModeToIsoSurface();
         p->GetIsoSurfaceValues()->GenerateValues(17, 10.0, 200.0);
       } },
-    { "2D transfer function", "2D transfer functions",
-      [](vtkDeepShadowVolumeMapper*, vtkVolumeProperty* p) { p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); } },
+    { "2D transfer function under MIP", "2D transfer functions apply to composite blending",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
+        p->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+        m->SetBlendModeToMaximumIntensity();
+      } },
     { "label-map mask without labels", "without label functions",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
