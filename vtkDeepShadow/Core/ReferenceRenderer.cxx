@@ -213,6 +213,10 @@ glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table, 
         ? CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance)
         : opacity);
   };
+  if (volume.Projection.Mode != BlendMode::Additive)
+  {
+    offset = std::fmod(offset + 0.5, 1.0); // from the entry, as VTK's (Features/Projection.glsl)
+  }
   ProjectionAccumulator projection(volume.Projection);
   std::optional<ComponentProjection> several;
   if (components)

@@ -28,6 +28,14 @@ bool projectionCounts(vec4 values, int c)
 }
 #endif
 //@Init
+  // VTK's extremes and averages sample from the ray's entry (measured on VTK's wavelet: MIP
+  // at steps of 0.3, 0.5 and 1 voxel 0.004-0.012 against VTK from there, 0.029-0.056 from
+  // half a step in); jittered offsets stay uniform. Additive sums (0.014 against VTK from
+  // the midpoint, 0.021 from the entry) and composite keep the midpoint.
+  if (u_blendMode != 4)
+  {
+    offset = fract(offset + 0.5);
+  }
   float projectionExtreme = 0.0;
   float projectionSum = 0.0;
   float projectionCount = 0.0;
