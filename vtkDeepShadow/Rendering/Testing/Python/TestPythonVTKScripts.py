@@ -1,8 +1,9 @@
 """Scripts written after VTK's published volume examples run through the override
 (vtkDeepShadowVolumeMapperFactory) and must draw VTK's picture: shaded composite under a key
 light and a fill, clipping planes around a box, cropping, a light kit, two independent components
-under MIP (the wavelet and its gradient magnitude, as VTK's independent-component MIP test); a
-vtkSmartVolumeMapper
+under MIP (the wavelet and its gradient magnitude, as VTK's independent-component MIP test), a
+custom shader (a vtkShaderProperty replacement with a custom uniform), a label map with a label's
+own colour and opacity, a 2D transfer function; a vtkSmartVolumeMapper
 script keeps its smart-only calls when its class becomes vtkDeepShadowSmartVolumeMapper; and
 a script that ends with `iren.Start()` runs with no display: Start() renders, saves the
 picture VTK_DEEPSHADOW_SCREENSHOT names and returns.
@@ -15,8 +16,9 @@ import sys
 import tempfile
 
 import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkObject
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane, vtkPlanes
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkPlane, vtkPlanes
 from vtkmodules.vtkImagingCore import vtkImageAppendComponents, vtkRTAnalyticSource
 from vtkmodules.vtkImagingGeneral import vtkImageGradientMagnitude
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkLightKit, vtkRenderer,
@@ -126,6 +128,59 @@ def independent_mip(mapper):
     return prop
 
 
+def image_of(values, origin=(0.0, 0.0, 0.0)):
+    """A vtkImageData of `values` (indexed [z][y][x], or [y][x][component] for a 2D image)."""
+    image = vtkImageData()
+    if values.ndim == 3 and values.dtype == np.uint8:
+        image.SetDimensions(values.shape[2], values.shape[1], values.shape[0])
+        components = 1
+    else:
+        image.SetDimensions(values.shape[1], values.shape[0], 1)
+        components = values.shape[2]
+    image.SetOrigin(origin)
+    image.GetPointData().SetScalars(numpy_to_vtk(values.reshape(-1, components), deep=True))
+    return image
+
+
+def label_map(mapper):
+    """Labels 1 (a ball, red and denser) and 2 (the half x < 0, its own faint opacity)."""
+    z, y, x = np.mgrid[-20:21, -20:21, -20:21]
+    labels = np.where(x * x + y * y + z * z < 144, 1, np.where(x < 0, 2, 0)).astype(np.uint8)
+    mapper.SetMaskInput(image_of(labels, (-20.0, -20.0, -20.0)))
+    mapper.SetMaskTypeToLabelMap()
+    prop = shaded_property()
+    red = vtkColorTransferFunction()
+    red.AddRGBPoint(40, 0.4, 0.0, 0.0)
+    red.AddRGBPoint(280, 1.0, 0.3, 0.2)
+    dense = vtkPiecewiseFunction()
+    dense.AddPoint(40, 0.0)
+    dense.AddPoint(120, 0.0)
+    dense.AddPoint(280, 0.8)
+    faint = vtkPiecewiseFunction()
+    faint.AddPoint(40, 0.0)
+    faint.AddPoint(200, 0.0)
+    faint.AddPoint(280, 0.2)
+    prop.SetLabelColor(1, red)
+    prop.SetLabelScalarOpacity(1, dense)
+    prop.SetLabelScalarOpacity(2, faint)
+    return prop
+
+
+def transfer_2d(mapper):
+    """A 256 x 128 RGBA function: blue to orange along the scalar, opacity rising with both."""
+    g, v = np.mgrid[0:128, 0:256] / np.array([[[127.0]], [[255.0]]])
+    rgba = np.stack([0.2 + 0.8 * v, 0.3 + 0.4 * v, 1.0 - 0.8 * v, np.clip(v - 0.45, 0, 1) * (0.2 + 0.8 * g)], axis=-1)
+    prop = shaded_property()
+    prop.SetTransferFunction2D(image_of(rgba.astype(np.float32)))
+    prop.SetTransferFunctionMode(vtkVolumeProperty.TF_2D)
+    return prop
+
+
+def custom_shader(mapper):
+    """VTK's custom-shader example's way: a tint by a custom uniform at //VTK::Base::Exit."""
+    mapper.tinted = True
+
+
 def draw(make_mapper, lights, configure=None, size=160, step=0.5):
     """A VTK example's pipeline: the wavelet, shaded, seen from an angle. `configure(mapper)`
     may return a property of its own."""
@@ -137,6 +192,11 @@ def draw(make_mapper, lights, configure=None, size=160, step=0.5):
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop or shaded_property())
+    if getattr(mapper, "tinted", False):
+        shader = volume.GetShaderProperty()
+        shader.GetFragmentCustomUniforms().SetUniform3f("u_tint", [1.0, 0.45, 0.2])
+        shader.AddFragmentShaderReplacement("//VTK::Base::Exit", True,
+                                            "//VTK::Base::Exit\n  g_fragColor.rgb *= u_tint;", False)
     renderer = vtkRenderer()
     renderer.AddVolume(volume)
     renderer.ResetCamera()
@@ -165,6 +225,9 @@ SCRIPTS = {
     "clipping planes around a box": (key_and_fill, clip_box, 0.02),
     "cropping to a sub-volume": (key_and_fill, crop, 0.02),
     "two independent components under MIP": (key_and_fill, independent_mip, 0.01),
+    "a custom shader tinting by a custom uniform": (key_and_fill, custom_shader, 0.01),
+    "a label map with a label's own colour and opacity": (key_and_fill, label_map, 0.01),
+    "a 2D transfer function": (key_and_fill, transfer_2d, 0.01),
 }
 
 for name, (lights, configure, floor) in SCRIPTS.items():
@@ -183,6 +246,12 @@ for name, (lights, configure, floor) in SCRIPTS.items():
     check(f"{name}: drawn by ours through the override", mapper.GetClassName() == "vtkDeepShadowVolumeMapper")
     check(f"{name}: VTK's picture is not empty", drawn > 0.1)
     check(f"{name}: VTK's picture (RMSE <= {bound:.4f})", difference <= bound)
+
+# The custom shader's check can fail: the tint changes VTK's picture.
+tinted, _ = draw(vtkGPUVolumeRayCastMapper, key_and_fill, custom_shader)
+plain, _ = draw(vtkGPUVolumeRayCastMapper, key_and_fill)
+print(f"VTK's picture tinted against untinted: RMSE {rmse(tinted, plain):.5f}")
+check("the tint shows in VTK's picture", rmse(tinted, plain) > 0.02)
 
 # The check can fail: another light is another picture.
 vtks, _ = draw(vtkGPUVolumeRayCastMapper, key_and_fill)
