@@ -285,6 +285,9 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
   glm::dvec4 accumulated(0.0);
   glm::dvec4 termAccumulated(0.0);
   const bool isosurface = !volume.IsoValues.empty();
+  // Under a prop scaled differently along its axes: this ray's world step in dataset units.
+  const double datasetStretch =
+    volume.WorldToDataset ? volume.DatasetScale * glm::length(*volume.WorldToDataset * ray.Direction) : 1.0;
   IsoCrossings crossings(isosurface ? &volume.IsoValues : nullptr);
   double previousT = t0; // an isosurface's receiver: the sample before its crossing
   // Each light's shadow factor at the sample at hand, looked up once, when something needs it
@@ -374,6 +377,10 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     if (volume.Gradient && alpha > 0.0)
     {
       alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);
+    }
+    if (volume.WorldToDataset)
+    {
+      alpha = CorrectOpacity(alpha, datasetStretch, 1.0);
     }
     if (alpha <= 0.0)
     {

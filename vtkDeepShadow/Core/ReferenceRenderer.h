@@ -50,6 +50,7 @@
 #include "Core/VolumeShading.h"
 #include "vtkDeepShadowCoreModule.h"
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstdint>
@@ -91,6 +92,13 @@ struct VolumeInstance
   std::shared_ptr<const VolumeGrid> Mask;
   /** With Mask: Mask is a label map (Mask.h), whose labels' colours and opacities show and cast. */
   std::shared_ptr<const LabelMap> Labels;
+  /**
+   * A prop scaled differently along its axes, composited: its linear part undone (world ->
+   * dataset) and its mean scale (the tables' unit), so that opacity is integrated per dataset
+   * unit as VTK's mapper does (Features/DatasetOpacity.glsl); empty otherwise.
+   */
+  std::optional<glm::dmat3> WorldToDataset;
+  double DatasetScale = 1.0;
   /** A 2D transfer function (Transfer2D.h; composite, one component) replacing Transfer's looks. */
   std::shared_ptr<const Transfer2D> Function2D;
   /** Several components per voxel (Components.h; composite only): Grid is component 0. */

@@ -129,6 +129,12 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
     blinnPhong ? deepshadow::ShadingModel::BlinnPhong : deepshadow::ShadingModel::VTK,
     static_cast<deepshadow::ShadingPath>(path), keyLit, lights);
   instance.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(mapper, property);
+  bool anisotropic = false;
+  instance.DatasetScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
+  if (anisotropic && !projection && instance.IsoValues.empty())
+  {
+    instance.WorldToDataset = glm::inverse(glm::dmat3(adapter::ToGlm(volume->GetMatrix())));
+  }
   auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
   if (vtkImageData* mask = gpuMapper && !several ? adapter::UsableMask(gpuMapper, image) : nullptr)
   {

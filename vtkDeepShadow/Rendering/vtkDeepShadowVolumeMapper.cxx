@@ -475,6 +475,12 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   frame.Context.Eye = frame.View.Unproject(0.5 * frame.View.GetWidth(), 0.5 * frame.View.GetHeight(), 0.0);
   frame.Context.View = frame.View;
   frame.Shade = !projection && property->GetShade(0) != 0;
+  bool anisotropic = false;
+  frame.DatasetScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
+  if (anisotropic && !projection && !isosurface)
+  {
+    frame.WorldToDataset = glm::inverse(glm::dmat3(adapter::ToGlm(volume->GetMatrix())));
+  }
   frame.ShadowTerm = !projection && this->OutputMode == OutputShadowTerm;
   frame.Lit = frame.Shade || (!projection && this->ShadowTechnique) || frame.ShadowTerm;
   frame.Transfer = impl.Transfer.GetTexture();

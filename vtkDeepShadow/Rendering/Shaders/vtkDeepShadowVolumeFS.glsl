@@ -59,6 +59,7 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::VolumeSegments::Dec
 //DeepShadow::Projection::Dec
 //DeepShadow::UserShader::Dec
+//DeepShadow::DatasetOpacity::Dec
 
 void main()
 {
@@ -92,6 +93,7 @@ void main()
   //DeepShadow::VolumeSegments::Init
   //DeepShadow::Projection::Init
   //DeepShadow::Isosurface::Init
+  //DeepShadow::DatasetOpacity::Init
   //DeepShadow::UserShader::Init
   for (int k = 0;; ++k)
   {
@@ -117,6 +119,7 @@ void main()
     //DeepShadow::Mask::Impl
     //DeepShadow::LabelMap::Impl
     //DeepShadow::GradientOpacity::Impl
+    //DeepShadow::DatasetOpacity::Impl
     if (transfer.a <= 0.0)
     {
       continue;

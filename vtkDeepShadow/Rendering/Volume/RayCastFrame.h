@@ -7,6 +7,9 @@
 #include "Core/Projection.h"
 #include "Volume/ShadowContext.h"
 
+#include <glm/mat3x3.hpp>
+
+#include <optional>
 #include <vector>
 
 class vtkDeepShadowTechnique;
@@ -50,6 +53,13 @@ struct RayCastFrame
   VolumeSegments* Segments = nullptr;         // drawn into, not onto the screen (not with Layers)
   int SegmentGuest = 0;                       // this volume's slice of Segments
   const UserShaderCode* UserCode = nullptr;   // a vtkShaderProperty's code taken; null: none
+  /**
+   * A vtkVolume scaled differently along its axes, composited: its matrix's linear part undone
+   * (world -> dataset), so that opacity is integrated per dataset unit as VTK's mapper does
+   * (feature DatasetOpacity); empty otherwise.
+   */
+  std::optional<glm::dmat3> WorldToDataset;
+  double DatasetScale = 1.0; // the matrix's mean scale, which the tables are corrected for
 };
 
 }

@@ -199,12 +199,14 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
       break;
     }
   }
+  // The view integrates opacity per dataset unit along each ray (Features/DatasetOpacity.glsl);
+  // light rays do not.
   bool anisotropic = false;
   adapter::DatasetLengthScale(propMatrix, &anisotropic);
-  if (anisotropic)
+  if (anisotropic && shadowed)
   {
-    said.push_back("a vtkVolume scaled differently along its axes: opacity per dataset unit "
-                   "uses the mean scale (VTK's varies with the direction)");
+    said.push_back("a vtkVolume scaled differently along its axes: light rays integrate opacity at its mean "
+                   "scale, so shadows are lighter or darker along its longer or shorter axes than the view");
   }
   return said;
 }

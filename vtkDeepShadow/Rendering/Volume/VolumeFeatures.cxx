@@ -305,6 +305,12 @@ const std::vector<VolumeFeature>& VolumeFeatures()
       },
       BindVTKShading, nullptr },
     { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr, nullptr, nullptr },
+    { "DatasetOpacity", [](const Frame& f) { return f.WorldToDataset.has_value(); }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        sink.Set("u_worldToDataset", glm::mat3(*f.WorldToDataset));
+        sink.Set("u_datasetScale", static_cast<float>(f.DatasetScale));
+      },
+      nullptr },
     { "ShadowTerm", [](const Frame& f) { return f.ShadowTerm; }, nullptr, nullptr, nullptr },
     { "Hash", [](const Frame& f) { return f.Jitter; }, nullptr, nullptr, nullptr },
     { "Jitter", [](const Frame& f) { return f.Jitter; }, nullptr,

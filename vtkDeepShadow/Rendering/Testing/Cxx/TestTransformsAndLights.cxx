@@ -2,7 +2,8 @@
 // anisotropic spacing, a direction matrix, the vtkVolume's rotation/scale/translation, and
 // several lights of every kind at once (directional, positional with attenuation, spot),
 // with nearest and linear interpolation, and a mirroring transform (negative scale). The
-// picture is VTK's: its own mapper draws the same scene within RMSE 0.01.
+// picture is VTK's: its own mapper draws the same scene within RMSE 0.01, and the volume
+// stretched three times along z, unshaded, from two sides within 0.005.
 //
 // Stated tolerance (GPU vs CPU twin): RMSE <= 1.5/255, <= 0.5% of pixels off by > 6/255.
 #include "DeepShadowTestUtilities.h"
@@ -123,5 +124,24 @@ int TestTransformsAndLights(int argc, char* argv[])
   volume->SetMapper(theirs);
   window->Render();
   ok = WithinTolerance("VTK's mapper", ours, Grab(window), 0.01, 8.0 / 255.0, 0.03) && ok;
+
+  // Stretched three times along z: VTK integrates opacity per dataset unit, whatever the
+  // direction (feature DatasetOpacity; with the mean scale instead, VTK's wavelet differed by
+  // 0.011 and 0.024 seen from these two sides).
+  volume->SetScale(1.0, 1.0, 3.0);
+  property->ShadeOff();
+  for (const double azimuth : { 0.0, 60.0 })
+  {
+    renderer->GetActiveCamera()->Azimuth(azimuth);
+    renderer->ResetCamera();
+    volume->SetMapper(mapper);
+    window->Render();
+    const deepshadow::Image stretched = Grab(window);
+    volume->SetMapper(theirs);
+    window->Render();
+    ok = WithinTolerance(("stretched along z, turned " + std::to_string(static_cast<int>(azimuth)) +
+                           " degrees, VTK's mapper").c_str(),
+           stretched, Grab(window), 0.005, 8.0 / 255.0, 0.01) && ok;
+  }
   return ok && result != vtkTesting::FAILED ? EXIT_SUCCESS : EXIT_FAILURE;
 }
