@@ -69,11 +69,6 @@ glm::dvec4 ProjectionAccumulator::Result(const std::function<glm::dvec4(double)>
   return glm::dvec4(0.0);
 }
 
-}
-
-namespace deepshadow
-{
-
 ComponentProjection::ComponentProjection(
   const ProjectionSettings& settings, const ComponentLookup& lookup, double step)
   : Settings(settings)
