@@ -155,6 +155,13 @@ std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* pr
  */
 std::optional<GradientOpacity> MakeGradientOpacity(
   vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing);
+/**
+ * Dependent components' gradient opacity as VTK 9.1 applies it: component 0's gradient
+ * (`firstRange` its range), through the function's table over a quarter of the opacity
+ * component's range (`lastRange`), indexed by the magnitude over a quarter of component 0's.
+ */
+std::optional<GradientOpacity> MakeDependentGradientOpacity(vtkVolumeMapper* mapper, vtkVolumeProperty* property,
+  const glm::dvec2& firstRange, const glm::dvec2& lastRange, const glm::dvec3& spacing);
 
 /**
  * The mapper's mask input when it can be drawn: an image of `volume`'s dimensions, under

@@ -206,6 +206,20 @@ std::optional<GradientOpacity> MakeGradientOpacity(
   return GradientOpacity::For(FromVTK(function), range, spacing);
 }
 
+std::optional<GradientOpacity> MakeDependentGradientOpacity(vtkVolumeMapper* mapper, vtkVolumeProperty* property,
+  const glm::dvec2& firstRange, const glm::dvec2& lastRange, const glm::dvec3& spacing)
+{
+  std::optional<GradientOpacity> gradient = MakeGradientOpacity(mapper, property, lastRange, spacing);
+  if (gradient)
+  {
+    // min(|g0|, r0 / 4) r_last / r0 = min(|g0| r_last / r0, r_last / 4): the table's magnitude.
+    const double first = firstRange.y > firstRange.x ? firstRange.y - firstRange.x : 1.0;
+    const double last = lastRange.y > lastRange.x ? lastRange.y - lastRange.x : 1.0;
+    gradient->IndexScale *= last / first;
+  }
+  return gradient;
+}
+
 std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given)
 {
   std::vector<double> values;

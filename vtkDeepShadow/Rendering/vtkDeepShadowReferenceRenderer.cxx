@@ -159,6 +159,11 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
     instance.Gradient = adapter::MakeGradientOpacity(mapper, property, grid->GetRange(),
       glm::make_vec3(image->GetSpacing()));
   }
+  else if (instance.Components->Mode != deepshadow::ComponentMode::Independent)
+  {
+    instance.Gradient = adapter::MakeDependentGradientOpacity(mapper, property, grid->GetRange(),
+      instance.Components->Others.back()->GetRange(), glm::make_vec3(image->GetSpacing()));
+  }
   if (vtkImageData* function = adapter::UsableTransfer2D(mapper, property, several ? 2 : 1, error))
   {
     instance.Function2D = std::make_shared<deepshadow::Transfer2D>(

@@ -56,12 +56,14 @@
 #include <glm/mat4x4.hpp> // For glm::dmat4
 #endif
 #include <memory> // For std::unique_ptr, std::shared_ptr
+#include <optional> // For std::optional
 #include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkDeepShadowTechnique;
 namespace deepshadow
 {
+struct GradientOpacity;
 struct LabelMap;
 struct PassFrame;
 struct RayCastFrame;
@@ -437,6 +439,9 @@ private:
    */
   bool UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, double step,
     bool uncorrected, double unitScale, deepshadow::RayCastFrame& frame);
+  /** Gradient opacity's table, rebuilt when it changed, into the frame's context (none: nothing). */
+  void UpdateGradientOpacity(vtkOpenGLRenderWindow* window,
+    const std::optional<deepshadow::GradientOpacity>& gradient, deepshadow::RayCastFrame& frame);
   /** A label map's tables (a row per label), rebuilt when they changed, into the frame's context. */
   void UpdateLabelTables(
     vtkOpenGLRenderWindow* window, const deepshadow::LabelMap& labels, deepshadow::RayCastFrame& frame);

@@ -83,32 +83,39 @@ void vtkDeepShadowVolumeMapper::UpdateTables(
   this->EmptyBlockFraction = this->EmptySpaceSkipping ? impl.Occupancy.GetEmptyFraction() : 0.0;
 }
 
+void vtkDeepShadowVolumeMapper::UpdateGradientOpacity(vtkOpenGLRenderWindow* window,
+  const std::optional<deepshadow::GradientOpacity>& gradient, deepshadow::RayCastFrame& frame)
+{
+  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
+  // measures (a table of 1024; the magnitude's range depends on the data's).
+  if (!gradient)
+  {
+    return;
+  }
+  Internals& impl = *this->Impl;
+  std::vector<double> key{ gradient->MaxMagnitude };
+  for (const auto& [x, y] : gradient->Function.GetNodes())
+  {
+    key.insert(key.end(), { x, y });
+  }
+  if (impl.GradientOpacity.NeedsUpdate(key))
+  {
+    deepshadow::TransferFunction table; // the function as an opacity for a unit step
+    table.Opacity = gradient->Function;
+    impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
+    this->LastPasses.emplace_back("gradient-opacity-table");
+  }
+  frame.Context.Gradient = *gradient;
+  frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
+  frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
+}
+
 bool vtkDeepShadowVolumeMapper::UpdateOpacityFactors(vtkOpenGLRenderWindow* window,
   vtkVolumeProperty* property, vtkImageData* input, deepshadow::RayCastFrame& frame)
 {
   Internals& impl = *this->Impl;
-  // Gradient opacity, drawn and cast: its function sampled over the magnitudes VTK's mapper
-  // measures (a table of 1024; the magnitude's range depends on the data's).
-  const std::optional<deepshadow::GradientOpacity> gradient =
-    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing()));
-  if (gradient)
-  {
-    std::vector<double> key{ gradient->MaxMagnitude };
-    for (const auto& [x, y] : gradient->Function.GetNodes())
-    {
-      key.insert(key.end(), { x, y });
-    }
-    if (impl.GradientOpacity.NeedsUpdate(key))
-    {
-      deepshadow::TransferFunction table; // the function as an opacity for a unit step
-      table.Opacity = gradient->Function;
-      impl.GradientOpacity.Update(window, table, { 0.0, gradient->MaxMagnitude }, 1024, 1.0, std::move(key));
-      this->LastPasses.emplace_back("gradient-opacity-table");
-    }
-    frame.Context.Gradient = *gradient;
-    frame.Context.GradientOpacityTable = impl.GradientOpacity.GetTexture();
-    frame.Context.GradientOpacityMap = impl.GradientOpacity.GetTable().CoordinateMap();
-  }
+  this->UpdateGradientOpacity(window,
+    adapter::MakeGradientOpacity(this, property, impl.Volume.GetRange(), glm::make_vec3(input->GetSpacing())), frame);
   // A 2D transfer function's image, uploaded when it changed; drawn and cast.
   std::string problem;
   if (vtkImageData* image = adapter::UsableTransfer2D(this, property, 1, problem))
@@ -342,6 +349,13 @@ bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, 
     component.Transfer = function;
     context.OtherComponents.push_back(component);
     frame.ComponentTransfers.push_back(table.GetTexture());
+  }
+  if (set.Mode != deepshadow::ComponentMode::Independent)
+  {
+    this->UpdateGradientOpacity(window,
+      adapter::MakeDependentGradientOpacity(this, property, impl.Volume.GetRange(),
+        context.OtherComponents.back().Range, glm::make_vec3(this->GetImageInput()->GetSpacing())),
+      frame);
   }
   return true;
 }

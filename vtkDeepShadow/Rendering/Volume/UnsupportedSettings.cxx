@@ -54,9 +54,11 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
       said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
         ": it is drawn exactly, without shadows");
     }
-    if (property && adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
+    if (property && property->GetIndependentComponents() &&
+      adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
     {
-      said.push_back("gradient opacity is not drawn with several components: the volume is drawn without it");
+      said.push_back("gradient opacity is not drawn with several independent components: the volume is drawn "
+                     "without it");
     }
     if (mapper->GetMaskInput())
     {

@@ -5,7 +5,9 @@
 //    (TestGradientOpacity's rule): 2 and 4 independent components (per-component functions,
 //    and weights), unshaded and shaded (each component lit with its own gradient); 2
 //    dependent components (luminance, opacity) and 4 (RGBA), each component over its own
-//    range. Ours drawing component 0 alone must fail each; the GPU matches its CPU twin.
+//    range, and the dependent ones with gradient opacity (component 0's gradient, as VTK).
+//    Ours drawing component 0 alone must fail each (and without gradient opacity where it
+//    is set); the GPU matches its CPU twin.
 // 2. Shadows: the shadow scene's volume as two independent components (the ball in one, the
 //    plate and pillar in the other): every technique matches its CPU twin, and the ball's
 //    shadow darkens the floor, which lies in the other component.
@@ -167,11 +169,19 @@ vtkSmartPointer<vtkVolumeProperty> MirroredFunctions(vtkVolumeProperty* property
 }
 
 bool MatchesVTK(vtkRenderWindow* window, int count, Mode mode, bool shade, const std::string& what,
-  int blend = vtkVolumeMapper::COMPOSITE_BLEND, bool mirrored = false)
+  int blend = vtkVolumeMapper::COMPOSITE_BLEND, bool mirrored = false, bool gradientOpacity = false)
 {
   bool ok = true;
   auto data = MakeComponents(count);
   auto property = MakeProperty(mode, count, shade);
+  if (gradientOpacity)
+  {
+    // Faint where component 0 is flat, as VTK applies it to dependent components.
+    vtkNew<vtkPiecewiseFunction> gradient;
+    gradient->AddPoint(0.0, 0.15);
+    gradient->AddPoint(20.0, 1.0);
+    property->SetGradientOpacity(0, gradient);
+  }
   if (mirrored)
   {
     // Minimum intensity: the fields and functions mirrored, so that the minimum shows.
@@ -181,13 +191,22 @@ bool MatchesVTK(vtkRenderWindow* window, int count, Mode mode, bool shade, const
   const Drawn ours = Draw(window, data, false, property, 0.5f, false, blend);
   // Ours reads the property without adding to it: a default gradient opacity made here
   // changed VTK's picture drawn after ours (RMSE 0.044 with 4 weighted components).
-  ok = Check((what + ": the property is left as it was").c_str(), !property->HasGradientOpacity(0)) && ok;
+  ok = Check((what + ": the property is left as it was").c_str(), property->HasGradientOpacity(0) == gradientOpacity) &&
+    ok;
   const Drawn vtks = Draw(window, data, true, property, 0.5f, false, blend);
   const deepshadow::testing::VTKTolerance tolerance = deepshadow::testing::CalibrateOnVTK(what, vtks.Picture,
     [&](float scale, bool jitter) { return Draw(window, data, true, property, 0.5f * scale, jitter, blend).Picture; });
   ok = WithinTolerance(what.c_str(), ours.Picture, vtks.Picture, tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
   ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0, 0.005) && ok;
   const auto single = MakeProperty(Mode::Independent, 1, shade);
+  if (gradientOpacity)
+  {
+    property->SetDisableGradientOpacity(0, 1);
+    ok = !WithinTolerance((what + ", ours without it (must fail)").c_str(),
+           Draw(window, data, false, property, 0.5f, false, blend).Picture, vtks.Picture, tolerance.MaxRMSE,
+           8.0 / 255.0, tolerance.MaxFraction) && ok;
+    property->SetDisableGradientOpacity(0, 0);
+  }
   ok = !WithinTolerance((what + ", component 0 alone (must fail)").c_str(),
          Draw(window, FirstComponent(data), false, single, 0.5f, false, blend).Picture, vtks.Picture,
          tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
@@ -275,6 +294,10 @@ int TestComponents(int, char*[])
   ok = MatchesVTK(window, 4, Mode::Weighted, true, "4 independent components, weighted, shaded") && ok;
   ok = MatchesVTK(window, 2, Mode::LuminanceAlpha, true, "2 dependent components (luminance, opacity)") && ok;
   ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA)") && ok;
+  ok = MatchesVTK(window, 2, Mode::LuminanceAlpha, true, "2 dependent components, gradient opacity",
+         vtkVolumeMapper::COMPOSITE_BLEND, false, true) && ok;
+  ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA), gradient opacity",
+         vtkVolumeMapper::COMPOSITE_BLEND, false, true) && ok;
   ok = ProjectionsMatch(window) && ok;
 
   // Shadows: the ball (200) in component 0, the plate and pillar in component 1.
