@@ -149,7 +149,7 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
   caster.Mask = volume.Mask.get();
   caster.Labels = volume.Labels.get();
   caster.Function2D = volume.Function2D.get();
-  caster.LabelStep = settings.SampleDistance;
+  caster.ViewStep = settings.SampleDistance;
   caster.LabelTables = prepared.LabelTables.get();
   caster.Eye = scene.View.Unproject(0.5 * scene.View.GetWidth(), 0.5 * scene.View.GetHeight(), 0.0);
   caster.View = &scene.View;

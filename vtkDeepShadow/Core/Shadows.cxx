@@ -113,7 +113,7 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
   if (this->Function2D)
   {
     rgba = this->Function2D->Lookup(scalar, sample.Magnitude);
-    rgba.a = CorrectOpacity(rgba.a, step / this->LabelStep, 1.0); // it holds for one view step
+    rgba.a = CorrectOpacity(rgba.a, step / this->ViewStep, 1.0); // it holds for one view step
   }
   else
   {
@@ -124,7 +124,7 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
   }
   if (this->Labels)
   {
-    rgba = this->Labels->Apply(rgba, scalar, sample.Label, step / this->LabelStep, this->LabelTables).Whole();
+    rgba = this->Labels->Apply(rgba, scalar, sample.Label, step / this->ViewStep, this->LabelTables).Whole();
   }
   rgba.a *= sample.OpacityScale;
   return rgba;

@@ -229,13 +229,14 @@ struct ShadowCaster
   const VolumeGrid* Mask = nullptr;
   /**
    * Optional, with Mask: Mask is a label map, whose labels' colours and opacities cast (from
-   * LabelTables, GPU twin, or the functions), their opacities holding for a step of LabelStep.
+   * LabelTables, GPU twin, or the functions), their opacities holding for a step of ViewStep.
    */
   const LabelMap* Labels = nullptr;
   const std::vector<TransferTable>* LabelTables = nullptr;
-  double LabelStep = 1.0;
+  /** The view's step: what a label's or a 2D function's opacity holds for (uncorrected, as VTK's). */
+  double ViewStep = 1.0;
   /** Optional: a 2D transfer function (Transfer2D.h) replacing Transfer's colour and opacity,
-   * its opacities holding for a step of LabelStep. */
+   * its opacities holding for a step of ViewStep. */
   const Transfer2D* Function2D = nullptr;
   /** Several components (Components.h): their colours and opacities replace Transfer's. */
   const ComponentLookup* Components = nullptr;

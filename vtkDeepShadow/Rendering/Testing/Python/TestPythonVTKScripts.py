@@ -46,19 +46,26 @@ def wavelet():
     return source.GetOutput()
 
 
+def colors(*nodes):
+    """A vtkColorTransferFunction through (x, r, g, b) nodes."""
+    function = vtkColorTransferFunction()
+    for node in nodes:
+        function.AddRGBPoint(*node)
+    return function
+
+
+def opacities(*nodes):
+    """A vtkPiecewiseFunction through (x, y) nodes."""
+    function = vtkPiecewiseFunction()
+    for node in nodes:
+        function.AddPoint(*node)
+    return function
+
+
 def shaded_property():
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(40, 0.1, 0.2, 0.9)
-    color.AddRGBPoint(160, 0.9, 0.6, 0.2)
-    color.AddRGBPoint(280, 1.0, 1.0, 0.8)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(40, 0.0)
-    opacity.AddPoint(150, 0.0)
-    opacity.AddPoint(200, 0.6)
-    opacity.AddPoint(280, 0.9)
     prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
+    prop.SetColor(colors((40, 0.1, 0.2, 0.9), (160, 0.9, 0.6, 0.2), (280, 1.0, 1.0, 0.8)))
+    prop.SetScalarOpacity(opacities((40, 0.0), (150, 0.0), (200, 0.6), (280, 0.9)))
     prop.ShadeOn()
     prop.SetInterpolationTypeToLinear()
     prop.SetAmbient(0.2)
@@ -117,14 +124,8 @@ def independent_mip(mapper):
     prop = shaded_property()
     prop.ShadeOff()
     prop.SetIndependentComponents(True)
-    green = vtkColorTransferFunction()
-    green.AddRGBPoint(0.0, 0.0, 0.1, 0.0)
-    green.AddRGBPoint(20.0, 0.2, 1.0, 0.3)
-    ramp = vtkPiecewiseFunction()
-    ramp.AddPoint(0.0, 0.0)
-    ramp.AddPoint(20.0, 0.8)
-    prop.SetColor(1, green)
-    prop.SetScalarOpacity(1, ramp)
+    prop.SetColor(1, colors((0.0, 0.0, 0.1, 0.0), (20.0, 0.2, 1.0, 0.3)))
+    prop.SetScalarOpacity(1, opacities((0.0, 0.0), (20.0, 0.8)))
     return prop
 
 
@@ -149,20 +150,9 @@ def label_map(mapper):
     mapper.SetMaskInput(image_of(labels, (-20.0, -20.0, -20.0)))
     mapper.SetMaskTypeToLabelMap()
     prop = shaded_property()
-    red = vtkColorTransferFunction()
-    red.AddRGBPoint(40, 0.4, 0.0, 0.0)
-    red.AddRGBPoint(280, 1.0, 0.3, 0.2)
-    dense = vtkPiecewiseFunction()
-    dense.AddPoint(40, 0.0)
-    dense.AddPoint(120, 0.0)
-    dense.AddPoint(280, 0.8)
-    faint = vtkPiecewiseFunction()
-    faint.AddPoint(40, 0.0)
-    faint.AddPoint(200, 0.0)
-    faint.AddPoint(280, 0.2)
-    prop.SetLabelColor(1, red)
-    prop.SetLabelScalarOpacity(1, dense)
-    prop.SetLabelScalarOpacity(2, faint)
+    prop.SetLabelColor(1, colors((40, 0.4, 0.0, 0.0), (280, 1.0, 0.3, 0.2)))
+    prop.SetLabelScalarOpacity(1, opacities((40, 0.0), (120, 0.0), (280, 0.8)))
+    prop.SetLabelScalarOpacity(2, opacities((40, 0.0), (200, 0.0), (280, 0.2)))
     return prop
 
 
