@@ -5,13 +5,18 @@
 # technique: frame times, build times, errors), gallery/ and scenes/ (pictures to look at).
 # Needs a build (scripts/setup.sh). Where the driver's EGL vendor file is outside glvnd's
 # default folders (containers often mount it elsewhere), point __EGL_VENDOR_LIBRARY_FILENAMES
-# at it. Usage: scripts/gpu-check.sh [OUTDIR]
+# at it. GPU_CHECK_CTEST_ARGS adds ctest arguments (e.g. -E to leave out tests whose tools the
+# machine lacks); GPU_CHECK_STEP_LIMIT (seconds, default none) stops each step after that long,
+# so that a leased machine returns what the finished steps wrote.
+# Usage: scripts/gpu-check.sh [OUTDIR]
 set -uo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 out=${1:-$root/out/gpu}
 bin=$root/build/bin
 mkdir -p "$out"
 export VTK_DEEPSHADOW_BACKEND=egl DISPLAY= WAYLAND_DISPLAY=
+limit=${GPU_CHECK_STEP_LIMIT:-0}
+step() { if [ "$limit" -gt 0 ]; then timeout "$limit" "$@"; else "$@"; fi; }
 
 "$bin/deepshadow" render --scene box --size 64x64 --frames 1 --out "$out/probe.png" \
   --json "$out/probe.json" || exit 1
@@ -21,9 +26,12 @@ case $renderer in
   *llvmpipe*) echo "note: that is Mesa's CPU rasterizer, not a GPU (is the driver's EGL vendor file found?)" ;;
 esac
 
-(cd "$root/build" && ctest -j"$(nproc)" --output-on-failure) > "$out/ctest.txt" 2>&1
+# shellcheck disable=SC2086 # the extra arguments are words
+(cd "$root/build" && step ctest -j"$(nproc)" --output-on-failure ${GPU_CHECK_CTEST_ARGS:-}) \
+  > "$out/ctest.txt" 2>&1
 echo "ctest: $(grep -E 'tests passed|tests failed' "$out/ctest.txt" | tail -1) (details in $out/ctest.txt)"
-"$bin/deepshadow" bench --json "$out/bench.json"
-"$bin/deepshadow" shadow-bench --json "$out/shadows.json"
-"$bin/deepshadow" gallery --out "$out/gallery" | tail -1
-"$bin/deepshadow" all --out "$out/scenes" | tail -1
+step "$bin/deepshadow" bench --json "$out/bench.json"
+step "$bin/deepshadow" shadow-bench --json "$out/shadows.json"
+step "$bin/deepshadow" gallery --out "$out/gallery" | tail -1
+step "$bin/deepshadow" all --out "$out/scenes" | tail -1
+step "$bin/deepshadow" bench --blend-modes all --json "$out/bench-modes.json"
