@@ -17,6 +17,40 @@ glm::dvec4 ComponentSet::Sample(const VolumeGrid& first, const glm::dvec3& index
   return values;
 }
 
+bool ComponentSet::HasGradients() const
+{
+  return std::any_of(this->Gradients.begin(), this->Gradients.end(),
+    [](const std::optional<GradientOpacity>& gradient) { return gradient.has_value(); });
+}
+
+glm::dvec4 ComponentSet::GradientFactors(
+  const VolumeGrid& first, const glm::dvec3& index, Interpolation interpolation) const
+{
+  glm::dvec4 factors(1.0);
+  for (int i = 0; i < std::min(this->Count(), static_cast<int>(this->Gradients.size())); ++i)
+  {
+    if (const std::optional<GradientOpacity>& gradient = this->Gradients[static_cast<size_t>(i)])
+    {
+      factors[i] = gradient->Factor(this->Grid(first, i), index, interpolation);
+    }
+  }
+  return factors;
+}
+
+void ComponentSet::ApplyGradients(
+  ComponentColors& colors, const VolumeGrid& first, const glm::dvec3& index, Interpolation interpolation) const
+{
+  for (int i = 0; i < std::min(this->Count(), static_cast<int>(this->Gradients.size())); ++i)
+  {
+    const std::optional<GradientOpacity>& gradient = this->Gradients[static_cast<size_t>(i)];
+    glm::dvec4& color = colors[static_cast<size_t>(i)];
+    if (gradient && color.a > 0.0)
+    {
+      color.a *= gradient->Factor(this->Grid(first, i), index, interpolation);
+    }
+  }
+}
+
 glm::dvec4 CombineComponents(const ComponentSet& set, const ComponentColors& colors, const glm::dvec4& values)
 {
   switch (set.Mode)

@@ -3,7 +3,13 @@
 //   - Independent: each component has its own transfer function, material and weight; each
 //     gives a colour c_i and an opacity a_i, and a sample is colour sum(w_i a_i c_i) / alpha,
 //     alpha = sum(a_i^2) / sum(w_i a_i) (components of weight 0 add nothing): VTK's shader.
-//     Shaded, each component is lit with its own gradient and material.
+//     Shaded, each component is lit with its own gradient and material. With gradient
+//     opacity (vtkVolumeProperty::SetGradientOpacity(i, f)), each component's opacity is
+//     multiplied by its own function at its own gradient magnitude before they combine, as
+//     the property documents it. VTK 9.1's shader (unchanged through 9.3) instead multiplies
+//     each component's opacity by every component's function and weight, all at that
+//     component's gradient (so identical functions act N times), and only when component 0
+//     has one: not copied, said once by the mapper.
 //   - LuminanceAlpha (2 dependent components): colour from component 0 through the colour
 //     function, opacity from component 1 through the opacity function.
 //   - RGBA (4 dependent components): VTK's shader reads these as its texture holds them, not
@@ -16,6 +22,7 @@
 #ifndef deepshadow_Components_h
 #define deepshadow_Components_h
 
+#include "Core/GradientOpacity.h"
 #include "Core/OpticalModel.h"
 #include "Core/TransferFunction.h"
 #include "Core/VolumeGrid.h"
@@ -26,6 +33,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace deepshadow
@@ -53,6 +61,11 @@ struct VTKDEEPSHADOWCORE_EXPORT ComponentSet
   /** Per component: its material (independent components are lit apart). */
   std::vector<Material> Materials;
   glm::dvec4 Weights{ 1.0 };
+  /**
+   * Independent: per component, its gradient opacity over its own range (none: empty, or a
+   * component without one). Dependent components take the volume's (VolumeInstance::Gradient).
+   */
+  std::vector<std::optional<GradientOpacity>> Gradients;
   /** RGBA: a component's texture value per data value (1 / 255 for unsigned char, ...). */
   glm::dvec4 TextureScale{ 1.0 };
 
@@ -63,6 +76,13 @@ struct VTKDEEPSHADOWCORE_EXPORT ComponentSet
   }
   /** The components' values at a continuous index (unused components 0). */
   glm::dvec4 Sample(const VolumeGrid& first, const glm::dvec3& index, Interpolation interpolation) const;
+  /** Whether any component has its own gradient opacity. */
+  bool HasGradients() const;
+  /** Each component's gradient-opacity factor at a continuous index (1: it has none). */
+  glm::dvec4 GradientFactors(const VolumeGrid& first, const glm::dvec3& index, Interpolation interpolation) const;
+  /** Each visible component's opacity in `colors` times its factor at a continuous index. */
+  void ApplyGradients(
+    ComponentColors& colors, const VolumeGrid& first, const glm::dvec3& index, Interpolation interpolation) const;
   /** Whether each component is lit apart (independent and shaded). */
   bool LitApart(bool shade) const { return shade && this->Mode == ComponentMode::Independent; }
 };
@@ -96,10 +116,18 @@ public:
 
   /** `step`: the exact functions' (tables keep theirs). */
   ComponentColors Colors(const glm::dvec4& values, double step) const;
-  /** The sample's colour and opacity, unlit (CombineComponents of Colors). */
-  glm::dvec4 Combined(const glm::dvec4& values, double step) const
+  /**
+   * The sample's colour and opacity, unlit (CombineComponents of Colors), each component's
+   * opacity times its factor in `gradientFactors` (ComponentSet::GradientFactors).
+   */
+  glm::dvec4 Combined(const glm::dvec4& values, double step, const glm::dvec4& gradientFactors = glm::dvec4(1.0)) const
   {
-    return CombineComponents(this->Set, this->Colors(values, step), values);
+    ComponentColors colors = this->Colors(values, step);
+    for (size_t i = 0; i < colors.size(); ++i)
+    {
+      colors[i].a *= gradientFactors[static_cast<glm::length_t>(i)];
+    }
+    return CombineComponents(this->Set, colors, values);
   }
   const ComponentSet& GetSet() const { return this->Set; }
   /** Component `c`'s finite data range (its table spans it). */

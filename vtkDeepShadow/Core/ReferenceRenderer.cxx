@@ -337,6 +337,7 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
     {
       componentValues = volume.Components->Sample(grid, index, volume.Sampling);
       componentColors = prepared.Components->Colors(componentValues, dt);
+      volume.Components->ApplyGradients(componentColors, grid, index, volume.Sampling);
       const glm::dvec4 combined =
         CombineComponents(*volume.Components, componentColors, componentValues);
       color = glm::dvec3(combined);
@@ -805,7 +806,9 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           glm::dvec4 term(0.0);
           const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[0], prepared[0], ray,
             std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
-          pixel = glm::dvec3(rgba) + (1.0 - rgba.a) * pixel;
+          // The GPU writes the volume to an 8-bit target, which clamps its colour (above 1 where
+          // independent components overlap, as in VTK's) before it is blended.
+          pixel = glm::clamp(glm::dvec3(rgba), 0.0, 1.0) + (1.0 - rgba.a) * pixel;
           termPixel = glm::dvec3(term) + (1.0 - term.a) * termPixel;
         }
         image.Set(x, y, pixel);

@@ -86,7 +86,12 @@ CastSample ShadowCaster::Read(const glm::dvec3& index, IsoCrossings& crossings) 
   }
   if (this->Components)
   {
-    sample.Values = this->Components->GetSet().Sample(*this->Grid, index, this->Sampling);
+    const ComponentSet& set = this->Components->GetSet();
+    sample.Values = set.Sample(*this->Grid, index, this->Sampling);
+    if (set.HasGradients())
+    {
+      sample.ComponentGradientFactors = set.GradientFactors(*this->Grid, index, this->Sampling);
+    }
   }
   return sample;
 }
@@ -105,7 +110,7 @@ glm::dvec4 ShadowCaster::Sample(const CastSample& sample, double step) const
   }
   if (this->Components)
   {
-    glm::dvec4 rgba = this->Components->Combined(sample.Values, step);
+    glm::dvec4 rgba = this->Components->Combined(sample.Values, step, sample.ComponentGradientFactors);
     rgba.a *= sample.OpacityScale;
     return rgba;
   }

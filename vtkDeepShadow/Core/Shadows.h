@@ -187,6 +187,7 @@ struct CastSample
   double Scalar;
   double OpacityScale;
   glm::dvec4 Values{ 0.0 }; // every component's value (Components.h), when there are several
+  glm::dvec4 ComponentGradientFactors{ 1.0 }; // each component's gradient opacity (Components.h)
   int Label = 0;            // its label under a label map (Mask.h)
   double Magnitude = 0.0;   // its gradient magnitude under a 2D transfer function (Transfer2D.h)
 };

@@ -149,12 +149,19 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
  */
 std::vector<double> MakeIsoValues(vtkVolumeMapper* mapper, vtkVolumeProperty* property, int* given = nullptr);
 /**
- * The property's gradient opacity for data of scalar range `range` and dataset spacing
- * `spacing`, when the mapper composites (VTK's applies it there only) and it changes
- * anything (enabled, some node below 1); empty otherwise.
+ * The property's gradient opacity (of `component`) for data of scalar range `range` and
+ * dataset spacing `spacing`, when the mapper composites (VTK's applies it there only) and it
+ * changes anything (enabled, some node below 1); empty otherwise.
  */
-std::optional<GradientOpacity> MakeGradientOpacity(
-  vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing);
+std::optional<GradientOpacity> MakeGradientOpacity(vtkVolumeMapper* mapper, vtkVolumeProperty* property,
+  const glm::dvec2& range, const glm::dvec3& spacing, int component = 0);
+/**
+ * Independent components' gradient opacities (Core/Components.h), each component's own over
+ * its own range (`ranges`, component 0's first); empty when none has one, or the components
+ * are dependent.
+ */
+std::vector<std::optional<GradientOpacity>> MakeComponentGradients(vtkVolumeMapper* mapper,
+  vtkVolumeProperty* property, const std::vector<glm::dvec2>& ranges, const glm::dvec3& spacing);
 /**
  * Dependent components' gradient opacity as VTK 9.1 applies it: component 0's gradient
  * (`firstRange` its range), through the function's table over a quarter of the opacity

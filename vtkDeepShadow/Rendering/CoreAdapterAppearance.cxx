@@ -179,19 +179,19 @@ ProjectionSettings MakeProjection(vtkVolumeMapper* mapper, const glm::dvec2& dat
   return projection;
 }
 
-std::optional<GradientOpacity> MakeGradientOpacity(
-  vtkVolumeMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& range, const glm::dvec3& spacing)
+std::optional<GradientOpacity> MakeGradientOpacity(vtkVolumeMapper* mapper, vtkVolumeProperty* property,
+  const glm::dvec2& range, const glm::dvec3& spacing, int component)
 {
   // HasGradientOpacity first: GetStoredGradientOpacity would create a default function in
   // the user's property, and VTK's mapper, drawing the same property later, would then take
   // gradient opacity as set (it changes its multi-component pictures).
   if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND || !property ||
-    property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D || !property->HasGradientOpacity(0) ||
-    property->GetDisableGradientOpacity(0))
+    property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D || !property->HasGradientOpacity(component) ||
+    property->GetDisableGradientOpacity(component))
   {
     return std::nullopt;
   }
-  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(0);
+  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(component);
   bool changes = false;
   for (int i = 0; function && i < function->GetSize(); ++i)
   {
@@ -204,6 +204,27 @@ std::optional<GradientOpacity> MakeGradientOpacity(
     return std::nullopt;
   }
   return GradientOpacity::For(FromVTK(function), range, spacing);
+}
+
+std::vector<std::optional<GradientOpacity>> MakeComponentGradients(vtkVolumeMapper* mapper,
+  vtkVolumeProperty* property, const std::vector<glm::dvec2>& ranges, const glm::dvec3& spacing)
+{
+  std::vector<std::optional<GradientOpacity>> gradients;
+  if (!property || !property->GetIndependentComponents())
+  {
+    return gradients;
+  }
+  bool any = false;
+  for (size_t c = 0; c < ranges.size(); ++c)
+  {
+    gradients.push_back(MakeGradientOpacity(mapper, property, ranges[c], spacing, static_cast<int>(c)));
+    any = any || gradients.back().has_value();
+  }
+  if (!any)
+  {
+    gradients.clear();
+  }
+  return gradients;
 }
 
 std::optional<GradientOpacity> MakeDependentGradientOpacity(vtkVolumeMapper* mapper, vtkVolumeProperty* property,

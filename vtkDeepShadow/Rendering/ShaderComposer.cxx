@@ -82,11 +82,12 @@ ShaderFeature BoundShaderFeature(int leaves)
   return WithDefines("Bound", vtkDeepShadowFeatureBound, "#define BOUND_LEAVES " + std::to_string(leaves));
 }
 
-ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart)
+ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart, bool gradientOpacity)
 {
   return WithDefines("Components", vtkDeepShadowFeatureComponents,
     "#define COMPONENT_COUNT " + std::to_string(count) + "\n#define COMPONENT_MODE " + std::to_string(mode) +
-      (litApart ? "\n#define COMPONENTS_LIT_APART" : ""));
+      (litApart ? "\n#define COMPONENTS_LIT_APART" : "") +
+      (gradientOpacity ? "\n#define COMPONENT_GRADIENT_OPACITY" : ""));
 }
 
 ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices)

@@ -38,9 +38,10 @@ ShaderFeature BoundShaderFeature(int leaves);
 
 /**
  * The Components feature for `count` components (2 to 4) of mode `mode` (deepshadow::
- * ComponentMode), lit apart or not (COMPONENT_COUNT, COMPONENT_MODE, COMPONENTS_LIT_APART).
+ * ComponentMode), lit apart or not (COMPONENT_COUNT, COMPONENT_MODE, COMPONENTS_LIT_APART),
+ * each with its own gradient opacity or not (COMPONENT_GRADIENT_OPACITY).
  */
-ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart);
+ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart, bool gradientOpacity);
 
 /**
  * The TranslucentLayers feature for `layers` peeled layers and `segmentSlices` slices of

@@ -94,7 +94,7 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
     ? deepshadow::Interpolation::Nearest
     : deepshadow::Interpolation::Linear;
   // Several components: combined as VTK's mapper combines them, composite only (the mapper
-  // says so once for a projection, isosurfaces, gradient opacity or a mask).
+  // says so once for isosurfaces or a mask).
   const bool several = !drawn.GetOtherComponents().empty();
   if (several)
   {
@@ -114,6 +114,12 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
       }
       set.Others.push_back(otherGrid);
     }
+    std::vector<glm::dvec2> ranges{ grid->GetRange() };
+    for (const auto& other : set.Others)
+    {
+      ranges.push_back(other->GetRange());
+    }
+    set.Gradients = adapter::MakeComponentGradients(mapper, property, ranges, glm::make_vec3(image->GetSpacing()));
     instance.Components = std::move(set);
   }
   auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);

@@ -442,6 +442,8 @@ private:
   /** Gradient opacity's table, rebuilt when it changed, into the frame's context (none: nothing). */
   void UpdateGradientOpacity(vtkOpenGLRenderWindow* window,
     const std::optional<deepshadow::GradientOpacity>& gradient, deepshadow::RayCastFrame& frame);
+  void UpdateComponentGradients(
+    vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, deepshadow::RayCastFrame& frame);
   /** A label map's tables (a row per label), rebuilt when they changed, into the frame's context. */
   void UpdateLabelTables(
     vtkOpenGLRenderWindow* window, const deepshadow::LabelMap& labels, deepshadow::RayCastFrame& frame);

@@ -284,6 +284,57 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
     (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
 }
 
+void vtkDeepShadowVolumeMapper::UpdateComponentGradients(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, deepshadow::RayCastFrame& frame)
+{
+  // Independent components' own gradient opacities, drawn and cast: one texture, a row per
+  // component of its function over the fraction of its largest magnitude (each component's
+  // range differs, so each row spans [0, 1]).
+  Internals& impl = *this->Impl;
+  deepshadow::ShadowContext& context = frame.Context;
+  std::vector<glm::dvec2> ranges{ impl.Volume.GetRange() };
+  for (const deepshadow::ShadowContext::Component& component : context.OtherComponents)
+  {
+    ranges.push_back(component.Range);
+  }
+  context.ComponentGradients =
+    adapter::MakeComponentGradients(this, property, ranges, glm::make_vec3(this->GetImageInput()->GetSpacing()));
+  context.ComponentGradientTable = nullptr;
+  if (context.ComponentGradients.empty())
+  {
+    return;
+  }
+  std::vector<deepshadow::TransferFunction> rows;
+  std::vector<double> key;
+  for (const std::optional<deepshadow::GradientOpacity>& gradient : context.ComponentGradients)
+  {
+    deepshadow::TransferFunction row; // opacity 1 where the component has none (never read)
+    row.Opacity = deepshadow::PiecewiseLinear({ { 0.0, 1.0 } });
+    if (gradient)
+    {
+      std::vector<std::pair<double, double>> nodes;
+      for (const auto& [x, y] : gradient->Function.GetNodes())
+      {
+        nodes.emplace_back(x / gradient->MaxMagnitude, y);
+      }
+      row.Opacity = deepshadow::PiecewiseLinear(std::move(nodes));
+    }
+    for (const auto& [x, y] : row.Opacity.GetNodes())
+    {
+      key.insert(key.end(), { x, y });
+    }
+    key.push_back(-1.0);
+    rows.push_back(std::move(row));
+  }
+  if (impl.ComponentGradientOpacity.NeedsUpdate(key))
+  {
+    impl.ComponentGradientOpacity.UpdateRows(window, rows, { 0.0, 1.0 }, 1024, std::move(key));
+    this->LastPasses.emplace_back("component-gradient-table");
+  }
+  context.ComponentGradientTable = impl.ComponentGradientOpacity.GetTexture();
+  context.ComponentGradientMap = impl.ComponentGradientOpacity.GetTable().CoordinateMap();
+}
+
 bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property,
   double step, bool uncorrected, double unitScale, deepshadow::RayCastFrame& frame)
 {
@@ -350,6 +401,7 @@ bool vtkDeepShadowVolumeMapper::UpdateComponents(vtkOpenGLRenderWindow* window, 
     context.OtherComponents.push_back(component);
     frame.ComponentTransfers.push_back(table.GetTexture());
   }
+  this->UpdateComponentGradients(window, property, frame);
   if (set.Mode != deepshadow::ComponentMode::Independent)
   {
     this->UpdateGradientOpacity(window,

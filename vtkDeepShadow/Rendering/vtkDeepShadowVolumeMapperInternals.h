@@ -44,6 +44,7 @@ public:
   // Components 1.. of a volume of several (Core/Components.h): a texture and a table each.
   std::array<deepshadow::VolumeTexture, 3> ComponentVolumes;
   std::array<deepshadow::TransferTableTexture, 3> ComponentTables;
+  deepshadow::TransferTableTexture ComponentGradientOpacity; // independent ones': a row each
   int MaskUploads = 0;
   deepshadow::OccupancyTexture Occupancy;
   deepshadow::BoundHierarchy Bound;
@@ -80,6 +81,7 @@ public:
       this->ComponentVolumes[c].Release(window);
       this->ComponentTables[c].Release(window);
     }
+    this->ComponentGradientOpacity.Release(window);
     this->Mask.Release(window);
     this->LabelTables.Release(window);
     this->Transfer2D.Release(window);

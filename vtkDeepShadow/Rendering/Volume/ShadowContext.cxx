@@ -45,6 +45,15 @@ std::vector<double> ShadowContext::TransferKey(bool colors) const
   {
     key.insert(key.end(), { static_cast<double>(this->Mode), this->Weights.x, this->Weights.y, this->Weights.z,
                             this->Weights.w, this->TextureScale.x });
+    for (const std::optional<GradientOpacity>& gradient : this->ComponentGradients)
+    {
+      key.push_back(gradient ? gradient->MaxMagnitude : -1.0);
+      if (gradient)
+      {
+        add(gradient->Function);
+        key.insert(key.end(), { gradient->IndexScale.x, gradient->IndexScale.y, gradient->IndexScale.z });
+      }
+    }
     for (const Component& component : this->OtherComponents)
     {
       key.push_back(component.Transfer.OpacityUnitDistance);
@@ -67,7 +76,7 @@ void ShadowContext::AddVolumeFeatures(std::set<std::string>& enabled,
   if (!this->OtherComponents.empty())
   {
     runtime["Components"] = ComponentsShaderFeature(1 + static_cast<int>(this->OtherComponents.size()),
-      static_cast<int>(this->Mode), this->ComponentsLitApart);
+      static_cast<int>(this->Mode), this->ComponentsLitApart, this->ComponentGradientTable != nullptr);
   }
   if (!this->IsoValues.empty())
   {
@@ -161,6 +170,28 @@ void ShadowContext::SetComponentUniforms(UniformSink& sink) const
     }
   }
   sink.Set("u_componentWeight", glm::vec4(this->Weights));
+  if (this->ComponentGradientTable)
+  {
+    // Per component: the shaders' scalar back to data units, and its largest magnitude (0: none).
+    glm::vec4 unit(1.0f), largest(0.0f);
+    glm::dvec3 indexScale(1.0);
+    for (size_t c = 0; c < this->ComponentGradients.size(); ++c)
+    {
+      if (const std::optional<GradientOpacity>& gradient = this->ComponentGradients[c])
+      {
+        const glm::length_t i = static_cast<glm::length_t>(c);
+        unit[i] = static_cast<float>(1.0 / (c == 0 ? this->ShaderScalar : this->OtherComponents[c - 1].ShaderScalar).x);
+        largest[i] = static_cast<float>(gradient->MaxMagnitude);
+        indexScale = gradient->IndexScale;
+      }
+    }
+    sink.Set("u_componentGradientOpacity", this->ComponentGradientTable->GetTextureUnit());
+    sink.Set("u_componentGradientMap", glm::vec2(this->ComponentGradientMap));
+    sink.Set("u_componentGradientScale", glm::vec3(indexScale));
+    sink.Set("u_componentGradientUnit", unit);
+    sink.Set("u_componentGradientMax", largest);
+    sink.Set("u_gradientReach", static_cast<float>(this->GradientReach));
+  }
 }
 
 void ShadowContext::SetVolumeUniforms(UniformSink& sink) const
@@ -289,6 +320,10 @@ void ShadowContext::ActivateVolumeTextures() const
   {
     this->GradientOpacityTable->Activate();
   }
+  if (this->ComponentGradientTable)
+  {
+    this->ComponentGradientTable->Activate();
+  }
   if (this->Transfer2DImage)
   {
     this->Transfer2DImage->Activate();
@@ -327,6 +362,10 @@ void ShadowContext::DeactivateVolumeTextures() const
   if (this->GradientOpacityTable)
   {
     this->GradientOpacityTable->Deactivate();
+  }
+  if (this->ComponentGradientTable)
+  {
+    this->ComponentGradientTable->Deactivate();
   }
   if (this->Transfer2DImage)
   {

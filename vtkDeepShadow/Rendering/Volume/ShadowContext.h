@@ -25,6 +25,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <optional>
 #include <vector>
 
 class vtkOpenGLRenderWindow;
@@ -155,6 +156,14 @@ struct ShadowContext
   glm::dvec4 Weights{ 1.0 };
   glm::dvec4 TextureScale{ 1.0 }; // RGBA: texture value per data value (ComponentSet)
   bool ComponentsLitApart = false; // independent and shaded: each lit with its own gradient
+  /**
+   * Independent components' own gradient opacities (ComponentSet::Gradients), drawn and cast:
+   * a row per component of its function over its magnitude as a fraction of its largest
+   * (ComponentGradients[c]->MaxMagnitude); null when none has one.
+   */
+  vtkTextureObject* ComponentGradientTable = nullptr;
+  glm::dvec2 ComponentGradientMap{ 1.0, 0.0 }; // fraction of the largest magnitude -> table coordinate
+  std::vector<std::optional<GradientOpacity>> ComponentGradients;
   /** The table coordinate map (shaders' scalar -> coordinate) of component `c` (0: ShaderTableMap). */
   glm::dvec2 ComponentTableMap(int c) const;
 

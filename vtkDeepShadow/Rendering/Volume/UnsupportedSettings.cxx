@@ -54,11 +54,13 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
       said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
         ": it is drawn exactly, without shadows");
     }
-    if (property && property->GetIndependentComponents() &&
-      adapter::MakeGradientOpacity(mapper, property, { 0.0, 1.0 }, glm::dvec3(1.0)))
+    if (!adapter::MakeComponentGradients(mapper, property,
+          std::vector<glm::dvec2>(static_cast<size_t>(components), glm::dvec2(0.0, 1.0)), glm::dvec3(1.0))
+           .empty())
     {
-      said.push_back("gradient opacity is not drawn with several independent components: the volume is drawn "
-                     "without it");
+      said.push_back("gradient opacity over independent components: each component's opacity is multiplied by its "
+                     "own function at its own gradient (VTK 9.1's mapper multiplies every component's function and "
+                     "weight into each, and applies none unless component 0 has one)");
     }
     if (mapper->GetMaskInput())
     {

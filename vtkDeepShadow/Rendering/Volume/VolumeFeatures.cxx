@@ -53,7 +53,8 @@ void UnbindSampling(const Frame& f)
   f.Transfer->Deactivate();
 }
 
-// Components 1..: their textures and the view's tables, and each component's material.
+// Components 1..: their textures and the view's tables, each component's material, and their
+// gradient opacities.
 void BindComponents(const Frame& f, UniformSink& sink)
 {
   const ShadowContext& c = f.Context;
@@ -62,6 +63,10 @@ void BindComponents(const Frame& f, UniformSink& sink)
     c.OtherComponents[i].Texture->Activate();
     f.ComponentTransfers[i]->Activate();
     sink.Set(("u_componentTransfer" + std::to_string(i + 1)).c_str(), f.ComponentTransfers[i]->GetTextureUnit());
+  }
+  if (c.ComponentGradientTable)
+  {
+    c.ComponentGradientTable->Activate();
   }
   c.SetComponentUniforms(sink);
   for (int i = 0; i <= static_cast<int>(c.OtherComponents.size()); ++i)
@@ -79,6 +84,10 @@ void UnbindComponents(const Frame& f)
   {
     f.Context.OtherComponents[i].Texture->Deactivate();
     f.ComponentTransfers[i]->Deactivate();
+  }
+  if (f.Context.ComponentGradientTable)
+  {
+    f.Context.ComponentGradientTable->Deactivate();
   }
 }
 
@@ -226,7 +235,7 @@ const std::vector<VolumeFeature>& VolumeFeatures()
     { "Components", [](const Frame& f) { return !f.Context.OtherComponents.empty(); },
       [](const Frame& f, ComposedFeatures& features) {
         features.Runtime["Components"] = ComponentsShaderFeature(1 + static_cast<int>(f.Context.OtherComponents.size()),
-          static_cast<int>(f.Context.Mode), f.Context.ComponentsLitApart);
+          static_cast<int>(f.Context.Mode), f.Context.ComponentsLitApart, f.Context.ComponentGradientTable != nullptr);
         features.Labels.emplace_back("Components");
       },
       BindComponents, UnbindComponents },

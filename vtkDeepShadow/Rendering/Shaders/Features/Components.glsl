@@ -5,7 +5,9 @@
 // table each (over their own range). Every pass that reads the volume reads all components:
 // the view ray, the feelers and the light-space builds, so what shows is what casts.
 // Independent components that are shaded (COMPONENTS_LIT_APART) are each lit with their own
-// gradient and material before they are combined.
+// gradient and material before they are combined. With COMPONENT_GRADIENT_OPACITY each
+// component's opacity is multiplied by its own gradient-opacity function at its own gradient
+// before they combine (ComponentSet::GradientFactors), in every pass.
 //@Dec
 uniform sampler3D u_component1;
 #if COMPONENT_COUNT > 2
@@ -53,6 +55,49 @@ vec4 sampleComponents(vec3 index)
   }
   return values;
 }
+
+#ifdef COMPONENT_GRADIENT_OPACITY
+uniform sampler2D u_componentGradientOpacity; // a row per component: its function over magnitude / largest
+uniform vec2 u_componentGradientMap;          // magnitude / largest -> table coordinate
+uniform vec3 u_componentGradientScale;        // per index axis: mean spacing / spacing
+uniform vec4 u_componentGradientUnit;         // per component: data units per shaders' scalar
+uniform vec4 u_componentGradientMax;          // per component: its largest magnitude (0: no function)
+vec4 g_componentGradientFactors = vec4(1.0);  // the sample's, where a light ray reads the volume
+vec3 indexGradient(vec3 index);               // (VolumeSampling, of component g_component)
+
+// Each component's gradient-opacity factor at `index`, for those of opacity above 0 in `alphas`.
+vec4 componentGradientFactors(vec3 index, vec4 alphas)
+{
+  vec4 factors = vec4(1.0);
+  for (int c = 0; c < COMPONENT_COUNT; ++c)
+  {
+    float largest = u_componentGradientMax[c];
+    if (largest > 0.0 && alphas[c] > 0.0)
+    {
+      g_component = c;
+      float magnitude = clamp(
+        length(indexGradient(index) * u_componentGradientScale) * u_componentGradientUnit[c], 0.0, largest);
+      float row = (float(c) + 0.5) / float(COMPONENT_COUNT);
+      factors[c] = texture(u_componentGradientOpacity,
+        vec2(magnitude / largest * u_componentGradientMap.x + u_componentGradientMap.y, row)).a;
+    }
+  }
+  g_component = 0;
+  return factors;
+}
+
+vec4[4] withGradientFactors(vec4 colors[4], vec4 factors)
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    colors[c].a *= factors[c];
+  }
+  return colors;
+}
+#define GRADIENT_FACTORS(COLORS) withGradientFactors(COLORS, g_componentGradientFactors)
+#else
+#define GRADIENT_FACTORS(COLORS) COLORS
+#endif
 
 // Component `c`'s colour and opacity from its table.
 vec4 componentLookup(sampler2D table, vec4 values, int c)
@@ -124,6 +169,10 @@ uniform sampler2D u_componentTransfer3;
     g_componentValues = sampleComponents(index);
     vec4 componentColors[4] = vec4[4](transfer, LOOKUP_1(u_componentTransfer1), LOOKUP_2(u_componentTransfer2),
       LOOKUP_3(u_componentTransfer3));
+#ifdef COMPONENT_GRADIENT_OPACITY
+    componentColors = withGradientFactors(componentColors, componentGradientFactors(index,
+      vec4(componentColors[0].a, componentColors[1].a, componentColors[2].a, componentColors[3].a)));
+#endif
     transfer = combineComponents(componentColors, g_componentValues);
 //@Material
   return u_componentMaterial[g_component];
@@ -153,9 +202,15 @@ uniform sampler2D u_componentFeelerTable2;
 uniform sampler2D u_componentFeelerTable3;
 #endif
 //@FeelerLookup
-  rgba = combineComponents(vec4[4](rgba, LOOKUP_1(u_componentFeelerTable1), LOOKUP_2(u_componentFeelerTable2),
-    LOOKUP_3(u_componentFeelerTable3)), g_componentValues);
+  rgba = combineComponents(GRADIENT_FACTORS(vec4[4](rgba, LOOKUP_1(u_componentFeelerTable1),
+    LOOKUP_2(u_componentFeelerTable2), LOOKUP_3(u_componentFeelerTable3))), g_componentValues);
 //@FeelerSample
     g_componentValues = sampleComponents(sampleIndex);
+#ifdef COMPONENT_GRADIENT_OPACITY
+    g_componentGradientFactors = componentGradientFactors(sampleIndex, vec4(1.0));
+#endif
 //@TexelSample
     g_componentValues = sampleComponents(sampleIndex);
+#ifdef COMPONENT_GRADIENT_OPACITY
+    g_componentGradientFactors = componentGradientFactors(sampleIndex, vec4(1.0));
+#endif

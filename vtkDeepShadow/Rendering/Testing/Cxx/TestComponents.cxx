@@ -15,12 +15,18 @@
 //    against VTK where VTK 9.1 projects as it means to, else against closed relations (a
 //    mirrored volume's MinIP is the original's MIP; luminance + opacity of one field twice is
 //    that field's projection) and the CPU twin.
-// 4. 3 dependent components are one error, and so are 5; an isosurface over components is
+// 4. Gradient opacity over independent components, each component's own function at its own
+//    gradient: against VTK's mapper where VTK 9.1 applies it as documented (the function on
+//    component 0, component 1 clear), else against VTK's picture of the component alone (the
+//    function on component 1 alone, which VTK's two-component mapper ignores) and the CPU
+//    twin; shadows cast with it, and a hollowed ball casts a lighter shadow.
+// 5. 3 dependent components are one error, and so are 5; an isosurface over components is
 //    drawn composite, said once.
 #include "DeepShadowTestUtilities.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
 
+using deepshadow::Image;
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
 using deepshadow::testing::WithinTolerance;
@@ -57,9 +63,10 @@ vtkSmartPointer<vtkImageData> MakeComponents(int count, int n = 40)
 }
 
 // Component c's colour and opacity: orange (0), blue (1), green (2), white (3), each clear
-// at its low end.
-void SetComponentFunctions(vtkVolumeProperty* property, int c)
+// at its low end; set as the property's component `target` (c unless given).
+void SetComponentFunctions(vtkVolumeProperty* property, int c, int target = -1)
 {
+  target = target < 0 ? c : target;
   const double colors[4][3] = { { 1.0, 0.5, 0.2 }, { 0.2, 0.4, 1.0 }, { 0.3, 1.0, 0.3 }, { 1.0, 1.0, 1.0 } };
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(0, 0.1, 0.1, 0.1);
@@ -68,8 +75,8 @@ void SetComponentFunctions(vtkVolumeProperty* property, int c)
   opacity->AddPoint(0, 0.0);
   opacity->AddPoint(c == 2 ? 150 : 30, 0.0);
   opacity->AddPoint(255, c == 0 ? 0.3 : 0.15);
-  property->SetColor(c, color);
-  property->SetScalarOpacity(c, opacity);
+  property->SetColor(target, color);
+  property->SetScalarOpacity(target, opacity);
 }
 
 enum class Mode
@@ -108,13 +115,13 @@ Drawn Draw(vtkRenderWindow* window, vtkImageData* data, bool vtks, vtkVolumeProp
   return deepshadow::testing::DrawForComparison(window, mapper, data, property, { 0.1, 0.1, 0.15 }, !vtks);
 }
 
-// Component 0 alone, as a volume of one component (what part 1 must tell apart).
-vtkSmartPointer<vtkImageData> FirstComponent(vtkImageData* data)
+// Component c (0 unless given) alone, as a volume of one component.
+vtkSmartPointer<vtkImageData> FirstComponent(vtkImageData* data, int c = 0)
 {
   auto first = vtkSmartPointer<vtkImageData>::New();
   first->CopyStructure(data);
   first->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  first->GetPointData()->GetScalars()->CopyComponent(0, data->GetPointData()->GetScalars(), 0);
+  first->GetPointData()->GetScalars()->CopyComponent(0, data->GetPointData()->GetScalars(), c);
   return first;
 }
 
@@ -282,6 +289,86 @@ bool ProjectionsMatch(vtkRenderWindow* window)
   }
   return ok;
 }
+
+// Gradient opacity over independent components (part 4).
+bool IndependentGradientOpacity(vtkRenderWindow* window)
+{
+  bool ok = true;
+  vtkNew<vtkPiecewiseFunction> faint; // faint where the component is flat
+  faint->AddPoint(0.0, 0.15);
+  faint->AddPoint(20.0, 1.0);
+  vtkNew<vtkPiecewiseFunction> edges; // only where it changes fast
+  edges->AddPoint(0.0, 0.0);
+  edges->AddPoint(10.0, 0.0);
+  edges->AddPoint(40.0, 1.0);
+  vtkNew<vtkPiecewiseFunction> clear;
+  clear->AddPoint(0.0, 0.0);
+  clear->AddPoint(255.0, 0.0);
+  const auto data = MakeComponents(2);
+  // Ours within VTK's own noise of `vtks` (drawn by `drawVTK`) and within 1.5/255 of its twin.
+  auto matches = [&](const std::string& what, const Drawn& ours, const std::function<Image(float, bool)>& drawVTK) {
+    const Image vtks = drawVTK(1.0f, false);
+    const deepshadow::testing::VTKTolerance tolerance = deepshadow::testing::CalibrateOnVTK(what, vtks, drawVTK);
+    const bool near = WithinTolerance(what.c_str(), ours.Picture, vtks, tolerance.MaxRMSE, 8.0 / 255.0,
+      tolerance.MaxFraction);
+    return WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0,
+             0.005) && near;
+  };
+  auto fails = [&](const std::string& what, const Image& picture, const Image& reference) {
+    return !WithinTolerance((what + " (must fail)").c_str(), picture, reference, 0.01, 8.0 / 255.0, 0.01);
+  };
+
+  // The function on component 0, component 1 clear: VTK's mapper applies it as we do.
+  {
+    const std::string what = "2 independent components, gradient opacity on component 0";
+    auto property = MakeProperty(Mode::Independent, 2, true);
+    property->SetScalarOpacity(1, clear);
+    property->SetGradientOpacity(0, edges);
+    const Drawn ours = Draw(window, data, false, property);
+    ok = matches(what, ours, [&](float scale, bool jitter) {
+      return Draw(window, data, true, property, 0.5f * scale, jitter).Picture;
+    }) && ok;
+    property->SetDisableGradientOpacity(0, 1);
+    ok = fails(what + ", ours without it", Draw(window, data, false, property).Picture, ours.Picture) && ok;
+  }
+
+  // The function on component 1 alone (component 0 clear): VTK's picture of component 1 as a
+  // volume of its own with the function. VTK's two-component mapper draws none.
+  {
+    const std::string what = "2 independent components, gradient opacity on component 1 alone";
+    auto property = MakeProperty(Mode::Independent, 2, false);
+    property->SetScalarOpacity(0, clear);
+    property->SetGradientOpacity(1, edges);
+    const Drawn ours = Draw(window, data, false, property);
+    auto alone = MakeProperty(Mode::Independent, 1, false);
+    SetComponentFunctions(alone, 1, 0);
+    alone->SetGradientOpacity(0, edges);
+    const auto field = FirstComponent(data, 1);
+    ok = matches(what + " vs VTK's component 1 alone", ours, [&](float scale, bool jitter) {
+      return Draw(window, field, true, alone, 0.5f * scale, jitter).Picture;
+    }) && ok;
+    ok = fails(what + ", VTK 9.1's two components", Draw(window, data, true, property).Picture,
+           Draw(window, field, true, alone).Picture) && ok;
+    property->SetDisableGradientOpacity(1, 1);
+    ok = fails(what + ", ours without it", Draw(window, data, false, property).Picture, ours.Picture) && ok;
+  }
+
+  // Both components with functions of their own, shaded: ours against its twin, and each
+  // function counts.
+  {
+    const std::string what = "2 independent components, shaded, a gradient opacity each";
+    auto property = MakeProperty(Mode::Independent, 2, true);
+    property->SetGradientOpacity(0, faint);
+    property->SetGradientOpacity(1, edges);
+    const Drawn ours = Draw(window, data, false, property);
+    ok = WithinTolerance((what + " vs CPU twin").c_str(), ours.Picture, ours.Twin, 1.5 / 255.0, 8.0 / 255.0, 0.005) &&
+      ok;
+    property->SetDisableGradientOpacity(1, 1);
+    ok = fails(what + ", ours without component 1's", Draw(window, data, false, property).Picture, ours.Picture) &&
+      ok;
+  }
+  return ok;
+}
 }
 
 int TestComponents(int, char*[])
@@ -299,6 +386,7 @@ int TestComponents(int, char*[])
   ok = MatchesVTK(window, 4, Mode::RGBA, false, "4 dependent components (RGBA), gradient opacity",
          vtkVolumeMapper::COMPOSITE_BLEND, false, true) && ok;
   ok = ProjectionsMatch(window) && ok;
+  ok = IndependentGradientOpacity(window) && ok;
 
   // Shadows: the ball (200) in component 0, the plate and pillar in component 1.
   deepshadow::testing::ShadowScene scene;
@@ -323,6 +411,41 @@ int TestComponents(int, char*[])
   ok = scene.AllMatchTwins("2 components") && ok;
   ok = scene.DeepShadowDarkensFloor("the ball (component 0) over the floor (component 1)") && ok;
   ok = Check("composed with Components", deepshadow::testing::HasFeature(scene.Mapper, "Components")) && ok;
+  {
+    // The ball's own gradient opacity makes it faint, fainter where it is flat: the shadow it
+    // casts on the floor, in the other component, lightens; every technique casts what is drawn.
+    const auto floorUnderBall = [&] {
+      scene.Window->Render();
+      const glm::dvec3 floor = deepshadow::testing::ShadowScene::FloorUnderBall(Grab(scene.Window));
+      return floor.x + floor.y + floor.z;
+    };
+    const double solid = floorUnderBall();
+    vtkNew<vtkPiecewiseFunction> faintBall;
+    faintBall->AddPoint(0.0, 0.03);
+    faintBall->AddPoint(50.0, 0.3);
+    scene.Property->SetGradientOpacity(0, faintBall);
+    const double faded = floorUnderBall();
+    std::printf("2 components: floor under the ball %.3f, %.3f with the ball faint by its gradient opacity\n",
+      solid, faded);
+    ok = Check("2 components: the faint ball's shadow is lighter", faded > 1.3 * solid) && ok;
+    ok = scene.AllMatchTwins("2 components, the ball's gradient opacity") && ok;
+    // Its table and the shadow are rebuilt when the function changes, and only then.
+    const vtkSmartPointer<vtkDeepShadowTechnique> dsm = vtkDeepShadowTechniqueFactory::New("dsm");
+    scene.Mapper->SetShadowTechnique(dsm);
+    scene.Window->Render();
+    const int builds = dsm->GetBuildCount();
+    scene.Window->Render();
+    const auto& passes = scene.Mapper->GetLastPasses();
+    const bool tableKept = std::find(passes.begin(), passes.end(), "component-gradient-table") == passes.end();
+    ok = Check("2 components, gradient opacity unchanged: no table, no shadow rebuilt",
+           tableKept && dsm->GetBuildCount() == builds) && ok;
+    faintBall->AddPoint(25.0, 0.1);
+    scene.Window->Render();
+    const bool tableRebuilt = std::find(passes.begin(), passes.end(), "component-gradient-table") != passes.end();
+    ok = Check("2 components, gradient opacity changed: its table and the shadow rebuilt",
+           tableRebuilt && dsm->GetBuildCount() == builds + 1) && ok;
+    scene.Property->SetDisableGradientOpacity(0, 1);
+  }
 
   // What is not drawn is said: 3 dependent components, 5 components; an isosurface drawn composite.
   auto says = [&](vtkImageData* data, bool independent, const std::string& needle) {
