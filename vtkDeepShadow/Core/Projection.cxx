@@ -7,6 +7,16 @@
 namespace deepshadow
 {
 
+namespace
+{
+// A ray that counted no sample (masked, outside the bound or the average's range): nothing,
+// but additive's sum of nothing is opaque black, as VTK's mapper draws it.
+glm::dvec4 NothingCounted(BlendMode mode)
+{
+  return mode == BlendMode::Additive ? glm::dvec4(0.0, 0.0, 0.0, 1.0) : glm::dvec4(0.0);
+}
+}
+
 ProjectionAccumulator::ProjectionAccumulator(const ProjectionSettings& settings)
   : Settings(settings)
 {
@@ -45,7 +55,7 @@ glm::dvec4 ProjectionAccumulator::Result(const std::function<glm::dvec4(double)>
 {
   if (!this->Any)
   {
-    return glm::dvec4(0.0);
+    return NothingCounted(this->Settings.Mode);
   }
   switch (this->Settings.Mode)
   {
@@ -147,7 +157,7 @@ glm::dvec4 ComponentProjection::Result() const
 {
   if (!this->Any)
   {
-    return glm::dvec4(0.0);
+    return NothingCounted(this->Settings.Mode);
   }
   const ComponentSet& set = this->Lookup.GetSet();
   const BlendMode mode = this->Settings.Mode;

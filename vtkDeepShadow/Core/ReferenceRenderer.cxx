@@ -197,8 +197,8 @@ ReferenceRenderer::PreparedVolume ReferenceRenderer::Prepare(const Scene& scene,
 
 namespace
 {
-// A projection blend mode along the ray: every sample inside the bound counts, transparent
-// or not, and nothing ends the march early (Features/Projection.glsl).
+// A projection blend mode along the ray: every sample inside the bound that a binary mask
+// keeps counts, transparent or not, and nothing ends the march early (Features/Projection.glsl).
 glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table, const ComponentLookup* components,
   const glm::dvec3& indexOrigin, const glm::dvec3& indexDirection, double t0, double t1, double offset, double dt,
   std::optional<BoundRegion::Walker>& bound)
@@ -239,6 +239,10 @@ glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table, 
       }
     }
     const glm::dvec3 index = indexOrigin + t * indexDirection;
+    if (volume.Mask && !volume.Labels && MaskFactor(volume.Mask.get(), index) <= 0.0)
+    {
+      continue; // as VTK's: a masked sample is skipped in every blend mode
+    }
     if (several)
     {
       several->Add(volume.Components->Sample(*volume.Grid, index, volume.Sampling));

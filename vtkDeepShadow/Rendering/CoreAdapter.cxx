@@ -346,8 +346,15 @@ std::shared_ptr<VolumeGrid> MakeVolumeGrid(vtkImageData* image, const vtkMatrix4
 
 vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume)
 {
+  // VTK's mapper skips what a binary mask clears in every blend mode; a label map colours
+  // composite samples only.
   vtkImageData* mask = mapper->GetMaskInput();
-  if (!mask || !volume || mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  const int blend = mapper->GetBlendMode();
+  const bool projection = blend == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ||
+    blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND || blend == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND ||
+    blend == vtkVolumeMapper::ADDITIVE_BLEND;
+  const bool binary = mapper->GetMaskType() == vtkGPUVolumeRayCastMapper::BinaryMaskType;
+  if (!mask || !volume || !(blend == vtkVolumeMapper::COMPOSITE_BLEND || (projection && binary)))
   {
     return nullptr;
   }

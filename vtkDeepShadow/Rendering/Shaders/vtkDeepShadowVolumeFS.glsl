@@ -109,6 +109,7 @@ void main()
     //DeepShadow::UserShader::ImplEnd
     //DeepShadow::EmptySpace::Impl
 
+    //DeepShadow::Mask::Impl
     float scalar = sampleScalar(index);
     float receiverT = t; // where the sample receives light (Isosurface: the sample before)
     //DeepShadow::Isosurface::Impl
@@ -116,7 +117,6 @@ void main()
     vec4 transfer = texture(u_transfer, vec2(scalar * u_tableMap.x + u_tableMap.y, 0.5));
     //DeepShadow::Transfer2D::Impl
     //DeepShadow::Components::Impl
-    //DeepShadow::Mask::Impl
     //DeepShadow::LabelMap::Impl
     //DeepShadow::GradientOpacity::Impl
     //DeepShadow::DatasetOpacity::Impl

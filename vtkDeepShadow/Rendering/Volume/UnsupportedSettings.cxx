@@ -121,10 +121,16 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
   vtkImageData* mask = mapper->GetMaskInput();
   if (mask && components == 1)
   {
-    if (blend != vtkVolumeMapper::COMPOSITE_BLEND)
+    const bool binary = mapper->GetMaskType() == vtkGPUVolumeRayCastMapper::BinaryMaskType;
+    if (blend == vtkVolumeMapper::ISOSURFACE_BLEND || blend == vtkVolumeMapper::SLICE_BLEND)
     {
-      said.push_back(std::string("masks apply to composite blending only: ") + BlendModeName(blend) +
-        " is drawn without the mask");
+      said.push_back(std::string("masks apply to composite blending and projections only: ") +
+        BlendModeName(blend) + " is drawn without the mask");
+    }
+    else if (blend != vtkVolumeMapper::COMPOSITE_BLEND && !binary)
+    {
+      said.push_back(std::string("a label map colours composite blending only, as in VTK's mapper: ") +
+        BlendModeName(blend) + " is drawn without it (SetMaskTypeToBinary to skip what it clears)");
     }
     else if (fromCells)
     {

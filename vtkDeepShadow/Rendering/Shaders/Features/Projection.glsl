@@ -113,7 +113,9 @@ bool projectionCounts(vec4 values, int c)
     }
 #endif
 //@Exit
-  if (projectionCount == 0.0)
+  // A ray that counted nothing (masked, outside the bound or the average's range) is not
+  // drawn, but additive's sum of nothing is opaque black, as VTK's mapper draws it.
+  if (projectionCount == 0.0 && u_blendMode != 4)
   {
     discard;
   }

@@ -5,6 +5,9 @@
 //    shaded, drawn by our mapper and by VTK's in one run, within a tolerance calibrated on VTK
 //    against itself (CalibrateOnVTK); ours without the mask must fail it; the GPU picture
 //    must match its CPU twin.
+//    The same mask under MIP, average and additive blending: VTK skips what a binary mask
+//    clears in every blend mode, and so do we (against VTK, the twin; without: must fail).
+//    MinIP against a closed relation (VTK draws a ray with nothing kept at the range's top).
 // 2. The shadow scene (a dense ball over a plate) with a mask that clears the ball: the
 //    plate's shadow term where the ball's shadow was gets the light, since what the mask
 //    clears casts nothing, and drops nowhere; every technique's picture matches its CPU twin
@@ -57,13 +60,17 @@ vtkSmartPointer<vtkImageData> MakeMask(vtkImageData* image, const std::function<
 
 using Drawn = deepshadow::testing::ComparisonPicture;
 
+// `labelled`: the property of a label map (else the mask is binary), unless `binary`.
 Drawn Draw(vtkRenderWindow* window, vtkImageData* data, vtkImageData* mask, bool vtks, float step = 0.5f,
-  bool jitter = false, vtkVolumeProperty* labelled = nullptr, float blend = 1.0f)
+  bool jitter = false, vtkVolumeProperty* labelled = nullptr, float blend = 1.0f,
+  int blendMode = vtkVolumeMapper::COMPOSITE_BLEND, bool binary = false)
 {
   deepshadow::testing::ComparisonMappers mappers;
   vtkGPUVolumeRayCastMapper* mapper = mappers.Pick(vtks, step, jitter);
+  mapper->SetBlendMode(blendMode);
   mapper->SetMaskInput(mask);
-  mapper->SetMaskType(labelled ? vtkGPUVolumeRayCastMapper::LabelMapMaskType : vtkGPUVolumeRayCastMapper::BinaryMaskType);
+  mapper->SetMaskType(labelled && !binary ? vtkGPUVolumeRayCastMapper::LabelMapMaskType
+                                          : vtkGPUVolumeRayCastMapper::BinaryMaskType);
   mapper->SetMaskBlendFactor(blend);
   return deepshadow::testing::DrawForComparison(window, mapper, data,
     labelled ? labelled : deepshadow::testing::MakeComparisonProperty(true).GetPointer(), { 0.1, 0.1, 0.15 }, !vtks);
@@ -128,6 +135,73 @@ int TestMask(int, char*[])
     const Drawn without = Draw(window, data, nullptr, false);
     ok = !WithinTolerance((what + ", ours without it (must fail)").c_str(), without.Picture, vtks.Picture,
            tolerance.MaxRMSE, 8.0 / 255.0, tolerance.MaxFraction) && ok;
+
+    // Projections skip what the mask clears, as VTK's mapper does in every blend mode.
+    for (const auto& [mode, name] : { std::make_pair(vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, "MIP"),
+           std::make_pair(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, "average"),
+           std::make_pair(vtkVolumeMapper::ADDITIVE_BLEND, "additive") })
+    {
+      const std::string projected = what + ", " + name;
+      const int blend = mode;
+      const Drawn oursProjected = Draw(window, data, mask, false, 0.5f, false, nullptr, 1.0f, blend);
+      const Drawn vtksProjected = Draw(window, data, mask, true, 0.5f, false, nullptr, 1.0f, blend);
+      const deepshadow::testing::VTKTolerance projectedTolerance =
+        deepshadow::testing::CalibrateOnVTK(projected, vtksProjected.Picture, [&](float scale, bool jitter) {
+          return Draw(window, data, mask, true, 0.5f * scale, jitter, nullptr, 1.0f, blend).Picture;
+        });
+      ok = WithinTolerance(projected.c_str(), oursProjected.Picture, vtksProjected.Picture,
+             projectedTolerance.MaxRMSE, 8.0 / 255.0, projectedTolerance.MaxFraction) && ok;
+      ok = WithinTolerance((projected + " vs CPU twin").c_str(), oursProjected.Picture, oursProjected.Twin,
+             1.5 / 255.0, 8.0 / 255.0, 0.005) && ok;
+      ok = !WithinTolerance((projected + ", ours without it (must fail)").c_str(),
+             Draw(window, data, nullptr, false, 0.5f, false, nullptr, 1.0f, blend).Picture, vtksProjected.Picture,
+             projectedTolerance.MaxRMSE, 8.0 / 255.0, projectedTolerance.MaxFraction) && ok;
+    }
+    // The minimum: VTK's mapper draws a ray whose every sample is masked with the colour and
+    // opacity of the range's top (its minimum starts there), where ours draws nothing. So:
+    // the mirrored volume's (v -> 255 - v, functions mirrored) minimum under the mask is the
+    // original's maximum under it, which matches VTK's above.
+    {
+      const std::string projected = what + ", MinIP of the mirror";
+      auto mirrored = vtkSmartPointer<vtkImageData>::New();
+      mirrored->DeepCopy(data);
+      vtkDataArray* values = mirrored->GetPointData()->GetScalars();
+      for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+      {
+        values->SetComponent(i, 0, 255.0 - values->GetComponent(i, 0));
+      }
+      const auto original = deepshadow::testing::MakeComparisonProperty(true);
+      vtkNew<vtkVolumeProperty> mirroredFunctions;
+      vtkNew<vtkColorTransferFunction> color;
+      vtkNew<vtkPiecewiseFunction> opacity;
+      for (int n = 0; n < original->GetRGBTransferFunction()->GetSize(); ++n)
+      {
+        double node[6];
+        original->GetRGBTransferFunction()->GetNodeValue(n, node);
+        color->AddRGBPoint(255.0 - node[0], node[1], node[2], node[3]);
+      }
+      for (int n = 0; n < original->GetScalarOpacity()->GetSize(); ++n)
+      {
+        double node[4];
+        original->GetScalarOpacity()->GetNodeValue(n, node);
+        opacity->AddPoint(255.0 - node[0], node[1]);
+      }
+      mirroredFunctions->SetColor(color);
+      mirroredFunctions->SetScalarOpacity(opacity);
+      mirroredFunctions->SetInterpolationTypeToLinear();
+      const Drawn minimum = Draw(window, mirrored, mask, false, 0.5f, false, mirroredFunctions, 1.0f,
+        vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, true);
+      const Drawn maximum =
+        Draw(window, data, mask, false, 0.5f, false, nullptr, 1.0f, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND);
+      ok = WithinTolerance((projected + " vs the original's MIP").c_str(), minimum.Picture, maximum.Picture, 0.004,
+             8.0 / 255.0, 0.002) && ok;
+      ok = WithinTolerance((projected + " vs CPU twin").c_str(), minimum.Picture, minimum.Twin, 1.5 / 255.0,
+             8.0 / 255.0, 0.005) && ok;
+      ok = !WithinTolerance((projected + ", without the mask (must fail)").c_str(),
+             Draw(window, mirrored, nullptr, false, 0.5f, false, mirroredFunctions, 1.0f,
+               vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, true).Picture,
+             maximum.Picture, 0.004, 8.0 / 255.0, 0.002) && ok;
+    }
   }
 
   {

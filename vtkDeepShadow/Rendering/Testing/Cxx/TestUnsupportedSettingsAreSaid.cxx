@@ -133,11 +133,21 @@ int TestUnsupportedSettingsAreSaid(int, char*[])
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
         m->SetMaskTypeToBinary();
       } },
-    { "mask under MIP", "masks apply to composite blending only",
-      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) {
+    { "label map under MIP", "a label map colours composite blending only",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
+        m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
+        m->SetMaskTypeToLabelMap();
+        vtkNew<vtkPiecewiseFunction> opacity;
+        opacity->AddPoint(0.0, 1.0);
+        p->SetLabelScalarOpacity(1, opacity);
+        m->SetBlendModeToMaximumIntensity();
+      } },
+    { "mask under isosurface blending", "masks apply to composite blending and projections only",
+      [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty* p) {
         m->SetMaskInput(deepshadow::testing::MakeTestVolume(VTK_UNSIGNED_CHAR));
         m->SetMaskTypeToBinary();
-        m->SetBlendModeToMaximumIntensity();
+        p->GetIsoSurfaceValues()->SetValue(0, 100.0);
+        m->SetBlendModeToIsoSurface();
       } },
     { "image sample distance", "image sample distance 2",
       [](vtkDeepShadowVolumeMapper* m, vtkVolumeProperty*) { m->SetImageSampleDistance(2.0f); } },
