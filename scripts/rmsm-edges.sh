@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Resolution-matched shadow maps against shadow maps on hybrid-sparse (a small volume over a
 # large ground, the camera close to it): the shadow-edge error of each against exact opaque
-# visibility (the CPU's opaque shadow rays with the GPU's approximations), as the README's
-# "Resolution-matched shadow maps" reports it.
+# visibility (the CPU's opaque shadow rays with the GPU's approximations), as
+# Documentation/Shadows.md ("Resolution-matched shadow maps") reports it.
 #   bash scripts/rmsm-edges.sh [BUILD_DIR] [OUT_DIR]     (SIZE=WxH, default 512x512)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"

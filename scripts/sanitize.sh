@@ -5,7 +5,7 @@
 # run (Tool.Fuzz) under them. Any sanitizer report fails its test (UBSan does not recover; ASan stops at the first).
 # Extra arguments go to ctest. Used by .ci/run after scripts/test.sh.
 #
-# What is switched off or suppressed, and why (README, "Hostile input"):
+# What is switched off or suppressed, and why (Documentation/HostileInput.md):
 # - leaks inside libOSMesa (scripts/lsan.supp): Mesa keeps what OSMesaMakeCurrent allocates
 #   until exit; leak detection stays on for everything else;
 # - the fuzz harness's address-space limit (--memory-limit 0): ASan reserves terabytes of

@@ -13,7 +13,7 @@ packages=(cmake ninja-build g++ ccache pkg-config
   python3-pydicom # a real CT series (its test files), and the DICOM series the tests write
   dcm2niix        # the independent DICOM-to-NIfTI converter the DICOM tests compare against
   libgdcm-tools   # gdcmconv: the tests re-encode a real series in compressed transfer syntaxes
-  mricron-data    # the Colin27 brain MRI (NIfTI): the tests' and README's real anatomy
+  mricron-data    # the Colin27 brain MRI (NIfTI): the tests' and documentation's real anatomy
   chromium        # headless screenshots of the main job's page (out/index.html)
   xvfb)           # a virtual display for the interactive viewer's test
 missing=()

@@ -1,8 +1,8 @@
 // The tool's memory budget: what a command will ask for, estimated from its options before
 // anything large is allocated, and refused with one line naming the bytes (not
 // std::bad_alloc, or the kernel killing the process; --size 16384x16384 asked OSMesa for
-// about 15 GB). The figures per pixel and texel were measured on llvmpipe (README, "Bad
-// input"); they are estimates, so the budget leaves room: by default half the machine's
+// about 15 GB). The figures per pixel and texel were measured on llvmpipe (Documentation/HostileInput.md,
+// "the tool's memory budget"); they are estimates, so the budget leaves room: by default half the machine's
 // memory (deepshadow::DefaultMemoryBudget), or --memory-budget.
 #ifndef deepshadow_tool_Budget_h
 #define deepshadow_tool_Budget_h

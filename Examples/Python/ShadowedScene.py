@@ -3,7 +3,7 @@
     python3 ShadowedScene.py [out.png]
 
 Runs with no display: with none, vtkRenderWindow() is the headless vtkDeepShadowRenderWindow
-(OSMesa; VTK_DEEPSHADOW_BACKEND=egl for EGL). See the README's "From Python" for PYTHONPATH.
+(OSMesa; VTK_DEEPSHADOW_BACKEND=egl for EGL). See Documentation/Python.md for PYTHONPATH.
 """
 import sys
 

@@ -15,7 +15,7 @@
 //   - dependent (luminance + opacity, RGBA): the extremes keep the whole sample whose opacity
 //     component (the last) is extreme, drawn as one sample is; average and additive sum
 //     component 0 weighted by the sample's opacity.
-// Two of VTK 9.1's ways are not followed (its shader's slips, the README says where):
+// Two of VTK 9.1's ways are not followed (its shader's slips, Documentation/VolumeMapper.md says where):
 // minimum intensity over independent components keeps each component's maximum and writes
 // its opacity into blue (here: each component's minimum, opacity as for the maximum); over
 // luminance + opacity VTK compares a channel the texture does not have and keeps the ray's

@@ -114,7 +114,7 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowParameters
   ShadowFilter Filter = ShadowFilter::PCF3x3;
 
   // Deep shadow maps.
-  double Epsilon = 0.02;    // |V' - V| <= Epsilon at every sample depth (see the README)
+  double Epsilon = 0.02;    // |V' - V| <= Epsilon at every sample depth (Documentation/Shadows.md)
   int Layers = 8;           // nodes per texel (and channel)
   /**
    * Chunked node memory (Core/Shadows/NodeChunks.h): nodes per chunk, taken from a pool as a

@@ -37,7 +37,7 @@ public:
   /**
    * The compression bound on |V' - V| ([0, 1], warned; 0 keeps every sample). The default,
    * 0.02, keeps the standard scenes' errors near those of exact shadow rays with 8 layers,
-   * thin opaque rods included, while few texels overflow (the README's epsilon/layers study).
+   * thin opaque rods included, while few texels overflow (Documentation/Measured.md: epsilon and layers).
    */
   void SetEpsilon(double epsilon);
   vtkGetMacro(Epsilon, double);

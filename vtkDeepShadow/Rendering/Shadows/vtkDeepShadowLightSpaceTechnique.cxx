@@ -90,7 +90,7 @@ vtkDeepShadowLightSpaceTechnique::vtkDeepShadowLightSpaceTechnique()
   : LightMaps(new Maps)
 {
   // A cache only has to follow the map's detail: 64 nodes lose nothing measurable on the
-  // standard scenes (see the README) and cost an eighth of 128 to fill.
+  // standard scenes (Documentation/Measured.md) and cost an eighth of 128 to fill.
   this->ShadowVolumeSize = 64;
 }
 

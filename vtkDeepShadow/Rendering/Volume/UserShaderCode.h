@@ -1,7 +1,7 @@
 // Internal: the fragment-shader replacements of a volume's vtkShaderProperty, taken at the
 // points of our ray caster that correspond to VTK 9.1's tags, with VTK's names for what that
 // code reads and writes (Features/UserShader.glsl). A tag with no counterpart refuses them
-// all, named in one error. README "Custom shaders" has the table.
+// all, named in one error. Documentation/VolumeMapper.md has the table.
 #ifndef vtkDeepShadowUserShaderCode_h
 #define vtkDeepShadowUserShaderCode_h
 
