@@ -25,11 +25,7 @@ fi
 expect 2 "unknown key" "--keys takes" -- "$tool" view --keys t,x
 expect 2 "a display no X server serves (SIGSEGV before)" "no X server answers" -- env DISPLAY=:4711 "$tool" view --scene rods
 
-if ! command -v Xvfb > /dev/null; then
-  echo "skipped: no Xvfb (scripts/setup.sh installs it)"
-  [ "$failures" -eq 0 ]
-  exit
-fi
+command -v Xvfb > /dev/null || skip_rest Xvfb
 # A display number nobody uses.
 for number in $(seq 90 120); do
   [ -e "/tmp/.X$number-lock" ] || break

@@ -7,11 +7,22 @@
 #     The same for outputs that exist and must stay as they are (an input named as --out):
 #     nothing is removed first, and nothing else is checked of them.
 #   fail MESSAGE          counts a failure and prints it
+#   skip_rest WHAT        what follows needs WHAT, which is missing: ends the test, failed if
+#                         anything failed so far, else skipped (exit 77, ctest's SKIP_RETURN_CODE)
 failures=0
 
 fail() {
   echo "FAILED: $*"
   failures=$((failures + 1))
+}
+
+skip_rest() {
+  if [ "$failures" -ne 0 ]; then
+    echo "$failures failure(s); the rest skipped: no $1"
+    exit 1
+  fi
+  echo "skipped: no $1 (scripts/setup.sh installs it); every check before passed"
+  exit 77
 }
 
 expect() {
