@@ -1,16 +1,12 @@
 // A change on an already-rendered mapper gives the picture a freshly built one gives: after
-// a light move, an opacity change and a data change, with no technique and with techniques
-// that cache work between frames (cached rays, shadow map, deep shadow map, opacity levels,
-// stochastic shadow map). The rebuild tests count the passes that run; this one checks the
-// pictures they make, with the regression-image comparison (MatchesBaseline). Each change
-// must also show (the picture after it differs from the one before), or a change that was
-// ignored would pass.
+// a light move, an opacity change and a data change, with no technique and with every
+// technique of the registry, cached or not (and chunked where it reads chunk-nodes), so a
+// new technique is checked without an edit here. The rebuild tests count the passes that
+// run; this one checks the pictures they make, with the regression-image comparison
+// (MatchesBaseline). Each change must also show (the picture after it differs from the one
+// before), or a change that was ignored would pass.
+#include "Core/ShadowTechniques.h"
 #include "DeepShadowTestUtilities.h"
-#include "vtkDeepShadowDeepShadowMapTechnique.h"
-#include "vtkDeepShadowOpacityLevelsTechnique.h"
-#include "vtkDeepShadowRayTechnique.h"
-#include "vtkDeepShadowShadowMapTechnique.h"
-#include "vtkDeepShadowStochasticShadowMapTechnique.h"
 
 #include <functional>
 
@@ -21,39 +17,31 @@ using deepshadow::testing::ShadowScene;
 
 namespace
 {
-vtkSmartPointer<vtkDeepShadowTechnique> Make(const std::string& name)
+// Every technique the registry names, as "NAME", "NAME-cached" or "NAME chunked", with its
+// parameters at their defaults but small maps and caches (the scene is 48^3 at 160^2).
+std::vector<std::pair<std::string, deepshadow::ShadowParameters>> Techniques()
 {
-  if (name == "rays-cached")
+  std::vector<std::pair<std::string, deepshadow::ShadowParameters>> all;
+  for (const std::string& name : deepshadow::ShadowTechniqueNames())
   {
-    auto rays = vtkSmartPointer<vtkDeepShadowRayTechnique>::New();
-    rays->CachedOn();
-    rays->SetShadowVolumeSize(48);
-    return rays;
+    bool cached = false;
+    const deepshadow::ShadowTechniqueInfo* info = deepshadow::FindShadowTechnique(name, &cached);
+    deepshadow::ShadowParameters p = info->DefaultParameters(cached);
+    p.MapSize = 128;
+    p.VolumeSize = 48;
+    all.emplace_back(name, p);
+    if (!cached && info->Reads("chunk-nodes"))
+    {
+      deepshadow::FindShadowParameter("chunk-nodes")->Set(p, { 4.0 });
+      all.emplace_back(name + " chunked", p);
+    }
   }
-  vtkSmartPointer<vtkDeepShadowLightSpaceTechnique> map;
-  if (name == "shadowmap")
-  {
-    map = vtkSmartPointer<vtkDeepShadowShadowMapTechnique>::New();
-  }
-  else if (name == "dsm-color")
-  {
-    auto dsm = vtkSmartPointer<vtkDeepShadowDeepShadowMapTechnique>::New();
-    dsm->ColoredOn();
-    map = dsm;
-  }
-  else if (name == "dsm3")
-  {
-    map = vtkSmartPointer<vtkDeepShadowOpacityLevelsTechnique>::New();
-  }
-  else if (name == "cssm")
-  {
-    map = vtkSmartPointer<vtkDeepShadowStochasticShadowMapTechnique>::New();
-  }
-  if (map)
-  {
-    map->SetMapSize(128);
-  }
-  return map; // null for none
+  return all;
+}
+
+vtkSmartPointer<vtkDeepShadowTechnique> Make(const deepshadow::ShadowParameters& p)
+{
+  return p.Kind == deepshadow::ShadowKind::None ? nullptr : vtkDeepShadowTechniqueFactory::New(p);
 }
 
 struct Change
@@ -87,13 +75,13 @@ int TestChangesMatchFreshMapper(int, char*[])
     { "data change", RemovePillar },
   };
   bool ok = true;
-  for (const char* technique : { "none", "rays-cached", "shadowmap", "dsm-color", "dsm3", "cssm" })
+  for (const auto& [technique, parameters] : Techniques())
   {
     for (const Change& change : changes)
     {
       // Rendered, then changed, then rendered again.
       ShadowScene rendered;
-      rendered.Mapper->SetShadowTechnique(Make(technique));
+      rendered.Mapper->SetShadowTechnique(Make(parameters));
       rendered.Window->Render();
       const deepshadow::Image before = Grab(rendered.Window);
       change.Apply(rendered);
@@ -102,15 +90,15 @@ int TestChangesMatchFreshMapper(int, char*[])
       // Built with the change from the start.
       ShadowScene fresh;
       change.Apply(fresh);
-      fresh.Mapper->SetShadowTechnique(Make(technique));
+      fresh.Mapper->SetShadowTechnique(Make(parameters));
       fresh.Window->Render();
       std::string how;
       const bool same =
         deepshadow::testing::MatchesBaseline(after, Grab(fresh.Window), BaselineTolerance(), how);
       const double shown = deepshadow::Compare(before, after).RMSE;
-      ok = Check(std::string(technique) + ", " + change.Name + ": as a fresh mapper (" + how + ")",
+      ok = Check(technique + ", " + change.Name + ": as a fresh mapper (" + how + ")",
              same) && ok;
-      ok = Check(std::string(technique) + ", " + change.Name + ": the change shows (RMSE " +
+      ok = Check(technique + ", " + change.Name + ": the change shows (RMSE " +
                std::to_string(shown).substr(0, 6) + " >= 0.002)",
              shown >= 0.002) && ok;
     }
