@@ -7,6 +7,7 @@
 #include "Core/Shadows/LightSpace.h"
 #include "Core/ReferenceRenderer.h"
 #include "Core/Shadows.h"
+#include "Core/ShadowTechniques.h"
 
 #include <gtest/gtest.h>
 
@@ -78,16 +79,26 @@ ShadowParameters Technique(ShadowKind kind, bool colored = false, bool cached = 
   return p;
 }
 
-// Every technique the mapper offers, at small maps; the ground truth (no early termination) first.
+// Every technique the registry offers, cached or not, at small maps (a new one is in every
+// stiff case without an edit here); the ground truth (no early termination) first.
 std::vector<ShadowParameters> EveryTechnique()
 {
-  return { ShadowParameters::GroundTruth(false, 1.0), Technique(ShadowKind::Rays),
-    Technique(ShadowKind::Rays, false, false, true), Technique(ShadowKind::Rays, true),
-    Technique(ShadowKind::ShadowMap), Technique(ShadowKind::DeepShadowMap),
-    Technique(ShadowKind::DeepShadowMap, true), Technique(ShadowKind::OpacityLevels),
-    Technique(ShadowKind::Stochastic), Technique(ShadowKind::Rays, false, true),
-    Technique(ShadowKind::ShadowMap, false, true), Technique(ShadowKind::DeepShadowMap, false, true),
-    Technique(ShadowKind::Stochastic, false, true) };
+  std::vector<ShadowParameters> all{ ShadowParameters::GroundTruth(false, 1.0) };
+  for (const std::string& name : ShadowTechniqueNames())
+  {
+    bool cached = false;
+    const ShadowTechniqueInfo* info = FindShadowTechnique(name, &cached);
+    if (info->Kind == ShadowKind::None)
+    {
+      continue;
+    }
+    ShadowParameters p = info->DefaultParameters(cached);
+    p.MapSize = 32;
+    p.VolumeSize = 128; // as many nodes as voxels: cache nodes sit on the voxels
+    p.Seed = 3;
+    all.push_back(p);
+  }
+  return all;
 }
 
 std::string NameOf(const ShadowParameters& p)
@@ -104,7 +115,7 @@ double DarkTolerance(const ShadowParameters& p)
   {
     return p.Epsilon;
   }
-  const bool binary = p.Kind == ShadowKind::ShadowMap || p.Kind == ShadowKind::Stochastic || p.Opaque;
+  const bool binary = ShadowTechniqueOf(p).Binary || p.Kind == ShadowKind::Stochastic;
   return binary || !p.EarlyTermination ? 0.0 : ShadowTerminationTransmittance;
 }
 

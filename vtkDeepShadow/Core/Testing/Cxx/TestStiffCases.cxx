@@ -1,5 +1,5 @@
 // Stiff and extreme cases (issue 7), CPU side: the double-precision twins at the edges, for
-// every shadow technique, with the defined behaviour in each test's name and comment. The GPU
+// every shadow technique of the registry, cached or not (StiffCases.h's EveryTechnique), with the defined behaviour in each test's name and comment. The GPU
 // side, each technique against its twin, is Rendering's TestStiffCasesGPU.cxx ("GPU n" is its
 // part n). The index of every stiff case, here and elsewhere:
 // - opacity -> 1: OpacityNearOneSaturatesToAmbientOnlyWithoutNaN; GPU 2; view rays alone:

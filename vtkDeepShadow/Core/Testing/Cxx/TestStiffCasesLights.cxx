@@ -181,7 +181,7 @@ TEST(StiffCases, MapSizeOneShadowsALaterallyUniformLayer)
       const glm::dvec3 v = shadow->Visibility(point);
       ExpectVisibilityInUnitRange(v, NameOf(p));
       const double expected = truth->Visibility(point).r;
-      if (expected == 1.0 || p.Kind == ShadowKind::ShadowMap)
+      if (expected == 1.0 || ShadowTechniqueOf(p).Binary)
       {
         EXPECT_EQ(v.r, std::round(expected)) << NameOf(p); // above the layer, or binary (opacity 0.6 > 0.5)
       }

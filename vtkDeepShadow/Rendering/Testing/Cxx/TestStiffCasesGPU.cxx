@@ -1,5 +1,6 @@
 // Stiff and extreme cases on the GPU (issue 7): vtkDeepShadowVolumeMapper with each shadow
-// technique against its CPU twin (vtkDeepShadowReferenceRenderer, GPU-twin mode), and the
+// technique of the registry, cached or not (EveryTechnique: a new one is in without an edit),
+// against its CPU twin (vtkDeepShadowReferenceRenderer, GPU-twin mode), and the
 // defined behaviour where it can be read off the picture. The CPU half, with the closed forms,
 // is Core/Testing/Cxx/TestStiffCases.cxx, whose head indexes every stiff case (those tested
 // elsewhere are not repeated here). Parts 1 to 9 below; GPU 64^2 pictures unless said.
@@ -19,6 +20,7 @@
 // one clear error and the unshadowed picture, a map of the largest size works, a map of 1
 // texel works; lights of zero intensity give the unlit picture; seeds give bit-identical
 // pictures run to run.
+#include "Core/ShadowTechniques.h"
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
@@ -35,6 +37,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -97,31 +100,44 @@ vtkSmartPointer<T> Make(int mapSize)
   return t;
 }
 
-// Every technique, maps of `mapSize` texels (64: finer than a voxel over the test volumes).
+// Every technique of the registry, cached or not (a new one is in every case without an edit
+// here), maps of `mapSize` texels (64: finer than a voxel over the test volumes).
 std::vector<Technique> EveryTechnique(int mapSize = 64)
 {
   std::vector<Technique> all;
-  auto rays = Make<vtkDeepShadowRayTechnique>(0), opaque = Make<vtkDeepShadowRayTechnique>(0),
-       raysCached = Make<vtkDeepShadowRayTechnique>(0);
-  opaque->OpaqueOn();
-  raysCached->CachedOn();
-  auto dsm = Make<vtkDeepShadowDeepShadowMapTechnique>(mapSize), color = Make<vtkDeepShadowDeepShadowMapTechnique>(mapSize),
-       dsmCached = Make<vtkDeepShadowDeepShadowMapTechnique>(mapSize);
-  color->ColoredOn();
-  dsmCached->CachedOn();
-  auto cssm = Make<vtkDeepShadowStochasticShadowMapTechnique>(mapSize);
-  cssm->SetSeed(7);
-  const double stop = 1.0 / 512;
-  all.push_back({ "rays", rays, false, stop });
-  all.push_back({ "rays-opaque", opaque, true, 0.0 });
-  all.push_back({ "shadowmap", Make<vtkDeepShadowShadowMapTechnique>(mapSize), true, 0.0 });
-  all.push_back({ "dsm", dsm, false, 0.02 });
-  all.push_back({ "dsm-color", color, false, 0.02 });
-  all.push_back({ "dsm3", Make<vtkDeepShadowOpacityLevelsTechnique>(mapSize), false, stop });
-  all.push_back({ "cssm", cssm, false, 0.0 });
-  all.push_back({ "rays-cached", raysCached, false, stop });
-  all.push_back({ "dsm-cached", dsmCached, false, 0.02 });
+  for (const std::string& name : deepshadow::ShadowTechniqueNames())
+  {
+    bool cached = false;
+    const deepshadow::ShadowTechniqueInfo* info = deepshadow::FindShadowTechnique(name, &cached);
+    if (info->Kind == deepshadow::ShadowKind::None)
+    {
+      continue;
+    }
+    deepshadow::ShadowParameters p = info->DefaultParameters(cached);
+    p.MapSize = mapSize;
+    p.Seed = 7;
+    // What it may leave of the light in a full shadow (TestStiffCases' DarkTolerance): a deep
+    // shadow map its bound, binary and stochastic ones nothing, translucent feelers and
+    // opacity levels the transmittance at which they stop.
+    const double dark = p.Kind == deepshadow::ShadowKind::DeepShadowMap ? p.Epsilon
+      : info->Binary || p.Kind == deepshadow::ShadowKind::Stochastic   ? 0.0
+                                                                       : deepshadow::ShadowTerminationTransmittance;
+    all.push_back({ name, vtkDeepShadowTechniqueFactory::New(p), info->Binary, dark });
+  }
   return all;
+}
+
+// The technique called `name` among `all`.
+const Technique& Named(const std::vector<Technique>& all, const std::string& name)
+{
+  for (const Technique& t : all)
+  {
+    if (t.Name == name)
+    {
+      return t;
+    }
+  }
+  throw std::invalid_argument("no technique " + name);
 }
 
 // One volume, one scene light, a size x size window.
@@ -370,19 +386,19 @@ int TestStiffCasesGPU(int, char*[])
     for (double distance : { 1e-4, 1e4 })
     {
       stage.Property->SetScalarOpacityUnitDistance(distance);
-      for (const Technique* t : { &all[0], &all[2], &all[3] }) // rays, shadowmap, dsm
+      for (const Technique* t : { &Named(all, "rays"), &Named(all, "shadowmap"), &Named(all, "dsm") })
       {
         ok = stage.MatchesTwin("opacity unit distance " + std::to_string(distance) + ", " + t->Name, *t) && ok;
       }
     }
     stage.Property->SetScalarOpacityUnitDistance(1.0);
     stage.Mapper->SetSampleDistance(1e-3);
-    for (const Technique* t : { &none, &all[7], &all[8] }) // none, rays-cached, dsm-cached
+    for (const Technique* t : { &none, &Named(all, "rays-cached"), &Named(all, "dsm-cached") })
     {
       ok = stage.MatchesTwin("sample distance 1e-3, " + t->Name, *t) && ok;
     }
     stage.Mapper->SetSampleDistance(10.0);
-    for (const Technique* t : { &all[0], &all[2], &all[3] })
+    for (const Technique* t : { &Named(all, "rays"), &Named(all, "shadowmap"), &Named(all, "dsm") })
     {
       ok = stage.MatchesTwin("sample distance 10, " + t->Name, *t) && ok;
     }
@@ -402,8 +418,8 @@ int TestStiffCasesGPU(int, char*[])
           deepshadow::testing::CoveredFraction(picture, stage.Background) == 0.0);
     };
     stage.Mapper->SetSampleDistance(1e-3);
-    ok = (llvmpipe ? refused("sample distance 1e-3, shadowmap, llvmpipe", all[2], "on llvmpipe, the sample distance")
-                   : stage.MatchesTwin("sample distance 1e-3, shadowmap", all[2])) &&
+    ok = (llvmpipe ? refused("sample distance 1e-3, shadowmap, llvmpipe", Named(all, "shadowmap"), "on llvmpipe, the sample distance")
+                   : stage.MatchesTwin("sample distance 1e-3, shadowmap", Named(all, "shadowmap"))) &&
       ok;
     const int two[3] = { 2, 2, 2 };
     auto cube = MakeVolume(two, unit, VTK_UNSIGNED_CHAR, [](int, int, int) { return 200.0; });
@@ -426,7 +442,7 @@ int TestStiffCasesGPU(int, char*[])
       auto data = MakeVolume(dims.data(), unit, VTK_UNSIGNED_CHAR, [](int, int, int) { return 200.0; });
       Stage stage(data, 32);
       stage.Uniform(1.0);
-      const Image image = stage.Render(EveryTechnique()[3].Object);
+      const Image image = stage.Render(Named(EveryTechnique(), "dsm").Object);
       stage.Window->Render();
       vtkNew<vtkDeepShadowReferenceRenderer> reference;
       vtkNew<MessageCapture> quiet;
@@ -520,14 +536,14 @@ int TestStiffCasesGPU(int, char*[])
              deepshadow::testing::Reference(stage.Renderer, true), 8.0 / 255.0, 24.0 / 255.0, 0.03) && ok;
     }
     stage.Positional(15.5 + 6e5, 15.5 - 3e5, 15.5 + 7.4e5);
-    for (const Technique* t : { &all[0], &all[1], &all[2], &all[7] }) // rays, rays-opaque, shadowmap, rays-cached
+    for (const Technique* t : { &Named(all, "rays"), &Named(all, "rays-opaque"), &Named(all, "shadowmap"), &Named(all, "rays-cached") })
     {
       ok = stage.MatchesTwin("light 1e6 away, " + t->Name, *t) && ok;
     }
     for (const double z : { 31.000001, 15.5 + 2.7e7 })
     {
       stage.Positional(15.5, 15.5, z);
-      ok = stage.MatchesTwin(std::string("shadow map, light ") + (z < 32 ? "1e-6 above" : "1e6 radii away"), all[2]) && ok;
+      ok = stage.MatchesTwin(std::string("shadow map, light ") + (z < 32 ? "1e-6 above" : "1e6 radii away"), Named(all, "shadowmap")) && ok;
     }
     stage.Property->ShadeOn();
     vtkNew<vtkLight> second, third;
@@ -561,7 +577,7 @@ int TestStiffCasesGPU(int, char*[])
     stage.LookFrom(1.0, -0.5, -0.45);
     stage.Directional(0.2, 0.1, 1.0);
     const std::vector<Technique> all = EveryTechnique(1);
-    for (const Technique* t : { &all[2], &all[3], &all[5], &all[6] }) // shadowmap, dsm, dsm3, cssm
+    for (const Technique* t : { &Named(all, "shadowmap"), &Named(all, "dsm"), &Named(all, "dsm3"), &Named(all, "cssm") })
     {
       ok = stage.MatchesTwin("map size 1, " + t->Name, *t) && ok;
     }
@@ -591,9 +607,9 @@ int TestStiffCasesGPU(int, char*[])
     // Unshadowed: lit as with the technique (an unshaded volume that receives shadows is lit
     // isotropically), the light casting no shadow.
     stage.Light->SetShadowAttenuation(0.0);
-    const Image unshadowed = stage.Render(all[2].Object);
+    const Image unshadowed = stage.Render(Named(all, "shadowmap").Object);
     stage.Light->SetShadowAttenuation(1.0);
-    for (const Technique* t : { &all[2], &all[3], &all[5], &all[6] })
+    for (const Technique* t : { &Named(all, "shadowmap"), &Named(all, "dsm"), &Named(all, "dsm3"), &Named(all, "cssm") })
     {
       stage.Render(nullptr); // a frame without trouble: the next error is a new one
       vtkDeepShadowLightSpaceTechnique::SafeDownCast(t->Object)->SetMapSize(largest + 1);
@@ -631,7 +647,7 @@ int TestStiffCasesGPU(int, char*[])
       stage.Opacity->AddPoint(at(1.0), 0.9);
     };
     functions(0.0, 200.0);
-    const Technique dsm = EveryTechnique()[3];
+    const Technique dsm = Named(EveryTechnique(), "dsm");
     const Image expected = stage.Render(dsm.Object);
     const float big = std::numeric_limits<float>::max();
     const struct
@@ -661,7 +677,7 @@ int TestStiffCasesGPU(int, char*[])
     stage.Mapper->SetInputData(broken);
     stage.Mapper->ReplaceNonFiniteScalarsOn();
     functions(0.0, 200.0);
-    for (const Technique& t : { EveryTechnique()[0], dsm })
+    for (const Technique& t : { Named(EveryTechnique(), "rays"), dsm })
     {
       const Image gpu = stage.Render(t.Object);
       vtkNew<vtkDeepShadowReferenceRenderer> twin;
@@ -685,7 +701,7 @@ int TestStiffCasesGPU(int, char*[])
     stage.LookFrom(1.0, -0.5, -0.45);
     stage.Mapper->JitterOn();
     stage.Mapper->SetJitterSeed(5);
-    const Technique cssm = EveryTechnique()[6];
+    const Technique cssm = Named(EveryTechnique(), "cssm");
     auto* object = vtkDeepShadowStochasticShadowMapTechnique::SafeDownCast(cssm.Object);
     ok = stage.MatchesTwin("jitter and cssm seeds", cssm) && ok;
     const Image first = Grab(stage.Window);
