@@ -15,6 +15,7 @@ packages=(cmake ninja-build g++ ccache pkg-config
   libgdcm-tools   # gdcmconv: the tests re-encode a real series in compressed transfer syntaxes
   mricron-data    # the Colin27 brain MRI (NIfTI): the tests' and documentation's real anatomy
   chromium        # headless screenshots of the main job's page (out/index.html)
+  doxygen         # the class documentation from the headers (Documentation.Doxygen)
   xvfb)           # a virtual display for the interactive viewer's test
 missing=()
 for package in "${packages[@]}"; do

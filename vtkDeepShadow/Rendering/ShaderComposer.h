@@ -30,7 +30,7 @@ private:
   std::map<std::string, std::string> Parts;
 };
 
-/** The features embedded in the library (every Shaders/Features/*.glsl), by name (Jitter, Phong, ...). */
+/** The features embedded in the library (each .glsl of Shaders/Features), by name (Jitter, Phong, ...). */
 const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 
 /** The Bound feature for a region of `leaves` leaves (BOUND_LEAVES defined in its Dec part). */

@@ -17,7 +17,7 @@
  *              corner, far from the centre of the light's view (clustered deep shadow maps).
  *
  * Generation is deterministic: integer hashes for randomness, only correctly rounded IEEE
- * operations (no libm transcendental functions, no <random> distributions), compiled without
+ * operations (no libm transcendental functions, no std:: random distributions), compiled without
  * FMA contraction, and each voxel computed independently of the thread that computes it. The
  * same scene and scale give the same bytes on every run and machine.
  *

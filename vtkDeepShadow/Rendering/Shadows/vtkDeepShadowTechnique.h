@@ -189,7 +189,7 @@ protected:
   virtual long long GetStructureBytes() const { return 0; }
   /**
    * GLSL defining vec3 lightVisibility(int slot, vec3 position, vec3 toLight,
-   * float lightDistance, vec3 receiverNormal) and its uniforms (parts //@Dec), for the ray
+   * float lightDistance, vec3 receiverNormal) and its uniforms (its declarations part), for the ray
    * caster and the cache (receiverNormal: a mesh point's normal, zero for volume samples).
    */
   virtual std::string GetLookupSource() const = 0;
