@@ -255,6 +255,148 @@ glm::dvec4 ProjectRay(const VolumeInstance& volume, const TransferTable* table, 
 }
 }
 
+ReferenceRenderer::ClassifiedSample ReferenceRenderer::Classify(const VolumeInstance& volume,
+  const PreparedVolume& prepared, const glm::dvec3& index, double scalar, double dt, double datasetStretch)
+{
+  const TransferTable* table = prepared.Table.get();
+  const VolumeGrid& grid = *volume.Grid;
+  const bool isosurface = !volume.IsoValues.empty();
+  ClassifiedSample sample;
+  glm::dvec3& color = sample.Color;
+  double& alpha = sample.Alpha;
+  if (prepared.Components)
+  {
+    sample.ComponentValues = volume.Components->Sample(grid, index, volume.Sampling);
+    sample.Colors = prepared.Components->Colors(sample.ComponentValues, dt);
+    volume.Components->ApplyGradients(sample.Colors, grid, index, volume.Sampling);
+    const glm::dvec4 combined = CombineComponents(*volume.Components, sample.Colors, sample.ComponentValues);
+    color = glm::dvec3(combined);
+    alpha = combined.a;
+  }
+  else if (table)
+  {
+    const glm::dvec4 entry = table->Lookup(scalar);
+    color = glm::dvec3(entry);
+    alpha = entry.a;
+  }
+  else
+  {
+    color = volume.Transfer.Color(scalar);
+    const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
+    alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
+  }
+  if (volume.Function2D)
+  {
+    const glm::dvec4 looked = volume.Function2D->At(grid, index, volume.Sampling, scalar);
+    color = glm::dvec3(looked);
+    alpha = looked.a;
+  }
+  if (volume.Labels)
+  {
+    const LabelledSample labelled = volume.Labels->Apply(glm::dvec4(color, alpha), scalar,
+      volume.Labels->LabelOf(volume.Mask->Sample(index, Interpolation::Nearest)), 1.0, prepared.LabelTables.get());
+    color = glm::dvec3(labelled.Lit);
+    alpha = labelled.Lit.a;
+    sample.Unlit = labelled.Unlit;
+  }
+  else
+  {
+    alpha *= MaskFactor(volume.Mask.get(), index);
+  }
+  if (volume.Gradient && alpha > 0.0)
+  {
+    alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);
+  }
+  if (volume.WorldToDataset)
+  {
+    alpha = CorrectOpacity(alpha, datasetStretch, 1.0);
+  }
+  return sample;
+}
+
+glm::dvec3 ReferenceRenderer::LitColor(const Scene& scene, const VolumeInstance& volume,
+  const PreparedVolume& prepared, const Ray& ray, const glm::dvec3& position, const glm::dvec3& index, double dt,
+  ClassifiedSample& sample, bool termOnly, bool wantTerm, std::vector<std::optional<glm::dvec3>>& factors,
+  glm::dvec3& term)
+{
+  const bool shadowed = volume.Shadows.Kind != ShadowKind::None;
+  const bool isosurface = !volume.IsoValues.empty();
+  const VolumeGrid& grid = *volume.Grid;
+  factors.assign(scene.Lights.size(), std::nullopt);
+  auto factorOf = [&](size_t l) {
+    if (!factors[l])
+    {
+      const LightShadow* own = shadowed ? prepared.Shadows[l].get() : nullptr;
+      const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
+      glm::dvec3 factor(1.0);
+      if (own || others)
+      {
+        const glm::dvec3 receiver = isosurface
+          ? position + IsoReceiverOffset(volume.Shadows.StepFactor * dt) * scene.Lights[l].At(position).ToLight
+          : position;
+        glm::dvec3 visibility = own ? own->Visibility(receiver) : glm::dvec3(1.0);
+        if (others)
+        {
+          visibility *= others->Visibility(receiver);
+        }
+        factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
+      }
+      factors[l] = factor;
+    }
+    return *factors[l];
+  };
+  // What the lights give colour `c` of normal `normal` (Phong) or none (isotropic).
+  auto shade = [&](const glm::dvec3& c, const glm::dvec3& normal, const Material& material) {
+    if (volume.Shade)
+    {
+      return ShadeVolumeSample(volume.Shading, c, normal, position, -ray.Direction, scene.Lights,
+        material, scene.TwoSidedLighting, factorOf);
+    }
+    glm::dvec3 light = material.Ambient * c * scene.AmbientLight;
+    for (size_t l = 0; l < scene.Lights.size(); ++l)
+    {
+      const glm::dvec3 contribution = material.Diffuse * scene.Lights[l].VolumeSampleAt(position).Diffuse * c;
+      if (contribution != glm::dvec3(0.0))
+      {
+        light += contribution * factorOf(l);
+      }
+    }
+    return glm::clamp(light, 0.0, 1.0);
+  };
+  if (wantTerm)
+  {
+    for (size_t l = 0; l < scene.Lights.size(); ++l)
+    {
+      if (scene.Lights[l].VolumeSampleAt(position).Reach > 0.0)
+      {
+        term *= factorOf(l);
+      }
+    }
+  }
+  if (termOnly)
+  {
+    return glm::clamp(term, 0.0, 1.0);
+  }
+  if (volume.Components && volume.Components->LitApart(volume.Shade))
+  {
+    // Each component lit with its own gradient and material, then combined (VTK's).
+    for (int i = 0; i < volume.Components->Count(); ++i)
+    {
+      glm::dvec4& c = sample.Colors[static_cast<size_t>(i)];
+      if (c.a > 0.0 && volume.Components->Weights[i] > 0.0)
+      {
+        const glm::dvec3 normal =
+          volume.Shading.Normal(volume.Components->Grid(grid, i).IndexGradient(index, volume.Sampling));
+        c = glm::dvec4(shade(glm::dvec3(c), normal, volume.Components->Materials[static_cast<size_t>(i)]), c.a);
+      }
+    }
+    return glm::dvec3(CombineComponents(*volume.Components, sample.Colors, sample.ComponentValues));
+  }
+  const glm::dvec3 normal =
+    volume.Shade ? volume.Shading.Normal(grid.IndexGradient(index, volume.Sampling)) : glm::dvec3(0.0);
+  return shade(sample.Color, normal, volume.Surface);
+}
+
 glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance& volume,
   const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
   const MarchSettings& settings, glm::dvec4* shadowTerm, std::vector<RaySample>* samples)
@@ -333,150 +475,24 @@ glm::dvec4 ReferenceRenderer::MarchRay(const Scene& scene, const VolumeInstance&
       }
     }
 
-    glm::dvec3 color;
-    double alpha;
-    glm::dvec4 componentValues(0.0);
-    ComponentColors componentColors{};
-    if (prepared.Components)
-    {
-      componentValues = volume.Components->Sample(grid, index, volume.Sampling);
-      componentColors = prepared.Components->Colors(componentValues, dt);
-      volume.Components->ApplyGradients(componentColors, grid, index, volume.Sampling);
-      const glm::dvec4 combined =
-        CombineComponents(*volume.Components, componentColors, componentValues);
-      color = glm::dvec3(combined);
-      alpha = combined.a;
-    }
-    else if (table)
-    {
-      const glm::dvec4 entry = table->Lookup(scalar);
-      color = glm::dvec3(entry);
-      alpha = entry.a;
-    }
-    else
-    {
-      color = volume.Transfer.Color(scalar);
-      const double opacity = volume.Transfer.Opacity.Evaluate(scalar);
-      alpha = isosurface ? opacity : CorrectOpacity(opacity, dt, volume.Transfer.OpacityUnitDistance);
-    }
-    if (volume.Function2D)
-    {
-      const glm::dvec4 looked = volume.Function2D->At(grid, index, volume.Sampling, scalar);
-      color = glm::dvec3(looked);
-      alpha = looked.a;
-    }
-    glm::dvec3 unlit(0.0); // a label map's colour added unlit (Mask.h)
-    if (volume.Labels)
-    {
-      const LabelledSample labelled = volume.Labels->Apply(glm::dvec4(color, alpha), scalar,
-        volume.Labels->LabelOf(volume.Mask->Sample(index, Interpolation::Nearest)), 1.0,
-        prepared.LabelTables.get());
-      color = glm::dvec3(labelled.Lit);
-      alpha = labelled.Lit.a;
-      unlit = labelled.Unlit;
-    }
-    else
-    {
-      alpha *= MaskFactor(volume.Mask.get(), index);
-    }
-    if (volume.Gradient && alpha > 0.0)
-    {
-      alpha *= volume.Gradient->Factor(grid, index, volume.Sampling);
-    }
-    if (volume.WorldToDataset)
-    {
-      alpha = CorrectOpacity(alpha, datasetStretch, 1.0);
-    }
+    ClassifiedSample sample = Classify(volume, prepared, index, scalar, dt, datasetStretch);
+    const double alpha = sample.Alpha;
     if (alpha <= 0.0)
     {
       continue;
     }
+    glm::dvec3 color = sample.Color;
     glm::dvec3 termColor(1.0); // nothing shadows an unlit sample
     if (lit)
     {
-      const glm::dvec3 position = ray.Origin + receiverT * ray.Direction;
-      factors.assign(scene.Lights.size(), std::nullopt);
-      auto factorOf = [&](size_t l) {
-        if (!factors[l])
-        {
-          const LightShadow* own = shadowed ? prepared.Shadows[l].get() : nullptr;
-          const LightShadow* others = l < prepared.OtherShadows.size() ? prepared.OtherShadows[l].get() : nullptr;
-          glm::dvec3 factor(1.0);
-          if (own || others)
-          {
-            const glm::dvec3 receiver = isosurface
-              ? position + IsoReceiverOffset(volume.Shadows.StepFactor * dt) * scene.Lights[l].At(position).ToLight
-              : position;
-            glm::dvec3 visibility = own ? own->Visibility(receiver) : glm::dvec3(1.0);
-            if (others)
-            {
-              visibility *= others->Visibility(receiver);
-            }
-            factor = 1.0 - scene.Lights[l].ShadowAttenuation * (1.0 - visibility);
-          }
-          factors[l] = factor;
-        }
-        return *factors[l];
-      };
-      // What the lights give colour `c` of normal `normal` (Phong) or none (isotropic).
-      auto shade = [&](const glm::dvec3& c, const glm::dvec3& normal, const Material& material) {
-        if (volume.Shade)
-        {
-          return ShadeVolumeSample(volume.Shading, c, normal, position, -ray.Direction, scene.Lights,
-            material, scene.TwoSidedLighting, factorOf);
-        }
-        glm::dvec3 light = material.Ambient * c * scene.AmbientLight;
-        for (size_t l = 0; l < scene.Lights.size(); ++l)
-        {
-          const glm::dvec3 contribution = material.Diffuse * scene.Lights[l].VolumeSampleAt(position).Diffuse * c;
-          if (contribution != glm::dvec3(0.0))
-          {
-            light += contribution * factorOf(l);
-          }
-        }
-        return glm::clamp(light, 0.0, 1.0);
-      };
       glm::dvec3 term(1.0);
-      if (wantTerm)
-      {
-        for (size_t l = 0; l < scene.Lights.size(); ++l)
-        {
-          if (scene.Lights[l].VolumeSampleAt(position).Reach > 0.0)
-          {
-            term *= factorOf(l);
-          }
-        }
-      }
-      if (termOnly)
-      {
-        color = glm::clamp(term, 0.0, 1.0);
-      }
-      else if (volume.Components && volume.Components->LitApart(volume.Shade))
-      {
-        // Each component lit with its own gradient and material, then combined (VTK's).
-        for (int i = 0; i < volume.Components->Count(); ++i)
-        {
-          glm::dvec4& c = componentColors[static_cast<size_t>(i)];
-          if (c.a > 0.0 && volume.Components->Weights[i] > 0.0)
-          {
-            const glm::dvec3 normal =
-              volume.Shading.Normal(volume.Components->Grid(grid, i).IndexGradient(index, volume.Sampling));
-            c = glm::dvec4(shade(glm::dvec3(c), normal, volume.Components->Materials[static_cast<size_t>(i)]), c.a);
-          }
-        }
-        color = glm::dvec3(CombineComponents(*volume.Components, componentColors, componentValues));
-      }
-      else
-      {
-        const glm::dvec3 normal =
-          volume.Shade ? volume.Shading.Normal(grid.IndexGradient(index, volume.Sampling)) : glm::dvec3(0.0);
-        color = shade(color, normal, volume.Surface);
-      }
+      color = LitColor(scene, volume, prepared, ray, ray.Origin + receiverT * ray.Direction, index, dt, sample,
+        termOnly, wantTerm, factors, term);
       termColor = glm::clamp(term, 0.0, 1.0);
     }
     if (!termOnly)
     {
-      color += unlit;
+      color += sample.Unlit;
     }
     if (shadowTerm)
     {

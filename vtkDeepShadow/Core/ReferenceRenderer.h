@@ -234,6 +234,31 @@ public:
     const PreparedVolume& prepared, const Ray& ray, double tLimit, double offset,
     const MarchSettings& settings, glm::dvec4* shadowTerm = nullptr, std::vector<RaySample>* samples = nullptr);
 
+  /** A volume sample as the ray caster looks it up, before it is lit. */
+  struct ClassifiedSample
+  {
+    glm::dvec3 Color{ 0.0 };
+    double Alpha = 0.0;                // for the view step (and the prop's stretch)
+    glm::dvec3 Unlit{ 0.0 };           // a label map's colour, added unlit (Mask.h)
+    glm::dvec4 ComponentValues{ 0.0 }; // several components: their values,
+    ComponentColors Colors{};          // and each one's colour and opacity (lit apart later)
+  };
+  /**
+   * The sample at continuous index `index` (of scalar `scalar`): transfer function or table,
+   * components, 2D function, label map or mask, gradient opacity, the prop's stretch
+   * (`datasetStretch`: this ray's world step in dataset units).
+   */
+  static ClassifiedSample Classify(const VolumeInstance& volume, const PreparedVolume& prepared,
+    const glm::dvec3& index, double scalar, double dt, double datasetStretch);
+  /**
+   * The lit colour of `sample` at world `position` on `ray` (the shadow term alone under
+   * RenderOutput::ShadowTerm), and in `term` the product of the lights' shadow factors, when
+   * `wantTerm`. `factors`: each light's factor, looked up once (reused across samples).
+   */
+  static glm::dvec3 LitColor(const Scene& scene, const VolumeInstance& volume, const PreparedVolume& prepared,
+    const Ray& ray, const glm::dvec3& position, const glm::dvec3& index, double dt, ClassifiedSample& sample,
+    bool termOnly, bool wantTerm, std::vector<std::optional<glm::dvec3>>& factors, glm::dvec3& term);
+
   /**
    * Lit colour of a mesh point, as vtkDeepShadowPolyDataMapper's shader computes it.
    * `shadows`: the first shadowing volume's lookups, per light, or null; `others`: what the
