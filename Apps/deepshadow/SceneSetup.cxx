@@ -314,22 +314,14 @@ void RequireSceneName(const std::string& name)
   throw UsageError("unknown scene '" + name + "' (scenes: " + names + ")");
 }
 
-SceneSetup SceneSetup::Build(const Options& options)
+namespace
 {
-  SceneSetup setup;
-  setup.Window = vtkSmartPointer<vtkDeepShadowRenderWindow>::New();
-  if (!options.Backend.empty())
-  {
-    setup.Window->SetBackend(vtkDeepShadowRenderWindow::BackendFromString(options.Backend.c_str()));
-  }
-  setup.Window->SetSize(options.Width, options.Height);
-  setup.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  setup.Renderer->SetBackground(0.08, 0.09, 0.12);
-  setup.Window->AddRenderer(setup.Renderer);
-
+// The volume and its property: a file's (read and checked), or a standard scene's (made by
+// `scene`, whose key light joins `lights` when none is asked for).
+vtkSmartPointer<vtkVolumeProperty> LoadVolume(
+  const Options& options, SceneSetup& setup, vtkDeepShadowStandardScene* scene, std::vector<LightSpec>& lights)
+{
   vtkSmartPointer<vtkVolumeProperty> property;
-  std::vector<LightSpec> lights = options.Lights;
-  vtkNew<vtkDeepShadowStandardScene> scene;
   if (options.ObjectCount > 0 && (!options.VolumeFile.empty() || options.Scene != "sparse"))
   {
     throw UsageError("--objects applies to --scene sparse only");
@@ -371,9 +363,14 @@ SceneSetup SceneSetup::Build(const Options& options)
       lights.push_back(key);
     }
   }
-  ApplyAppearance(options, setup.Data, property);
+  return property;
+}
 
-  // The bound: files given replace a bounded scene's meshes; --csg replaces its expression.
+// The bounds: a bounded scene's meshes, or the files given, combined by the expression and
+// checked by CGAL (a bad bound is a usage error, an empty result is said). Returns the
+// evaluated mesh (--csg-mesh draws it), null without bounds.
+vtkSmartPointer<vtkPolyData> BuildBounds(const Options& options, SceneSetup& setup)
+{
   if (vtkDeepShadowBoundedScene::IsSceneName(options.Scene) && options.VolumeFile.empty())
   {
     setup.Bounds = vtkDeepShadowBoundedScene::MakeBounds(options.Scene, setup.Data->GetBounds());
@@ -425,8 +422,12 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     csgMesh = csg->GetOutput();
   }
+  return csgMesh;
+}
 
-
+// The volume mapper with the options' sampling, shading, mask, technique and bounds.
+void MakeMapper(const Options& options, SceneSetup& setup, vtkPolyData* csgMesh)
+{
   setup.Mapper = vtkSmartPointer<vtkDeepShadowVolumeMapper>::New();
   setup.Mapper->SetInputData(setup.Data);
   setup.Mapper->SetSampleDistance(options.SampleDistance);
@@ -459,6 +460,53 @@ SceneSetup SceneSetup::Build(const Options& options)
     }
     setup.Mapper->SetBoundExpression(setup.BoundExpression);
   }
+}
+
+// The lights asked for, as scene lights (none: VTK's automatic headlight).
+void AddLights(SceneSetup& setup, const std::vector<LightSpec>& lights, const double* centre)
+{
+  for (const LightSpec& spec : lights)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetIntensity(spec.Intensity);
+    const double* v = spec.Vector.data();
+    if (spec.Kind == LightSpec::Directional)
+    {
+      light->SetPositional(false);
+      light->SetFocalPoint(centre);
+      light->SetPosition(centre[0] + v[0], centre[1] + v[1], centre[2] + v[2]);
+    }
+    else
+    {
+      light->SetPositional(true);
+      light->SetPosition(v[0], v[1], v[2]);
+      light->SetFocalPoint(centre);
+      light->SetConeAngle(spec.Kind == LightSpec::Spot ? spec.ConeAngle : 180.0);
+    }
+    setup.Renderer->AddLight(light);
+  }
+}
+}
+
+SceneSetup SceneSetup::Build(const Options& options)
+{
+  SceneSetup setup;
+  setup.Window = vtkSmartPointer<vtkDeepShadowRenderWindow>::New();
+  if (!options.Backend.empty())
+  {
+    setup.Window->SetBackend(vtkDeepShadowRenderWindow::BackendFromString(options.Backend.c_str()));
+  }
+  setup.Window->SetSize(options.Width, options.Height);
+  setup.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  setup.Renderer->SetBackground(0.08, 0.09, 0.12);
+  setup.Window->AddRenderer(setup.Renderer);
+
+  std::vector<LightSpec> lights = options.Lights;
+  vtkNew<vtkDeepShadowStandardScene> scene;
+  vtkSmartPointer<vtkVolumeProperty> property = LoadVolume(options, setup, scene, lights);
+  ApplyAppearance(options, setup.Data, property);
+  MakeMapper(options, setup, BuildBounds(options, setup));
   setup.Volume = vtkSmartPointer<vtkVolume>::New();
   setup.Volume->SetMapper(setup.Mapper);
   setup.Volume->SetProperty(property);
@@ -493,27 +541,7 @@ SceneSetup SceneSetup::Build(const Options& options)
   const double* centre = setup.Volume->GetCenter();
   AddMeshes(setup, options, lights, centre);
   AddSecondVolume(setup, options, lights, centre);
-  for (const LightSpec& spec : lights)
-  {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetIntensity(spec.Intensity);
-    const double* v = spec.Vector.data();
-    if (spec.Kind == LightSpec::Directional)
-    {
-      light->SetPositional(false);
-      light->SetFocalPoint(centre);
-      light->SetPosition(centre[0] + v[0], centre[1] + v[1], centre[2] + v[2]);
-    }
-    else
-    {
-      light->SetPositional(true);
-      light->SetPosition(v[0], v[1], v[2]);
-      light->SetFocalPoint(centre);
-      light->SetConeAngle(spec.Kind == LightSpec::Spot ? spec.ConeAngle : 180.0);
-    }
-    setup.Renderer->AddLight(light);
-  }
+  AddLights(setup, lights, centre);
   if (options.Command == "render" || options.Command == "reference")
   {
     RequireInView(setup.Renderer, options.Width, options.Height);

@@ -392,29 +392,9 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     this->ReportError(problem);
     return false;
   }
-  // What VTK's mapper would draw and this one does not: said once each, never silent.
-  this->Unsupported =
-    deepshadow::UnsupportedSettings(this, input, impl.Drawn.FromCells(),
-      1 + static_cast<int>(impl.Drawn.GetOtherComponents().size()), property, volume->GetMatrix(),
-      this->ShadowTechnique != nullptr);
-  // A vtkShaderProperty's fragment code, where our shader has its place (or refused, said).
-  impl.UserCode = deepshadow::ReadUserShaderCode(volume);
-  if (!impl.UserCode.Refusal.empty())
-  {
-    this->Unsupported.push_back(impl.UserCode.Refusal);
-  }
-  frame.UserCode = impl.UserCode.Empty() || !impl.UserCode.Refusal.empty() ? nullptr : &impl.UserCode;
+  this->ReadUserCodeAndSayUnsupported(volume, frame);
   // Opacity per dataset unit, as VTK's mapper integrates it under a scaled prop.
   const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
-  for (const std::string& setting : this->Unsupported)
-  {
-    if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==
-      this->UnsupportedSaid.end())
-    {
-      this->UnsupportedSaid.push_back(setting);
-      vtkWarningMacro(<< setting);
-    }
-  }
   const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
   // The still step; while the interactor moves (the window asks for 1 frame a second or more,
   // as vtkSmartVolumeMapper decides) with AutoAdjustSampleDistances on, the view rays take
@@ -466,7 +446,52 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
     return false; // said when the bound was built
   }
 
-  // Viewport, camera, lights, and the volume as the GPU holds it.
+  this->FillFrame(renderer, volume, frame, indexToWorld, stillStep, step, unitScale);
+  if (several && !this->UpdateComponents(window, property, step, uncorrected, unitScale, frame))
+  {
+    return false;
+  }
+  return this->PrepareLightsAndShadows(frame);
+}
+
+void vtkDeepShadowVolumeMapper::ReadUserCodeAndSayUnsupported(vtkVolume* volume, deepshadow::RayCastFrame& frame)
+{
+  Internals& impl = *this->Impl;
+  // What VTK's mapper would draw and this one does not: said once each, never silent.
+  this->Unsupported =
+    deepshadow::UnsupportedSettings(this, this->GetImageInput(), impl.Drawn.FromCells(),
+      1 + static_cast<int>(impl.Drawn.GetOtherComponents().size()), volume->GetProperty(), volume->GetMatrix(),
+      this->ShadowTechnique != nullptr);
+  // A vtkShaderProperty's fragment code, where our shader has its place (or refused, said).
+  impl.UserCode = deepshadow::ReadUserShaderCode(volume);
+  if (!impl.UserCode.Refusal.empty())
+  {
+    this->Unsupported.push_back(impl.UserCode.Refusal);
+  }
+  frame.UserCode = impl.UserCode.Empty() || !impl.UserCode.Refusal.empty() ? nullptr : &impl.UserCode;
+  for (const std::string& setting : this->Unsupported)
+  {
+    if (std::find(this->UnsupportedSaid.begin(), this->UnsupportedSaid.end(), setting) ==
+      this->UnsupportedSaid.end())
+    {
+      this->UnsupportedSaid.push_back(setting);
+      vtkWarningMacro(<< setting);
+    }
+  }
+}
+
+void vtkDeepShadowVolumeMapper::FillFrame(vtkRenderer* renderer, vtkVolume* volume, deepshadow::RayCastFrame& frame,
+  const glm::dmat4& indexToWorld, double stillStep, double step, double unitScale)
+{
+  // Viewport, camera, lights, and the volume as the GPU holds it (the tables, textures and
+  // bound already up to date).
+  Internals& impl = *this->Impl;
+  vtkVolumeProperty* property = volume->GetProperty();
+  const bool several = !impl.Drawn.GetOtherComponents().empty();
+  const bool projection = frame.Projection.Mode != deepshadow::BlendMode::Composite;
+  const bool isosurface = !frame.Context.IsoValues.empty();
+  const glm::dmat4 worldToIndex = glm::inverse(indexToWorld);
+  const bool nearest = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION;
   frame.Renderer = renderer;
   frame.Volume = volume;
   frame.Property = property;
@@ -485,7 +510,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   frame.Lit = frame.Shade || (!projection && this->ShadowTechnique) || frame.ShadowTerm;
   frame.Transfer = impl.Transfer.GetTexture();
   deepshadow::ShadowContext& context = frame.Context;
-  context.Window = window;
+  context.Window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   context.Volume = impl.Volume.GetTexture();
   // A projection counts clear samples too: nothing is skipped for being transparent; an
   // isosurface's crossings lie in clear blocks as well.
@@ -507,8 +532,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.ShaderScalar = impl.Volume.GetShaderScalar();
   context.TableMap = impl.Transfer.GetTable().CoordinateMap();
   context.TableSize = this->TransferTableSize;
-  context.Sampling = filter == vtkTextureObject::Nearest ? deepshadow::Interpolation::Nearest
-                                                        : deepshadow::Interpolation::Linear;
+  context.Sampling = nearest ? deepshadow::Interpolation::Nearest : deepshadow::Interpolation::Linear;
   context.IndexToWorld = indexToWorld;
   context.WorldToIndex = worldToIndex;
   context.ViewStep = step;
@@ -521,11 +545,6 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   context.Surfaces = surfaces ? &impl.SurfacesGPU.GetTextures() : nullptr;
   context.CastingSurfaces = surfaces ? impl.Surfaces.get() : nullptr;
   context.SurfacesVersion = this->SurfaceUploads;
-  if (several && !this->UpdateComponents(window, property, step, uncorrected, unitScale, frame))
-  {
-    return false;
-  }
-  return this->PrepareLightsAndShadows(frame);
 }
 
 bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame& frame)

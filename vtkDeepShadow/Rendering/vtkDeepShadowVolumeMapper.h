@@ -414,6 +414,11 @@ private:
    * false when the volume is not drawn (said by ReportError, or an empty bound).
    */
   bool Prepare(vtkRenderer* renderer, vtkVolume* volume, deepshadow::RayCastFrame& frame);
+  /** Reads the volume's vtkShaderProperty code and says each unsupported setting once (Prepare). */
+  void ReadUserCodeAndSayUnsupported(vtkVolume* volume, deepshadow::RayCastFrame& frame);
+  /** Fills the frame and its context from the resources Prepare brought up to date. */
+  void FillFrame(vtkRenderer* renderer, vtkVolume* volume, deepshadow::RayCastFrame& frame,
+    const glm::dmat4& indexToWorld, double stillStep, double step, double unitScale);
   /** The lights and the technique's structures (the last part of Prepare). */
   bool PrepareLightsAndShadows(deepshadow::RayCastFrame& frame);
   /** Composes the shader for the frame's features, binds them and casts the rays. */
