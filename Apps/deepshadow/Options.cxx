@@ -310,6 +310,366 @@ Options WithTechniqueSpec(const Options& base, const std::string& spec)
   return o;
 }
 
+namespace
+{
+// The options every command reads, each key with what it sets (the shadow technique's,
+// the viewer's and the look's are parsed by their own groups: ParseTechniqueOption,
+// ParseViewerOption, ParseLookOption).
+struct OptionEntry
+{
+  std::vector<std::string> Keys;
+  std::function<void(Options&, const std::string&, const std::function<std::string()>&)> Apply;
+};
+
+const std::vector<OptionEntry>& GeneralOptions()
+{
+  static const std::vector<OptionEntry> entries = {
+    { { "--scene" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Scene = next();
+      } },
+    { { "--volume" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.VolumeFile = next();
+      } },
+    { { "--mask" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.MaskFile = next();
+      } },
+    { { "--series" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Series = next();
+      } },
+    { { "--volume-index" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.VolumeIndex = ParseInteger(key, next(), 0, 1000000);
+      } },
+    { { "--bound" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.BoundFiles.push_back(next());
+      } },
+    { { "--mesh" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Meshes.push_back(MeshSpec{ next() });
+      } },
+    { { "--mesh-opacity", "--mesh-color", "--mesh-transform" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        if (o.Meshes.empty())
+        {
+          throw UsageError(key + " applies to the --mesh before it, and none was given");
+        }
+        MeshSpec& mesh = o.Meshes.back();
+        const std::string value = next();
+        if (key == "--mesh-opacity")
+        {
+          mesh.Opacity = ParseNumber(key, value);
+          if (!(mesh.Opacity >= 0.0 && mesh.Opacity <= 1.0))
+          {
+            throw UsageError("--mesh-opacity must lie in [0, 1], got '" + value + "'");
+          }
+        }
+        else if (key == "--mesh-color")
+        {
+          mesh.Color = ParseVector(key, value);
+          for (double c : mesh.Color)
+          {
+            if (!(c >= 0.0 && c <= 1.0))
+            {
+              throw UsageError("--mesh-color components must lie in [0, 1], got '" + value + "'");
+            }
+          }
+        }
+        else
+        {
+          const auto parts = Split(value, ',');
+          if (parts.size() != 3 && parts.size() != 4)
+          {
+            throw UsageError("--mesh-transform expects TX,TY,TZ[,SCALE], got '" + value + "'");
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            mesh.Translate[c] = ParseNumber(key, parts[c]);
+          }
+          mesh.Scale = parts.size() == 4 ? ParseNumber(key, parts[3]) : 1.0;
+          if (!(mesh.Scale > 0.0))
+          {
+            throw UsageError("--mesh-transform's scale must be positive, got '" + value + "'");
+          }
+        }
+      } },
+    { { "--ground" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.Ground = true;
+      } },
+    { { "--volume-segments" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.VolumeSegments = ParseInteger(key, next(), 0, 8);
+      } },
+    { { "--translucent-layers" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.TranslucentLayers = ParseInteger(key, next(), 0, 8);
+      } },
+    { { "--csg" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Csg = next();
+      } },
+    { { "--csg-mesh" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.CsgMesh = true;
+      } },
+    { { "--csg-max-work" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.CsgMaxWork = ParseNumber(key, next());
+        if (o.CsgMaxWork < 0.0)
+        {
+          throw UsageError("--csg-max-work must be 0 (no limit) or positive");
+        }
+      } },
+    { { "--scale" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.SceneScale = ParseNumber(key, next());
+        if (o.SceneScale < 0.01 || o.SceneScale > 2.0)
+        {
+          throw UsageError("--scale must be in [0.01, 2]");
+        }
+      } },
+    { { "--objects" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        const double count = ParseNumber(key, next());
+        if (count != std::floor(count) || count < 1 || count > vtkDeepShadowStandardScene::GetMaxObjectCount())
+        {
+          throw UsageError("--objects must be a whole number in [1, " +
+            std::to_string(vtkDeepShadowStandardScene::GetMaxObjectCount()) + "]");
+        }
+        o.ObjectCount = static_cast<int>(count);
+      } },
+    { { "--size" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        const std::string text = next();
+        const auto parts = Split(text, 'x');
+        if (parts.size() != 2)
+        {
+          throw UsageError("--size expects WxH, got '" + text + "'");
+        }
+        o.Width = ParseInteger(key, parts[0], 1, 16384);
+        o.Height = ParseInteger(key, parts[1], 1, 16384);
+      } },
+    { { "--sample-distance" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.SampleDistance = ParseNumber(key, next());
+        if (!(o.SampleDistance > 0.0))
+        {
+          throw UsageError("--sample-distance must be positive");
+        }
+      } },
+    { { "--light-dir" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        LightSpec light;
+        light.Vector = Direction(key, ParseVector(key, next()));
+        o.Lights.push_back(light);
+      } },
+    { { "--light-pos" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        LightSpec light;
+        light.Kind = LightSpec::Positional;
+        light.Vector = Position(key, ParseVector(key, next()));
+        o.Lights.push_back(light);
+      } },
+    { { "--light" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Lights.push_back(ParseLight(next()));
+      } },
+    { { "--ground-truth" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.GroundTruth = true;
+      } },
+    { { "--no-shading" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.Shade = false;
+        o.ShadeGiven = true;
+      } },
+    { { "--shading" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        const std::string model = next();
+        if (model != "vtk" && model != "blinn-phong")
+        {
+          throw UsageError("--shading must be vtk or blinn-phong, got '" + model + "'");
+        }
+        o.VTKShading = model == "vtk";
+      } },
+    { { "--jitter" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.Jitter = true;
+        o.JitterSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
+      } },
+    { { "--no-empty-space-skipping" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.EmptySpaceSkipping = false;
+      } },
+    { { "--replace-nonfinite" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.ReplaceNonFinite = true;
+      } },
+    { { "--backend" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Backend = next();
+        if (o.Backend != "osmesa" && o.Backend != "egl")
+        {
+          throw UsageError("--backend must be osmesa or egl, got '" + o.Backend + "'");
+        }
+      } },
+    { { "--out" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Out = next();
+      } },
+    { { "--json" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.Json = next();
+      } },
+    { { "--frames" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.Frames = ParseInteger(key, next(), 0, 100000);
+      } },
+    { { "--verbose" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.Verbose = true;
+      } },
+    { { "--memory-budget" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.MemoryBudget = ParseBytes(key, next());
+      } },
+    { { "--gpu-twin" },
+      [](Options& o, const std::string&, const std::function<std::string()>&) {
+        o.GpuTwin = true;
+      } },
+    { { "--threads" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.Threads = ParseInteger(key, next(), 0, 1024);
+      } },
+    { { "--scenes" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.BenchScenes = Split(next(), ',');
+      } },
+    { { "--techniques" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.BenchTechniques = Split(next(), ',');
+        for (const auto& spec : o.BenchTechniques)
+        {
+          WithTechniqueSpec(o, spec); // throws for a bad spec
+        }
+      } },
+    { { "--error-size" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        const std::string text = next();
+        const auto parts = Split(text, 'x');
+        if (parts.size() != 2)
+        {
+          throw UsageError("--error-size expects WxH, got '" + text + "'");
+        }
+        o.ErrorWidth = ParseInteger(key, parts[0], 1, 16384);
+        o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
+      } },
+    { { "--blend-modes" },
+      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+        o.BenchBlendModes.clear();
+        const std::string text = next();
+        const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
+          "isosurface" };
+        for (const auto& part : text == "all" ? known : Split(text, ','))
+        {
+          if (std::find(known.begin(), known.end(), part) == known.end())
+          {
+            throw UsageError("--blend-modes: unknown blend mode '" + part +
+              "' (composite, maximum, minimum, average, additive, isosurface or all)");
+          }
+          o.BenchBlendModes.push_back(part);
+        }
+      } },
+    { { "--bench-sizes" },
+      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+        o.BenchSizes.clear();
+        for (const auto& part : Split(next(), ','))
+        {
+          o.BenchSizes.push_back(ParseInteger(key, part, 2, 2048));
+        }
+      } },
+  };
+  return entries;
+}
+
+bool ParseGeneralOption(Options& o, const std::string& key, const std::function<std::string()>& next)
+{
+  for (const OptionEntry& entry : GeneralOptions())
+  {
+    if (std::find(entry.Keys.begin(), entry.Keys.end(), key) != entry.Keys.end())
+    {
+      entry.Apply(o, key, next);
+      return true;
+    }
+  }
+  return false;
+}
+
+// A command's own defaults (the options given still override them).
+void ApplyCommandDefaults(Options& o, const std::vector<std::string>& args)
+{
+  if (o.Command == "report")
+  {
+    // Its own defaults; explicit options below still override them.
+    o.Quick = std::find(args.begin(), args.end(), "--quick") != args.end();
+    o.Width = o.Height = o.Quick ? 256 : 512;
+    o.ErrorWidth = o.ErrorHeight = o.Quick ? 128 : 256;
+    o.Frames = o.Quick ? 3 : 5;
+  }
+  if (o.Command == "gallery")
+  {
+    // A page in a few minutes on two cores: small pictures, errors at a small size.
+    o.Width = o.Height = 256;
+    o.ErrorWidth = o.ErrorHeight = 96;
+    o.Frames = 2;
+  }
+}
+
+// What the options read together imply or refuse: the default scene, a command's --out, the
+// look, a medical file's deep shadows, series' folder, errors-only frames.
+void Complete(Options& o, const std::vector<std::string>& args)
+{
+  if (o.Scene.empty() && o.VolumeFile.empty())
+  {
+    o.Scene = "box";
+  }
+  if ((o.Command == "render" || o.Command == "reference" || o.Command == "all" ||
+        o.Command == "report" || o.Command == "gallery") && o.Out.empty())
+  {
+    throw UsageError(o.Command + " needs --out");
+  }
+  if (o.Command == "all" || o.Command == "report" || o.Command == "gallery")
+  {
+    o.OutDir = o.Out;
+  }
+  ValidateLook(o, args);
+  // A medical file is shown with its shadows unless asked otherwise: deep shadow maps, from
+  // the key light a lone headlight becomes (vtkDeepShadowVolumeMapper::HeadlightKeyLight).
+  const bool techniqueGiven = std::any_of(args.begin(), args.end(), [](const std::string& a) {
+    return a == "--technique" || a.rfind("--technique=", 0) == 0;
+  });
+  if (!o.VolumeFile.empty() && !techniqueGiven &&
+    (o.Command == "render" || o.Command == "reference" || o.Command == "view"))
+  {
+    o.Technique = "dsm";
+  }
+  if (o.Command == "series" && o.VolumeFile.empty())
+  {
+    throw UsageError("series needs --volume DIR (a DICOM folder)");
+  }
+  if (o.Frames == 0 && o.Command != "report")
+  {
+    throw UsageError("--frames 0 (errors only, no timing) is for report");
+  }
+}
+
+}
+
 Options Options::Parse(int argc, char* argv[])
 {
   Options o;
@@ -352,21 +712,7 @@ Options Options::Parse(int argc, char* argv[])
   }
 
   o.Arguments.assign(args.begin() + static_cast<std::ptrdiff_t>(i), args.end());
-  if (o.Command == "report")
-  {
-    // Its own defaults; explicit options below still override them.
-    o.Quick = std::find(args.begin(), args.end(), "--quick") != args.end();
-    o.Width = o.Height = o.Quick ? 256 : 512;
-    o.ErrorWidth = o.ErrorHeight = o.Quick ? 128 : 256;
-    o.Frames = o.Quick ? 3 : 5;
-  }
-  if (o.Command == "gallery")
-  {
-    // A page in a few minutes on two cores: small pictures, errors at a small size.
-    o.Width = o.Height = 256;
-    o.ErrorWidth = o.ErrorHeight = 96;
-    o.Frames = 2;
-  }
+  ApplyCommandDefaults(o, args);
 
   bool sawScene = false;
   for (; i < args.size(); ++i)
@@ -399,290 +745,16 @@ Options Options::Parse(int argc, char* argv[])
       o.Command = "help";
       return o;
     }
-    else if (key == "--scene")
-    {
-      o.Scene = next();
-      sawScene = true;
-    }
-    else if (key == "--volume")
-    {
-      o.VolumeFile = next();
-    }
-    else if (key == "--mask")
-    {
-      o.MaskFile = next();
-    }
-    else if (key == "--series")
-    {
-      o.Series = next();
-    }
-    else if (key == "--volume-index")
-    {
-      o.VolumeIndex = ParseInteger(key, next(), 0, 1000000);
-    }
-    else if (key == "--bound")
-    {
-      o.BoundFiles.push_back(next());
-    }
-    else if (key == "--mesh")
-    {
-      o.Meshes.push_back(MeshSpec{ next() });
-    }
-    else if (key == "--mesh-opacity" || key == "--mesh-color" || key == "--mesh-transform")
-    {
-      if (o.Meshes.empty())
-      {
-        throw UsageError(key + " applies to the --mesh before it, and none was given");
-      }
-      MeshSpec& mesh = o.Meshes.back();
-      const std::string value = next();
-      if (key == "--mesh-opacity")
-      {
-        mesh.Opacity = ParseNumber(key, value);
-        if (!(mesh.Opacity >= 0.0 && mesh.Opacity <= 1.0))
-        {
-          throw UsageError("--mesh-opacity must lie in [0, 1], got '" + value + "'");
-        }
-      }
-      else if (key == "--mesh-color")
-      {
-        mesh.Color = ParseVector(key, value);
-        for (double c : mesh.Color)
-        {
-          if (!(c >= 0.0 && c <= 1.0))
-          {
-            throw UsageError("--mesh-color components must lie in [0, 1], got '" + value + "'");
-          }
-        }
-      }
-      else
-      {
-        const auto parts = Split(value, ',');
-        if (parts.size() != 3 && parts.size() != 4)
-        {
-          throw UsageError("--mesh-transform expects TX,TY,TZ[,SCALE], got '" + value + "'");
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          mesh.Translate[c] = ParseNumber(key, parts[c]);
-        }
-        mesh.Scale = parts.size() == 4 ? ParseNumber(key, parts[3]) : 1.0;
-        if (!(mesh.Scale > 0.0))
-        {
-          throw UsageError("--mesh-transform's scale must be positive, got '" + value + "'");
-        }
-      }
-    }
-    else if (key == "--ground")
-    {
-      o.Ground = true;
-    }
-    else if (key == "--volume-segments")
-    {
-      o.VolumeSegments = ParseInteger(key, next(), 0, 8);
-    }
-    else if (key == "--translucent-layers")
-    {
-      o.TranslucentLayers = ParseInteger(key, next(), 0, 8);
-    }
-    else if (key == "--csg")
-    {
-      o.Csg = next();
-    }
-    else if (key == "--csg-mesh")
-    {
-      o.CsgMesh = true;
-    }
-    else if (key == "--csg-max-work")
-    {
-      o.CsgMaxWork = ParseNumber(key, next());
-      if (o.CsgMaxWork < 0.0)
-      {
-        throw UsageError("--csg-max-work must be 0 (no limit) or positive");
-      }
-    }
-    else if (key == "--scale")
-    {
-      o.SceneScale = ParseNumber(key, next());
-      if (o.SceneScale < 0.01 || o.SceneScale > 2.0)
-      {
-        throw UsageError("--scale must be in [0.01, 2]");
-      }
-    }
-    else if (key == "--objects")
-    {
-      const double count = ParseNumber(key, next());
-      if (count != std::floor(count) || count < 1 || count > vtkDeepShadowStandardScene::GetMaxObjectCount())
-      {
-        throw UsageError("--objects must be a whole number in [1, " +
-          std::to_string(vtkDeepShadowStandardScene::GetMaxObjectCount()) + "]");
-      }
-      o.ObjectCount = static_cast<int>(count);
-    }
-    else if (key == "--size")
-    {
-      const std::string text = next();
-      const auto parts = Split(text, 'x');
-      if (parts.size() != 2)
-      {
-        throw UsageError("--size expects WxH, got '" + text + "'");
-      }
-      o.Width = ParseInteger(key, parts[0], 1, 16384);
-      o.Height = ParseInteger(key, parts[1], 1, 16384);
-    }
-    else if (key == "--sample-distance")
-    {
-      o.SampleDistance = ParseNumber(key, next());
-      if (!(o.SampleDistance > 0.0))
-      {
-        throw UsageError("--sample-distance must be positive");
-      }
-    }
-    else if (key == "--light-dir")
-    {
-      LightSpec light;
-      light.Vector = Direction(key, ParseVector(key, next()));
-      o.Lights.push_back(light);
-    }
-    else if (key == "--light-pos")
-    {
-      LightSpec light;
-      light.Kind = LightSpec::Positional;
-      light.Vector = Position(key, ParseVector(key, next()));
-      o.Lights.push_back(light);
-    }
-    else if (key == "--light")
-    {
-      o.Lights.push_back(ParseLight(next()));
-    }
-    else if (ParseTechniqueOption(o, key, next))
-    {
-    }
-    else if (key == "--ground-truth")
-    {
-      o.GroundTruth = true;
-    }
-    else if (key == "--no-shading")
-    {
-      o.Shade = false;
-      o.ShadeGiven = true;
-    }
-    else if (o.Command == "view" && ParseViewerOption(o, key, next))
-    {
-    }
-    else if (ParseLookOption(o, key, next))
-    {
-    }
-    else if (key == "--shading")
-    {
-      const std::string model = next();
-      if (model != "vtk" && model != "blinn-phong")
-      {
-        throw UsageError("--shading must be vtk or blinn-phong, got '" + model + "'");
-      }
-      o.VTKShading = model == "vtk";
-    }
-    else if (key == "--jitter")
-    {
-      o.Jitter = true;
-      o.JitterSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
-    }
-    else if (key == "--no-empty-space-skipping")
-    {
-      o.EmptySpaceSkipping = false;
-    }
-    else if (key == "--replace-nonfinite")
-    {
-      o.ReplaceNonFinite = true;
-    }
-    else if (key == "--backend")
-    {
-      o.Backend = next();
-      if (o.Backend != "osmesa" && o.Backend != "egl")
-      {
-        throw UsageError("--backend must be osmesa or egl, got '" + o.Backend + "'");
-      }
-    }
-    else if (key == "--out")
-    {
-      o.Out = next();
-    }
-    else if (key == "--json")
-    {
-      o.Json = next();
-    }
-    else if (key == "--frames")
-    {
-      o.Frames = ParseInteger(key, next(), 0, 100000);
-    }
-    else if (key == "--verbose")
-    {
-      o.Verbose = true;
-    }
-    else if (key == "--memory-budget")
-    {
-      o.MemoryBudget = ParseBytes(key, next());
-    }
-    else if (key == "--gpu-twin")
-    {
-      o.GpuTwin = true;
-    }
-    else if (key == "--threads")
-    {
-      o.Threads = ParseInteger(key, next(), 0, 1024);
-    }
-    else if (key == "--scenes")
-    {
-      o.BenchScenes = Split(next(), ',');
-    }
-    else if (key == "--techniques")
-    {
-      o.BenchTechniques = Split(next(), ',');
-      for (const auto& spec : o.BenchTechniques)
-      {
-        WithTechniqueSpec(o, spec); // throws for a bad spec
-      }
-    }
-    else if (key == "--error-size")
-    {
-      const std::string text = next();
-      const auto parts = Split(text, 'x');
-      if (parts.size() != 2)
-      {
-        throw UsageError("--error-size expects WxH, got '" + text + "'");
-      }
-      o.ErrorWidth = ParseInteger(key, parts[0], 1, 16384);
-      o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
-    }
-    else if (key == "--quick" && o.Command == "report")
+    sawScene = sawScene || key == "--scene";
+    if (key == "--quick" && o.Command == "report")
     {
       o.Quick = true;
+      continue;
     }
-    else if (key == "--blend-modes")
-    {
-      o.BenchBlendModes.clear();
-      const std::string text = next();
-      const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
-        "isosurface" };
-      for (const auto& part : text == "all" ? known : Split(text, ','))
-      {
-        if (std::find(known.begin(), known.end(), part) == known.end())
-        {
-          throw UsageError("--blend-modes: unknown blend mode '" + part +
-            "' (composite, maximum, minimum, average, additive, isosurface or all)");
-        }
-        o.BenchBlendModes.push_back(part);
-      }
-    }
-    else if (key == "--bench-sizes")
-    {
-      o.BenchSizes.clear();
-      for (const auto& part : Split(next(), ','))
-      {
-        o.BenchSizes.push_back(ParseInteger(key, part, 2, 2048));
-      }
-    }
-    else
+    const bool parsed = ParseGeneralOption(o, key, next) ||
+      ParseTechniqueOption(o, key, next) || (o.Command == "view" && ParseViewerOption(o, key, next)) ||
+      ParseLookOption(o, key, next);
+    if (!parsed)
     {
       throw UsageError("unknown option '" + args[i] + "' (try deepshadow --help)");
     }
@@ -692,38 +764,7 @@ Options Options::Parse(int argc, char* argv[])
   {
     throw UsageError("give either --scene or --volume, not both");
   }
-  if (o.Scene.empty() && o.VolumeFile.empty())
-  {
-    o.Scene = "box";
-  }
-  if ((o.Command == "render" || o.Command == "reference" || o.Command == "all" ||
-        o.Command == "report" || o.Command == "gallery") && o.Out.empty())
-  {
-    throw UsageError(o.Command + " needs --out");
-  }
-  if (o.Command == "all" || o.Command == "report" || o.Command == "gallery")
-  {
-    o.OutDir = o.Out;
-  }
-  ValidateLook(o, args);
-  // A medical file is shown with its shadows unless asked otherwise: deep shadow maps, from
-  // the key light a lone headlight becomes (vtkDeepShadowVolumeMapper::HeadlightKeyLight).
-  const bool techniqueGiven = std::any_of(args.begin(), args.end(), [](const std::string& a) {
-    return a == "--technique" || a.rfind("--technique=", 0) == 0;
-  });
-  if (!o.VolumeFile.empty() && !techniqueGiven &&
-    (o.Command == "render" || o.Command == "reference" || o.Command == "view"))
-  {
-    o.Technique = "dsm";
-  }
-  if (o.Command == "series" && o.VolumeFile.empty())
-  {
-    throw UsageError("series needs --volume DIR (a DICOM folder)");
-  }
-  if (o.Frames == 0 && o.Command != "report")
-  {
-    throw UsageError("--frames 0 (errors only, no timing) is for report");
-  }
+  Complete(o, args);
   return o;
 }
 
