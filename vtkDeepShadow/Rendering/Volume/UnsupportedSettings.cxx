@@ -34,12 +34,11 @@ const char* BlendModeName(int mode)
       return "unknown";
   }
 }
-}
 
-std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume,
-  bool fromCells, int components, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
+// Several components, and the blend modes: what is drawn composite or without shadows.
+void SayBlendModes(std::vector<std::string>& said, vtkGPUVolumeRayCastMapper* mapper, int components,
+  vtkVolumeProperty* property, bool shadowed)
 {
-  std::vector<std::string> said;
   const int blend = mapper->GetBlendMode();
   if (components > 1)
   {
@@ -93,6 +92,13 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
     said.push_back(std::string("shadows do not apply to ") + BlendModeName(blend) +
       ": it is drawn exactly, without shadows");
   }
+}
+
+// A 2D transfer function where it cannot apply as set.
+void SayTransfer2D(std::vector<std::string>& said, vtkGPUVolumeRayCastMapper* mapper, int components,
+  vtkVolumeProperty* property)
+{
+  const int blend = mapper->GetBlendMode();
   if (property && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {
     // Drawn under composite blending over one component (Core/Transfer2D.h).
@@ -117,6 +123,13 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
                      "under nearest interpolation)");
     }
   }
+}
+
+// A mask or label map that is not drawn, or not drawn as set.
+void SayMask(std::vector<std::string>& said, vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume,
+  bool fromCells, int components, vtkVolumeProperty* property)
+{
+  const int blend = mapper->GetBlendMode();
   // What vtkGPUVolumeRayCastMapper adds to vtkVolumeMapper.
   vtkImageData* mask = mapper->GetMaskInput();
   if (mask && components == 1)
@@ -180,6 +193,12 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
       }
     }
   }
+}
+
+// vtkGPUVolumeRayCastMapper's own settings that are not supported, and a prop scaled unevenly.
+void SayMapperSettings(std::vector<std::string>& said, vtkGPUVolumeRayCastMapper* mapper,
+  const vtkMatrix4x4* propMatrix, bool shadowed)
+{
   if (mapper->GetImageSampleDistance() != 1.0f)
   {
     std::ostringstream text;
@@ -218,6 +237,17 @@ std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, 
     said.push_back("a vtkVolume scaled differently along its axes: light rays integrate opacity at its mean "
                    "scale, so shadows are lighter or darker along its longer or shorter axes than the view");
   }
+}
+}
+
+std::vector<std::string> UnsupportedSettings(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume,
+  bool fromCells, int components, vtkVolumeProperty* property, const vtkMatrix4x4* propMatrix, bool shadowed)
+{
+  std::vector<std::string> said;
+  SayBlendModes(said, mapper, components, property, shadowed);
+  SayTransfer2D(said, mapper, components, property);
+  SayMask(said, mapper, volume, fromCells, components, property);
+  SayMapperSettings(said, mapper, propMatrix, shadowed);
   return said;
 }
 
