@@ -66,81 +66,47 @@ deepshadow::Scene MakeSceneFrame(vtkRenderer* renderer)
 // One visible volume as the reference renders it: its grid, transfer, material, technique
 // parameters and bound, as the GPU mapper builds them. False, with `error`, when the data or
 // the bound cannot be converted.
-bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMapper* mapper,
-  bool replaceNonFinite, bool groundTruth, bool keyLit, std::vector<deepshadow::Light>& lights,
-  deepshadow::VolumeInstance& instance, std::string& error)
+// Several components: combined as VTK's mapper combines them, each independent one with its
+// own gradient opacity (Core/Components.h).
+bool AddComponents(vtkVolumeMapper* mapper, vtkVolume* volume, vtkImageData* image,
+  const deepshadow::DrawnScalars& drawn, bool replaceNonFinite, double unitScale, deepshadow::VolumeInstance& instance,
+  std::string& error)
 {
-  // The array the mapper selects, as its point scalars (cell scalars resampled as drawn).
-  deepshadow::DrawnScalars drawn;
-  vtkImageData* image = drawn.Update(mapper, vtkImageData::SafeDownCast(mapper->GetDataSetInput()), error);
+  vtkVolumeProperty* property = volume->GetProperty();
+  const std::shared_ptr<const deepshadow::VolumeGrid>& grid = instance.Grid;
+  deepshadow::ComponentSet set;
+  error = adapter::MakeComponentSet(property, 1 + static_cast<int>(drawn.GetOtherComponents().size()),
+    image->GetPointData()->GetScalars()->GetDataType(), unitScale, set);
   if (!error.empty())
   {
     return false;
   }
-  auto grid = adapter::MakeVolumeGrid(image, volume->GetMatrix(), replaceNonFinite, error);
-  if (!grid)
+  for (const auto& other : drawn.GetOtherComponents())
   {
-    return false;
-  }
-  grid->SetGradientReach(drawn.FromCells() ? 2 : 1); // cells are two voxels of the drawn grid
-  instance.Grid = grid;
-  vtkVolumeProperty* property = volume->GetProperty();
-  // Opacity per dataset unit, as the mapper (and VTK's) integrates it.
-  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
-  instance.Transfer = adapter::MakeTransferFunction(property, unitScale);
-  instance.Surface = adapter::MakeMaterial(property);
-  instance.Shade = property->GetShade(0) != 0;
-  instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
-    ? deepshadow::Interpolation::Nearest
-    : deepshadow::Interpolation::Linear;
-  // Several components: combined as VTK's mapper combines them, composite only (the mapper
-  // says so once for isosurfaces or a mask).
-  const bool several = !drawn.GetOtherComponents().empty();
-  if (several)
-  {
-    deepshadow::ComponentSet set;
-    error = adapter::MakeComponentSet(property, 1 + static_cast<int>(drawn.GetOtherComponents().size()),
-      image->GetPointData()->GetScalars()->GetDataType(), unitScale, set);
-    if (!error.empty())
+    auto otherGrid = adapter::MakeVolumeGrid(other, volume->GetMatrix(), replaceNonFinite, error);
+    if (!otherGrid)
     {
       return false;
     }
-    for (const auto& other : drawn.GetOtherComponents())
-    {
-      auto otherGrid = adapter::MakeVolumeGrid(other, volume->GetMatrix(), replaceNonFinite, error);
-      if (!otherGrid)
-      {
-        return false;
-      }
-      set.Others.push_back(otherGrid);
-    }
-    std::vector<glm::dvec2> ranges{ grid->GetRange() };
-    for (const auto& other : set.Others)
-    {
-      ranges.push_back(other->GetRange());
-    }
-    set.Gradients = adapter::MakeComponentGradients(mapper, property, ranges, glm::make_vec3(image->GetSpacing()));
-    instance.Components = std::move(set);
+    set.Others.push_back(otherGrid);
   }
-  auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
-  instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
-  const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
-  instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
-  // Shaded as the mapper shades: VTK's mapper, and ours by default, as VTK 9.1 does.
-  // (The path VTK's mapper would reach, or the one ours has: VTK's never goes back.)
-  const bool blinnPhong = ours && ours->GetShadingModel() == vtkDeepShadowVolumeMapper::BLINN_PHONG_SHADING;
-  const int path = std::max(static_cast<int>(adapter::VTKLightingPath(renderer)), ours ? ours->GetVTKLightingComplexity() : 0);
-  instance.Shading = adapter::MakeVolumeShading(renderer, volume, image,
-    vtkImageData::SafeDownCast(mapper->GetDataSetInput()), grid->GetIndexToWorld(),
-    blinnPhong ? deepshadow::ShadingModel::BlinnPhong : deepshadow::ShadingModel::VTK,
-    static_cast<deepshadow::ShadingPath>(path), keyLit, lights);
-  instance.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(mapper, property);
-  bool anisotropic = false;
-  instance.DatasetScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
-  if (anisotropic && !projection && instance.IsoValues.empty())
+  std::vector<glm::dvec2> ranges{ grid->GetRange() };
+  for (const auto& other : set.Others)
   {
-    instance.WorldToDataset = glm::inverse(glm::dmat3(adapter::ToGlm(volume->GetMatrix())));
+    ranges.push_back(other->GetRange());
   }
+  set.Gradients = adapter::MakeComponentGradients(mapper, property, ranges, glm::make_vec3(image->GetSpacing()));
+  instance.Components = std::move(set);
+  return true;
+}
+
+// What scales or replaces a sample's opacity: a mask or label map, gradient opacity (of one
+// component or of dependent ones), a 2D transfer function.
+bool AddOpacityFactors(vtkVolumeMapper* mapper, vtkVolume* volume, vtkImageData* image, bool several,
+  deepshadow::VolumeInstance& instance, std::string& error)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  const std::shared_ptr<const deepshadow::VolumeGrid>& grid = instance.Grid;
   auto* gpuMapper = vtkGPUVolumeRayCastMapper::SafeDownCast(mapper);
   if (vtkImageData* mask = gpuMapper && !several ? adapter::UsableMask(gpuMapper, image) : nullptr)
   {
@@ -176,6 +142,66 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
       adapter::MakeTransfer2D(function, grid->GetRange(), glm::make_vec3(image->GetSpacing()), true));
   }
   else if (!error.empty())
+  {
+    return false;
+  }
+  return true;
+}
+
+bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMapper* mapper,
+  bool replaceNonFinite, bool groundTruth, bool keyLit, std::vector<deepshadow::Light>& lights,
+  deepshadow::VolumeInstance& instance, std::string& error)
+{
+  // The array the mapper selects, as its point scalars (cell scalars resampled as drawn).
+  deepshadow::DrawnScalars drawn;
+  vtkImageData* image = drawn.Update(mapper, vtkImageData::SafeDownCast(mapper->GetDataSetInput()), error);
+  if (!error.empty())
+  {
+    return false;
+  }
+  auto grid = adapter::MakeVolumeGrid(image, volume->GetMatrix(), replaceNonFinite, error);
+  if (!grid)
+  {
+    return false;
+  }
+  grid->SetGradientReach(drawn.FromCells() ? 2 : 1); // cells are two voxels of the drawn grid
+  instance.Grid = grid;
+  vtkVolumeProperty* property = volume->GetProperty();
+  // Opacity per dataset unit, as the mapper (and VTK's) integrates it.
+  const double unitScale = adapter::DatasetLengthScale(volume->GetMatrix());
+  instance.Transfer = adapter::MakeTransferFunction(property, unitScale);
+  instance.Surface = adapter::MakeMaterial(property);
+  instance.Shade = property->GetShade(0) != 0;
+  instance.Sampling = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+    ? deepshadow::Interpolation::Nearest
+    : deepshadow::Interpolation::Linear;
+  // Several components: combined as VTK's mapper combines them, composite only (the mapper
+  // says so once for isosurfaces or a mask).
+  const bool several = !drawn.GetOtherComponents().empty();
+  if (several && !AddComponents(mapper, volume, image, drawn, replaceNonFinite, unitScale, instance, error))
+  {
+    return false;
+  }
+  auto* ours = vtkDeepShadowVolumeMapper::SafeDownCast(mapper);
+  instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
+  const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
+  instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
+  // Shaded as the mapper shades: VTK's mapper, and ours by default, as VTK 9.1 does.
+  // (The path VTK's mapper would reach, or the one ours has: VTK's never goes back.)
+  const bool blinnPhong = ours && ours->GetShadingModel() == vtkDeepShadowVolumeMapper::BLINN_PHONG_SHADING;
+  const int path = std::max(static_cast<int>(adapter::VTKLightingPath(renderer)), ours ? ours->GetVTKLightingComplexity() : 0);
+  instance.Shading = adapter::MakeVolumeShading(renderer, volume, image,
+    vtkImageData::SafeDownCast(mapper->GetDataSetInput()), grid->GetIndexToWorld(),
+    blinnPhong ? deepshadow::ShadingModel::BlinnPhong : deepshadow::ShadingModel::VTK,
+    static_cast<deepshadow::ShadingPath>(path), keyLit, lights);
+  instance.IsoValues = several ? std::vector<double>() : adapter::MakeIsoValues(mapper, property);
+  bool anisotropic = false;
+  instance.DatasetScale = adapter::DatasetLengthScale(volume->GetMatrix(), &anisotropic);
+  if (anisotropic && !projection && instance.IsoValues.empty())
+  {
+    instance.WorldToDataset = glm::inverse(glm::dmat3(adapter::ToGlm(volume->GetMatrix())));
+  }
+  if (!AddOpacityFactors(mapper, volume, image, several, instance, error))
   {
     return false;
   }
