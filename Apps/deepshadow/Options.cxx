@@ -315,45 +315,54 @@ namespace
 // The options every command reads, each key with what it sets (the shadow technique's,
 // the viewer's and the look's are parsed by their own groups: ParseTechniqueOption,
 // ParseViewerOption, ParseLookOption).
+// An option's value: the next argument, or the text after "=".
+using NextValue = std::function<std::string()>;
+
 struct OptionEntry
 {
   std::vector<std::string> Keys;
-  std::function<void(Options&, const std::string&, const std::function<std::string()>&)> Apply;
+  std::function<void(Options&, const std::string&, const NextValue&)> Apply;
 };
+
+// The common shapes: a text, a switch, a whole number in [lo, hi].
+OptionEntry Text(const char* key, std::string Options::*field)
+{
+  return { { key }, [field](Options& o, const std::string&, const NextValue& next) {
+            o.*field = next();
+          } };
+}
+
+OptionEntry Switch(const char* key, bool Options::*field, bool value = true)
+{
+  return { { key },
+    [field, value](Options& o, const std::string&, const NextValue&) { o.*field = value; } };
+}
+
+OptionEntry Whole(const char* key, int Options::*field, int lo, int hi)
+{
+  return { { key }, [field, lo, hi](Options& o, const std::string& k, const NextValue& next) {
+            o.*field = ParseInteger(k, next(), lo, hi);
+          } };
+}
 
 const std::vector<OptionEntry>& GeneralOptions()
 {
   static const std::vector<OptionEntry> entries = {
-    { { "--scene" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.Scene = next();
-      } },
-    { { "--volume" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.VolumeFile = next();
-      } },
-    { { "--mask" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.MaskFile = next();
-      } },
-    { { "--series" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.Series = next();
-      } },
-    { { "--volume-index" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
-        o.VolumeIndex = ParseInteger(key, next(), 0, 1000000);
-      } },
+    Text("--scene", &Options::Scene),
+    Text("--volume", &Options::VolumeFile),
+    Text("--mask", &Options::MaskFile),
+    Text("--series", &Options::Series),
+    Whole("--volume-index", &Options::VolumeIndex, 0, 1000000),
     { { "--bound" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.BoundFiles.push_back(next());
       } },
     { { "--mesh" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.Meshes.push_back(MeshSpec{ next() });
       } },
     { { "--mesh-opacity", "--mesh-color", "--mesh-transform" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         if (o.Meshes.empty())
         {
           throw UsageError(key + " applies to the --mesh before it, and none was given");
@@ -397,28 +406,13 @@ const std::vector<OptionEntry>& GeneralOptions()
           }
         }
       } },
-    { { "--ground" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.Ground = true;
-      } },
-    { { "--volume-segments" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
-        o.VolumeSegments = ParseInteger(key, next(), 0, 8);
-      } },
-    { { "--translucent-layers" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
-        o.TranslucentLayers = ParseInteger(key, next(), 0, 8);
-      } },
-    { { "--csg" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.Csg = next();
-      } },
-    { { "--csg-mesh" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.CsgMesh = true;
-      } },
+    Switch("--ground", &Options::Ground),
+    Whole("--volume-segments", &Options::VolumeSegments, 0, 8),
+    Whole("--translucent-layers", &Options::TranslucentLayers, 0, 8),
+    Text("--csg", &Options::Csg),
+    Switch("--csg-mesh", &Options::CsgMesh),
     { { "--csg-max-work" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.CsgMaxWork = ParseNumber(key, next());
         if (o.CsgMaxWork < 0.0)
         {
@@ -426,7 +420,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
     { { "--scale" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.SceneScale = ParseNumber(key, next());
         if (o.SceneScale < 0.01 || o.SceneScale > 2.0)
         {
@@ -434,7 +428,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
     { { "--objects" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         const double count = ParseNumber(key, next());
         if (count != std::floor(count) || count < 1 || count > vtkDeepShadowStandardScene::GetMaxObjectCount())
         {
@@ -444,7 +438,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         o.ObjectCount = static_cast<int>(count);
       } },
     { { "--size" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         const std::string text = next();
         const auto parts = Split(text, 'x');
         if (parts.size() != 2)
@@ -455,7 +449,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         o.Height = ParseInteger(key, parts[1], 1, 16384);
       } },
     { { "--sample-distance" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.SampleDistance = ParseNumber(key, next());
         if (!(o.SampleDistance > 0.0))
         {
@@ -463,33 +457,30 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
     { { "--light-dir" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         LightSpec light;
         light.Vector = Direction(key, ParseVector(key, next()));
         o.Lights.push_back(light);
       } },
     { { "--light-pos" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         LightSpec light;
         light.Kind = LightSpec::Positional;
         light.Vector = Position(key, ParseVector(key, next()));
         o.Lights.push_back(light);
       } },
     { { "--light" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.Lights.push_back(ParseLight(next()));
       } },
-    { { "--ground-truth" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.GroundTruth = true;
-      } },
+    Switch("--ground-truth", &Options::GroundTruth),
     { { "--no-shading" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
+      [](Options& o, const std::string&, const NextValue&) {
         o.Shade = false;
         o.ShadeGiven = true;
       } },
     { { "--shading" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         const std::string model = next();
         if (model != "vtk" && model != "blinn-phong")
         {
@@ -498,60 +489,36 @@ const std::vector<OptionEntry>& GeneralOptions()
         o.VTKShading = model == "vtk";
       } },
     { { "--jitter" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.Jitter = true;
         o.JitterSeed = static_cast<unsigned int>(ParseInteger(key, next(), 0, 2147483647));
       } },
-    { { "--no-empty-space-skipping" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.EmptySpaceSkipping = false;
-      } },
-    { { "--replace-nonfinite" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.ReplaceNonFinite = true;
-      } },
+    Switch("--no-empty-space-skipping", &Options::EmptySpaceSkipping, false),
+    Switch("--replace-nonfinite", &Options::ReplaceNonFinite),
     { { "--backend" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.Backend = next();
         if (o.Backend != "osmesa" && o.Backend != "egl")
         {
           throw UsageError("--backend must be osmesa or egl, got '" + o.Backend + "'");
         }
       } },
-    { { "--out" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.Out = next();
-      } },
-    { { "--json" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
-        o.Json = next();
-      } },
-    { { "--frames" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
-        o.Frames = ParseInteger(key, next(), 0, 100000);
-      } },
-    { { "--verbose" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.Verbose = true;
-      } },
+    Text("--out", &Options::Out),
+    Text("--json", &Options::Json),
+    Whole("--frames", &Options::Frames, 0, 100000),
+    Switch("--verbose", &Options::Verbose),
     { { "--memory-budget" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.MemoryBudget = ParseBytes(key, next());
       } },
-    { { "--gpu-twin" },
-      [](Options& o, const std::string&, const std::function<std::string()>&) {
-        o.GpuTwin = true;
-      } },
-    { { "--threads" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
-        o.Threads = ParseInteger(key, next(), 0, 1024);
-      } },
+    Switch("--gpu-twin", &Options::GpuTwin),
+    Whole("--threads", &Options::Threads, 0, 1024),
     { { "--scenes" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.BenchScenes = Split(next(), ',');
       } },
     { { "--techniques" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.BenchTechniques = Split(next(), ',');
         for (const auto& spec : o.BenchTechniques)
         {
@@ -559,7 +526,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
     { { "--error-size" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         const std::string text = next();
         const auto parts = Split(text, 'x');
         if (parts.size() != 2)
@@ -570,7 +537,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
       } },
     { { "--blend-modes" },
-      [](Options& o, const std::string&, const std::function<std::string()>& next) {
+      [](Options& o, const std::string&, const NextValue& next) {
         o.BenchBlendModes.clear();
         const std::string text = next();
         const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
@@ -586,7 +553,7 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
     { { "--bench-sizes" },
-      [](Options& o, const std::string& key, const std::function<std::string()>& next) {
+      [](Options& o, const std::string& key, const NextValue& next) {
         o.BenchSizes.clear();
         for (const auto& part : Split(next(), ','))
         {
