@@ -349,12 +349,9 @@ vtkImageData* UsableMask(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* volume
   // VTK's mapper skips what a binary mask clears in every blend mode; a label map colours
   // composite samples only.
   vtkImageData* mask = mapper->GetMaskInput();
-  const int blend = mapper->GetBlendMode();
-  const bool projection = blend == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ||
-    blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND || blend == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND ||
-    blend == vtkVolumeMapper::ADDITIVE_BLEND;
+  const bool projection = MakeProjection(mapper, glm::dvec2(0.0, 1.0)).Mode != BlendMode::Composite;
   const bool binary = mapper->GetMaskType() == vtkGPUVolumeRayCastMapper::BinaryMaskType;
-  if (!mask || !volume || !(blend == vtkVolumeMapper::COMPOSITE_BLEND || (projection && binary)))
+  if (!mask || !volume || !(mapper->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND || (projection && binary)))
   {
     return nullptr;
   }
