@@ -210,9 +210,25 @@ inline ShadowParameters Technique(std::string name)
   return p;
 }
 
+/** A hard shadow (lit or not, by the threshold): the registry's flag (ShadowTechniqueInfo::Binary). */
 inline bool IsBinary(const ShadowParameters& p)
 {
-  return p.Opaque || p.Kind == ShadowKind::ShadowMap;
+  return ShadowTechniqueOf(p).Binary;
+}
+
+/**
+ * What a technique may leave of the light where the true visibility is (nearly) 0: binary
+ * and stochastic ones nothing, translucent feelers and opacity levels the transmittance at
+ * which they stop, deep shadow maps their bound (the stiff suites, CPU and GPU).
+ */
+inline double DarkTolerance(const ShadowParameters& p)
+{
+  if (p.Kind == ShadowKind::DeepShadowMap)
+  {
+    return p.Epsilon;
+  }
+  return IsBinary(p) || p.Kind == ShadowKind::Stochastic || !p.EarlyTermination ? 0.0
+                                                                                : ShadowTerminationTransmittance;
 }
 
 /**

@@ -3,6 +3,7 @@
 #ifndef deepshadow_testing_StiffCases_h
 #define deepshadow_testing_StiffCases_h
 
+#include "ClosedFormScenes.h"
 #include "Core/Shadows/DeepShadowMap.h"
 #include "Core/Shadows/LightSpace.h"
 #include "Core/ReferenceRenderer.h"
@@ -106,18 +107,7 @@ std::string NameOf(const ShadowParameters& p)
   return p.Kind == ShadowKind::Rays && !p.EarlyTermination ? "ground truth" : p.Name();
 }
 
-// What a technique may leave of the light where the true visibility is (nearly) 0: binary
-// and stochastic ones nothing, translucent feelers and opacity levels the transmittance at
-// which they stop, deep shadow maps their bound.
-double DarkTolerance(const ShadowParameters& p)
-{
-  if (p.Kind == ShadowKind::DeepShadowMap)
-  {
-    return p.Epsilon;
-  }
-  const bool binary = ShadowTechniqueOf(p).Binary || p.Kind == ShadowKind::Stochastic;
-  return binary || !p.EarlyTermination ? 0.0 : ShadowTerminationTransmittance;
-}
+using closedform::DarkTolerance;
 
 // No technique takes light below the ambient-only value: every visibility is in [0, 1]
 // (deep shadow map nodes included, see DeepShadowMapNodesAreNeverNegative).

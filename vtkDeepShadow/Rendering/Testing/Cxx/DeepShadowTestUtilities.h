@@ -524,6 +524,59 @@ inline vtkSmartPointer<vtkVolumeProperty> MakeComparisonProperty(bool shade)
 }
 
 /**
+ * An 8-bit volume and its functions mirrored (v -> 255 - v, every component): a minimum of the
+ * mirror is the mirror of a maximum, so its minimum intensity picture is the original's maximum
+ * one (the closed relation that checks MinIP where VTK's own slips).
+ */
+inline vtkSmartPointer<vtkImageData> Mirrored(vtkImageData* data)
+{
+  auto mirrored = vtkSmartPointer<vtkImageData>::New();
+  mirrored->DeepCopy(data);
+  vtkDataArray* values = mirrored->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < values->GetNumberOfComponents(); ++c)
+    {
+      values->SetComponent(i, c, 255.0 - values->GetComponent(i, c));
+    }
+  return mirrored;
+}
+
+inline vtkSmartPointer<vtkVolumeProperty> MirroredFunctions(vtkVolumeProperty* property, int count)
+{
+  // Built afresh: DeepCopy would give the copy default gradient opacities.
+  auto mirrored = vtkSmartPointer<vtkVolumeProperty>::New();
+  mirrored->SetIndependentComponents(property->GetIndependentComponents());
+  mirrored->SetInterpolationType(property->GetInterpolationType());
+  for (int c = 0; c < count; ++c)
+  {
+    mirrored->SetComponentWeight(c, property->GetComponentWeight(c));
+    mirrored->SetShade(c, property->GetShade(c));
+  }
+  for (int c = 0; c < count; ++c)
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    vtkColorTransferFunction* from = property->GetRGBTransferFunction(c);
+    for (int n = 0; n < from->GetSize(); ++n)
+    {
+      double node[6];
+      from->GetNodeValue(n, node);
+      color->AddRGBPoint(255.0 - node[0], node[1], node[2], node[3]);
+    }
+    vtkNew<vtkPiecewiseFunction> opacity;
+    vtkPiecewiseFunction* fromOpacity = property->GetScalarOpacity(c);
+    for (int n = 0; n < fromOpacity->GetSize(); ++n)
+    {
+      double node[4];
+      fromOpacity->GetNodeValue(n, node);
+      opacity->AddPoint(255.0 - node[0], node[1]);
+    }
+    mirrored->SetColor(c, color);
+    mirrored->SetScalarOpacity(c, opacity);
+  }
+  return mirrored;
+}
+
+/**
  * The scene the shadow tests share: MakeShadowVolume() with a coloured transfer function,
  * shaded, lit from above and slightly off axis, seen from the side at 160x160.
  */

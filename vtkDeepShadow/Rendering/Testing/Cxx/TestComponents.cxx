@@ -29,6 +29,8 @@
 using deepshadow::Image;
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
+using deepshadow::testing::Mirrored;
+using deepshadow::testing::MirroredFunctions;
 using deepshadow::testing::WithinTolerance;
 
 namespace
@@ -123,56 +125,6 @@ vtkSmartPointer<vtkImageData> FirstComponent(vtkImageData* data, int c = 0)
   first->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
   first->GetPointData()->GetScalars()->CopyComponent(0, data->GetPointData()->GetScalars(), c);
   return first;
-}
-
-// The volume and its functions mirrored (v -> 255 - v): a minimum of the mirror is the
-// mirror of a maximum, so its minimum intensity picture is the original's maximum one.
-vtkSmartPointer<vtkImageData> Mirrored(vtkImageData* data)
-{
-  auto mirrored = vtkSmartPointer<vtkImageData>::New();
-  mirrored->DeepCopy(data);
-  vtkDataArray* values = mirrored->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < values->GetNumberOfComponents(); ++c)
-    {
-      values->SetComponent(i, c, 255.0 - values->GetComponent(i, c));
-    }
-  return mirrored;
-}
-
-vtkSmartPointer<vtkVolumeProperty> MirroredFunctions(vtkVolumeProperty* property, int count)
-{
-  // Built afresh: DeepCopy would give the copy default gradient opacities.
-  auto mirrored = vtkSmartPointer<vtkVolumeProperty>::New();
-  mirrored->SetIndependentComponents(property->GetIndependentComponents());
-  mirrored->SetInterpolationType(property->GetInterpolationType());
-  for (int c = 0; c < count; ++c)
-  {
-    mirrored->SetComponentWeight(c, property->GetComponentWeight(c));
-    mirrored->SetShade(c, property->GetShade(c));
-  }
-  for (int c = 0; c < count; ++c)
-  {
-    vtkNew<vtkColorTransferFunction> color;
-    vtkColorTransferFunction* from = property->GetRGBTransferFunction(c);
-    for (int n = 0; n < from->GetSize(); ++n)
-    {
-      double node[6];
-      from->GetNodeValue(n, node);
-      color->AddRGBPoint(255.0 - node[0], node[1], node[2], node[3]);
-    }
-    vtkNew<vtkPiecewiseFunction> opacity;
-    vtkPiecewiseFunction* fromOpacity = property->GetScalarOpacity(c);
-    for (int n = 0; n < fromOpacity->GetSize(); ++n)
-    {
-      double node[4];
-      fromOpacity->GetNodeValue(n, node);
-      opacity->AddPoint(255.0 - node[0], node[1]);
-    }
-    mirrored->SetColor(c, color);
-    mirrored->SetScalarOpacity(c, opacity);
-  }
-  return mirrored;
 }
 
 bool MatchesVTK(vtkRenderWindow* window, int count, Mode mode, bool shade, const std::string& what,

@@ -26,6 +26,8 @@
 
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
+using deepshadow::testing::Mirrored;
+using deepshadow::testing::MirroredFunctions;
 using deepshadow::testing::WithinTolerance;
 
 namespace
@@ -163,32 +165,9 @@ int TestMask(int, char*[])
     // original's maximum under it, which matches VTK's above.
     {
       const std::string projected = what + ", MinIP of the mirror";
-      auto mirrored = vtkSmartPointer<vtkImageData>::New();
-      mirrored->DeepCopy(data);
-      vtkDataArray* values = mirrored->GetPointData()->GetScalars();
-      for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
-      {
-        values->SetComponent(i, 0, 255.0 - values->GetComponent(i, 0));
-      }
-      const auto original = deepshadow::testing::MakeComparisonProperty(true);
-      vtkNew<vtkVolumeProperty> mirroredFunctions;
-      vtkNew<vtkColorTransferFunction> color;
-      vtkNew<vtkPiecewiseFunction> opacity;
-      for (int n = 0; n < original->GetRGBTransferFunction()->GetSize(); ++n)
-      {
-        double node[6];
-        original->GetRGBTransferFunction()->GetNodeValue(n, node);
-        color->AddRGBPoint(255.0 - node[0], node[1], node[2], node[3]);
-      }
-      for (int n = 0; n < original->GetScalarOpacity()->GetSize(); ++n)
-      {
-        double node[4];
-        original->GetScalarOpacity()->GetNodeValue(n, node);
-        opacity->AddPoint(255.0 - node[0], node[1]);
-      }
-      mirroredFunctions->SetColor(color);
-      mirroredFunctions->SetScalarOpacity(opacity);
-      mirroredFunctions->SetInterpolationTypeToLinear();
+      const auto mirrored = Mirrored(data);
+      const auto mirroredFunctions =
+        MirroredFunctions(deepshadow::testing::MakeComparisonProperty(false), 1);
       const Drawn minimum = Draw(window, mirrored, mask, false, 0.5f, false, mirroredFunctions, 1.0f,
         vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, true);
       const Drawn maximum =

@@ -20,6 +20,7 @@
 // one clear error and the unshadowed picture, a map of the largest size works, a map of 1
 // texel works; lights of zero intensity give the unlit picture; seeds give bit-identical
 // pictures run to run.
+#include "ClosedFormScenes.h"
 #include "Core/ShadowTechniques.h"
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
@@ -116,13 +117,8 @@ std::vector<Technique> EveryTechnique(int mapSize = 64)
     deepshadow::ShadowParameters p = info->DefaultParameters(cached);
     p.MapSize = mapSize;
     p.Seed = 7;
-    // What it may leave of the light in a full shadow (TestStiffCases' DarkTolerance): a deep
-    // shadow map its bound, binary and stochastic ones nothing, translucent feelers and
-    // opacity levels the transmittance at which they stop.
-    const double dark = p.Kind == deepshadow::ShadowKind::DeepShadowMap ? p.Epsilon
-      : info->Binary || p.Kind == deepshadow::ShadowKind::Stochastic   ? 0.0
-                                                                       : deepshadow::ShadowTerminationTransmittance;
-    all.push_back({ name, vtkDeepShadowTechniqueFactory::New(p), info->Binary, dark });
+    // What it may leave of the light in a full shadow: ClosedFormScenes.h's DarkTolerance.
+    all.push_back({ name, vtkDeepShadowTechniqueFactory::New(p), info->Binary, deepshadow::closedform::DarkTolerance(p) });
   }
   return all;
 }
