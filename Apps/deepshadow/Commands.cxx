@@ -18,7 +18,6 @@
 #include "vtkDeepShadowStandardScene.h"
 #include "vtkDeepShadowVolumePresets.h"
 #include "vtkDeepShadowVolumeReader.h"
-#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
@@ -53,14 +52,15 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
   run.FirstFrameMs = RenderFrame(setup.Window);
   RequireDrawn(setup);
   const std::vector<std::string> firstPasses = setup.Mapper->GetLastPasses();
-  // The first frame's analysis (frames of the same view run none).
-  const PageCounts pages = PagesOf(setup.Technique);
+  // The technique's statistics of the first frame, the one that built (a resolution-matched
+  // technique's analysis: frames of the same view run none).
+  const vtkDeepShadowTechnique::Statistics statistics =
+    setup.Technique ? setup.Technique->GetStatistics() : vtkDeepShadowTechnique::Statistics();
   for (int f = 0; f < options.Frames; ++f)
   {
     run.FrameMs.push_back(RenderFrame(setup.Window));
   }
   vtkDeepShadowVolumeMapper* mapper = setup.Mapper;
-  auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(setup.Technique);
   const int boundBuilds = mapper->GetBoundBuilds();
   const int shadowBuilds = mapper->GetShadowBuilds();
   const std::vector<std::string> features = mapper->GetShaderFeatures();
@@ -100,15 +100,6 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("render_ms_frames", run.FrameMs)
     .Set("first_frame_ms", run.FirstFrameMs)
     .Set("shadow_bytes", setup.Technique ? setup.Technique->GetShadowBytes() : 0LL)
-    .Set("dsm_nodes_avg", dsm ? dsm->GetNodesAverage() : 0.0)
-    .Set("dsm_nodes_max", dsm ? dsm->GetNodesMax() : 0)
-    .Set("dsm_texels_overflowed", dsm ? dsm->GetTexelsOverflowed() : 0LL)
-    .Set("dsm_epsilon_max", dsm ? dsm->GetEpsilonMax() : 0.0)
-    .Set("chunks_used", dsm ? dsm->GetChunksUsed() : 0LL)
-    .Set("chunk_bytes", dsm ? dsm->GetChunkBytes() : 0LL)
-    .Set("pool_bytes", dsm ? dsm->GetPoolBytes() : 0LL)
-    .Set("clusters", ClusterCount(setup.Technique))
-    .Set("cluster_texels", ClusterTexels(setup.Technique))
     .Set("shadow_builds", shadowBuilds)
     .Set("first_frame_passes", firstPasses)
     .Set("passes", passes) // of the last timed frame
@@ -144,7 +135,7 @@ GpuRun RenderGPU(SceneSetup& setup, const Options& options)
     .Set("backend", setup.Window->GetBackendAsString())
     .Set("context", setup.Window->GetContextDescription())
     .Set("gl_renderer", RendererString(setup.Window));
-  SetPageCounts(run.Stats, pages);
+  SetStatistics(run.Stats, statistics);
   run.Stats.Set("warnings", ModuleWarnings());
   return run;
 }

@@ -2,15 +2,12 @@
 
 #include "Json.h"
 
-#include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowImageConversion.h"
-#include "vtkDeepShadowLightSpaceTechnique.h"
 #include "vtkDeepShadowPass.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowReferenceRenderer.h"
 #include "vtkDeepShadowRenderWindow.h"
-#include "vtkDeepShadowResolutionMatchedTechnique.h"
 #include "vtkDeepShadowTechnique.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
@@ -21,6 +18,7 @@
 #include "vtkTransform.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 namespace deepshadow
@@ -28,52 +26,21 @@ namespace deepshadow
 namespace tool
 {
 
-int ClusterCount(vtkDeepShadowTechnique* technique)
+void SetStatistics(Json& json, const vtkDeepShadowTechnique::Statistics& statistics)
 {
-  int count = 0;
-  if (auto* maps = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique))
+  for (const auto& statistic : statistics)
   {
-    for (const int faces : maps->GetClusterCounts())
+    const double value = statistic.second;
+    // Counts and bytes stay whole numbers in the JSON.
+    if (value == std::floor(value) && std::fabs(value) < 9.0e15)
     {
-      count += faces;
+      json.Set(statistic.first, static_cast<long long>(value));
+    }
+    else
+    {
+      json.Set(statistic.first, value);
     }
   }
-  return count;
-}
-
-long long ClusterTexels(vtkDeepShadowTechnique* technique)
-{
-  auto* maps = vtkDeepShadowLightSpaceTechnique::SafeDownCast(technique);
-  return maps ? static_cast<long long>(ClusterCount(technique)) * maps->GetMapSize() * maps->GetMapSize() : 0LL;
-}
-
-PageCounts PagesOf(vtkDeepShadowTechnique* technique)
-{
-  PageCounts pages;
-  if (auto* rmsm = vtkDeepShadowResolutionMatchedTechnique::SafeDownCast(technique))
-  {
-    pages.Requested = rmsm->GetPagesRequested();
-    pages.AfterComponents = rmsm->GetRequestsAfterComponents();
-    pages.Unique = rmsm->GetPagesUnique();
-    pages.Rendered = rmsm->GetPagesRendered();
-    pages.Superpages = rmsm->GetSuperpages();
-    pages.Resident = rmsm->GetPagesResident();
-    pages.FinestLevel = rmsm->GetFinestLevelUsed();
-    pages.AtlasBytes = rmsm->GetAtlasBytes();
-  }
-  return pages;
-}
-
-void SetPageCounts(Json& json, const PageCounts& pages)
-{
-  json.Set("pages_requested", pages.Requested)
-    .Set("requests_after_components", pages.AfterComponents)
-    .Set("pages_unique", pages.Unique)
-    .Set("pages_rendered", pages.Rendered)
-    .Set("superpages", pages.Superpages)
-    .Set("pages_resident", pages.Resident)
-    .Set("finest_level_used", pages.FinestLevel)
-    .Set("atlas_bytes", pages.AtlasBytes);
 }
 
 SceneBench::SceneBench(const Options& options, const std::string& name)
@@ -171,7 +138,10 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
   m.CameraPasses = mapper->GetLastPasses();
   m.Features = mapper->GetShaderFeatures();
   m.RebuiltForCamera = builds() != buildsBefore;
-  m.Pages = PagesOf(technique);
+  if (technique)
+  {
+    m.Statistics = technique->GetStatistics();
+  }
   this->Restore();
   // Every light-moving frame rebuilds: the build time is the median of theirs.
   times.clear();
@@ -198,18 +168,6 @@ Measurement SceneBench::Measure(vtkDeepShadowTechnique* technique, bool shadowTe
     m.ShadowBytes = technique->GetShadowBytes() + (second ? second->GetShadowBytes() : 0) +
       (this->Scene.Pass ? this->Scene.Pass->GetOtherVolumeShadowBytes() : 0);
   }
-  if (auto* dsm = vtkDeepShadowDeepShadowMapTechnique::SafeDownCast(technique))
-  {
-    m.NodesAverage = dsm->GetNodesAverage();
-    m.NodesMax = dsm->GetNodesMax();
-    m.TexelsOverflowed = dsm->GetTexelsOverflowed();
-    m.EpsilonMax = dsm->GetEpsilonMax();
-    m.ChunksUsed = dsm->GetChunksUsed();
-    m.ChunkBytes = dsm->GetChunkBytes();
-    m.PoolBytes = dsm->GetPoolBytes();
-  }
-  m.Clusters = ClusterCount(technique);
-  m.ClusterTexels = ClusterTexels(technique);
   this->Use(nullptr, nullptr);
   return m;
 }

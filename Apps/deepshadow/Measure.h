@@ -35,24 +35,8 @@ namespace tool
 
 class Json;
 
-/**
- * Resolution-matched maps' last analysis (vtkDeepShadowResolutionMatchedTechnique); zeros
- * for other techniques.
- */
-struct PageCounts
-{
-  long long Requested = 0;
-  long long AfterComponents = 0;
-  int Unique = 0;
-  int Rendered = 0;
-  int Superpages = 0;
-  int Resident = 0;
-  int FinestLevel = 0;
-  long long AtlasBytes = 0;
-};
-PageCounts PagesOf(vtkDeepShadowTechnique* technique);
-/** Adds them to `json` as pages_requested, requests_after_components, pages_unique, ... */
-void SetPageCounts(Json& json, const PageCounts& pages);
+/** A technique's statistics (vtkDeepShadowTechnique::GetStatistics()) as JSON members. */
+void SetStatistics(Json& json, const vtkDeepShadowTechnique::Statistics& statistics);
 
 /** What one technique (or none) measured on one scene. */
 struct Measurement
@@ -66,24 +50,10 @@ struct Measurement
   std::vector<std::string> Features;     // shader features composed
   Image Picture;    // at the error size, start view
   Image ShadowTerm; // the same, shadow term alone (empty unless asked for)
-  // Deep shadow maps only (see vtkDeepShadowDeepShadowMapTechnique).
-  double NodesAverage = 0.0;
-  int NodesMax = 0;
-  long long TexelsOverflowed = 0;
-  double EpsilonMax = 0.0;
-  long long ChunksUsed = 0; // chunked node memory: chunks in use, bytes each, the pool's bytes
-  long long ChunkBytes = 0;
-  long long PoolBytes = 0;
-  // Light-space techniques: clustered faces over all shadowed lights, and their texels.
-  int Clusters = 0;
-  long long ClusterTexels = 0;
-  // Resolution-matched maps: the analysis of the last camera-only frame.
-  PageCounts Pages;
+  // The technique's own statistics after the first frame at the start view (its build or
+  // analysis; see vtkDeepShadowTechnique::GetStatistics()).
+  vtkDeepShadowTechnique::Statistics Statistics;
 };
-
-/** Clustered faces of a light-space technique (0 for others or unclustered) and their texels. */
-int ClusterCount(vtkDeepShadowTechnique* technique);
-long long ClusterTexels(vtkDeepShadowTechnique* technique);
 
 /** The ground truth of a scene's start view at the error size. */
 struct GroundTruth

@@ -147,12 +147,28 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
   {
     throw UsageError("cannot write " + path);
   }
+  // The techniques' own statistics follow the common columns: every name any row reports, in
+  // the order first reported; a row whose technique does not report one leaves it empty.
+  std::vector<std::string> statistics;
+  for (const Row& r : rows)
+  {
+    for (const auto& statistic : r.M.Statistics)
+    {
+      if (std::find(statistics.begin(), statistics.end(), statistic.first) == statistics.end())
+      {
+        statistics.push_back(statistic.first);
+      }
+    }
+  }
   csv << "scene,technique,parameters,spec,colored,width,height,error_width,error_height,frames,"
          "unshadowed_ms,build_ms,render_ms,render_ratio,light_frame_ms,light_ratio,shadow_bytes,"
-         "rmse,max_abs,shadow_rmse,shadow_max_abs,pareto_camera,pareto_light,dsm_nodes_avg,"
-         "dsm_nodes_max,dsm_texels_overflowed,dsm_epsilon_max,rebuilt_when_camera_moved,"
-         "camera_frame_passes,shader_features,clusters,cluster_texels,chunks_used,chunk_bytes,pool_bytes,"
-         "pages_requested,pages_unique,pages_rendered,superpages,atlas_bytes,worse_than_none\n";
+         "rmse,max_abs,shadow_rmse,shadow_max_abs,pareto_camera,pareto_light,"
+         "rebuilt_when_camera_moved,camera_frame_passes,shader_features,worse_than_none";
+  for (const std::string& name : statistics)
+  {
+    csv << ',' << name;
+  }
+  csv << '\n';
   for (const Row& r : rows)
   {
     csv << CsvField(r.Scene) << ',' << CsvField(r.Technique) << ',' << CsvField(r.Parameters) << ','
@@ -164,13 +180,19 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const Optio
         << ',' << r.M.ShadowBytes << ',' << Number(r.Error.RMSE) << ',' << Number(r.Error.MaxAbs)
         << ',' << Number(r.ShadowError.RMSE) << ',' << Number(r.ShadowError.MaxAbs) << ','
         << (r.ParetoCamera ? 1 : 0) << ',' << (r.ParetoLight ? 1 : 0) << ','
-        << Number(r.M.NodesAverage, "%.3f") << ',' << r.M.NodesMax << ',' << r.M.TexelsOverflowed
-        << ',' << Number(r.M.EpsilonMax) << ',' << (r.M.RebuiltForCamera ? 1 : 0) << ','
-        << CsvField(Join(r.M.CameraPasses, " ")) << ',' << CsvField(Join(r.M.Features, " ")) << ','
-        << r.M.Clusters << ',' << r.M.ClusterTexels << ',' << r.M.ChunksUsed << ',' << r.M.ChunkBytes
-        << ',' << r.M.PoolBytes << ',' << r.M.Pages.Requested << ',' << r.M.Pages.Unique << ','
-        << r.M.Pages.Rendered << ',' << r.M.Pages.Superpages << ',' << r.M.Pages.AtlasBytes << ','
-        << (r.WorseThanNone ? 1 : 0) << '\n';
+        << (r.M.RebuiltForCamera ? 1 : 0) << ',' << CsvField(Join(r.M.CameraPasses, " ")) << ','
+        << CsvField(Join(r.M.Features, " ")) << ',' << (r.WorseThanNone ? 1 : 0);
+    for (const std::string& name : statistics)
+    {
+      csv << ',';
+      const auto found = std::find_if(r.M.Statistics.begin(), r.M.Statistics.end(),
+        [&](const std::pair<std::string, double>& statistic) { return statistic.first == name; });
+      if (found != r.M.Statistics.end())
+      {
+        csv << Number(found->second, "%.10g");
+      }
+    }
+    csv << '\n';
   }
 }
 

@@ -75,11 +75,13 @@ int RunShadowBench(const Options& options)
       const bool colored = shadow->GetParameters().IsColored();
       const Measurement m = bench.Measure(shadow, false);
       const ImageDifference error = Compare(m.Picture, bench.Truth(colored).Picture);
-      const bool dsm = m.NodesMax > 0;
+      // Nodes per texel, average/maximum, for techniques that count them.
+      const double nodesMax = vtkDeepShadowTechnique::FindStatistic(m.Statistics, "dsm_nodes_max");
       char nodes[64] = "";
-      if (dsm)
+      if (nodesMax > 0.0)
       {
-        std::snprintf(nodes, sizeof(nodes), "%.2f/%d", m.NodesAverage, m.NodesMax);
+        std::snprintf(nodes, sizeof(nodes), "%.2f/%.0f",
+          vtkDeepShadowTechnique::FindStatistic(m.Statistics, "dsm_nodes_avg"), nodesMax);
       }
       std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", name.c_str(),
         technique.c_str(), m.CameraMs, m.CameraMs / baseline, m.LightMs / baseline, m.BuildMs,
@@ -101,17 +103,8 @@ int RunShadowBench(const Options& options)
         .Set("max_abs", error.MaxAbs)
         .Set("unshadowed_rmse", unshadowedError.RMSE)
         .Set("ground_truth_ms", bench.Truth(colored).Milliseconds)
-        .Set("rebuilt_when_camera_moved", m.RebuiltForCamera)
-        .Set("dsm_nodes_avg", m.NodesAverage)
-        .Set("dsm_nodes_max", m.NodesMax)
-        .Set("dsm_texels_overflowed", m.TexelsOverflowed)
-        .Set("dsm_epsilon_max", m.EpsilonMax)
-        .Set("chunks_used", m.ChunksUsed)
-        .Set("chunk_bytes", m.ChunkBytes)
-        .Set("pool_bytes", m.PoolBytes)
-        .Set("clusters", m.Clusters)
-        .Set("cluster_texels", m.ClusterTexels);
-      SetPageCounts(row, m.Pages);
+        .Set("rebuilt_when_camera_moved", m.RebuiltForCamera);
+      SetStatistics(row, m.Statistics);
       rows.push_back(row);
     }
   }

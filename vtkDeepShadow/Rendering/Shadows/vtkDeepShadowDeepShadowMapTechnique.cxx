@@ -59,7 +59,7 @@ static const bool Registered = vtkDeepShadowTechniqueFactory::Register(deepshado
 
 // The build's counters: a shader storage buffer the build adds to atomically, read back
 // after it (DeepShadowMapBuild.glsl's DeepShadowStatistics).
-class vtkDeepShadowDeepShadowMapTechnique::Statistics
+class vtkDeepShadowDeepShadowMapTechnique::NodeCounter
 {
 public:
   unsigned int Buffer = 0;
@@ -94,7 +94,7 @@ public:
 };
 
 vtkDeepShadowDeepShadowMapTechnique::vtkDeepShadowDeepShadowMapTechnique()
-  : Stats(new Statistics)
+  : Stats(new NodeCounter)
   , Pool(new Chunks)
 {
   Internals::SetHooks(this, std::make_unique<Hooks>(*this));
@@ -396,7 +396,7 @@ std::string vtkDeepShadowDeepShadowMapTechnique::GetMapLookupSource() const
 
 void vtkDeepShadowDeepShadowMapTechnique::BeginMapBuild()
 {
-  Statistics& stats = *this->Stats;
+  NodeCounter& stats = *this->Stats;
   if (!stats.Buffer)
   {
     glGenBuffers(1, &stats.Buffer);
@@ -413,7 +413,7 @@ void vtkDeepShadowDeepShadowMapTechnique::BeginMapBuild()
 
 void vtkDeepShadowDeepShadowMapTechnique::EndMapBuild()
 {
-  Statistics& stats = *this->Stats;
+  NodeCounter& stats = *this->Stats;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, stats.Buffer);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(stats.Last), stats.Last.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
@@ -462,6 +462,16 @@ void vtkDeepShadowDeepShadowMapTechnique::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "ChunkNodes: " << this->ChunkNodes << "\n";
   os << indent << "PoolMegabytes: " << this->PoolMegabytes << "\n";
   os << indent << "Colored: " << this->Colored << "\n";
-  os << indent << "Nodes (last build): " << this->GetNodesAverage() << " average, "
-     << this->GetNodesMax() << " maximum, " << this->GetTexelsOverflowed() << " texels overflowed\n";
+}
+
+void vtkDeepShadowDeepShadowMapTechnique::AddStatistics(Statistics& statistics) const
+{
+  this->Superclass::AddStatistics(statistics);
+  statistics.emplace_back("dsm_nodes_avg", this->GetNodesAverage());
+  statistics.emplace_back("dsm_nodes_max", this->GetNodesMax());
+  statistics.emplace_back("dsm_texels_overflowed", static_cast<double>(this->GetTexelsOverflowed()));
+  statistics.emplace_back("dsm_epsilon_max", this->GetEpsilonMax());
+  statistics.emplace_back("chunks_used", static_cast<double>(this->GetChunksUsed()));
+  statistics.emplace_back("chunk_bytes", static_cast<double>(this->GetChunkBytes()));
+  statistics.emplace_back("pool_bytes", static_cast<double>(this->GetPoolBytes()));
 }

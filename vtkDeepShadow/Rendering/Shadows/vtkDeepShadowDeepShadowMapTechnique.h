@@ -116,6 +116,11 @@ protected:
   void BeginMapBuild() override;
   void EndMapBuild() override;
   long long GetStructureBytes() const override;
+#ifndef __VTK_WRAP__
+  /** The light-space ones and dsm_nodes_avg, dsm_nodes_max, dsm_texels_overflowed,
+   * dsm_epsilon_max, chunks_used, chunk_bytes, pool_bytes. */
+  void AddStatistics(Statistics& statistics) const override;
+#endif
   void UnbindLookup() override;
 
   double Epsilon = 0.02;
@@ -131,8 +136,8 @@ private:
   vtkDeepShadowDeepShadowMapTechnique(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
   void operator=(const vtkDeepShadowDeepShadowMapTechnique&) = delete;
 
-  class Statistics;
-  std::unique_ptr<Statistics> Stats;
+  class NodeCounter; // reads back the build's node counts
+  std::unique_ptr<NodeCounter> Stats;
   class Chunks;
   std::unique_ptr<Chunks> Pool;
 };

@@ -480,6 +480,18 @@ void vtkDeepShadowLightSpaceTechnique::ReleaseGraphicsResources(vtkWindow* windo
   this->LightMaps->Release();
 }
 
+void vtkDeepShadowLightSpaceTechnique::AddStatistics(Statistics& statistics) const
+{
+  this->Superclass::AddStatistics(statistics);
+  double faces = 0.0;
+  for (const int count : this->GetClusterCounts())
+  {
+    faces += count;
+  }
+  statistics.emplace_back("clusters", faces);
+  statistics.emplace_back("cluster_texels", faces * this->MapSize * this->MapSize);
+}
+
 void vtkDeepShadowLightSpaceTechnique::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

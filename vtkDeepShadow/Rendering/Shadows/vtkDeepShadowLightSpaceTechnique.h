@@ -105,6 +105,10 @@ protected:
   // ---- vtkDeepShadowTechnique ----
   int GetMaxShadowLights() const override { return 4; }
   long long GetStructureBytes() const override;
+#ifndef __VTK_WRAP__
+  /** clusters (faces over all shadowed lights, 0 unclustered) and cluster_texels. */
+  void AddStatistics(Statistics& statistics) const override;
+#endif
   std::string GetLookupSource() const override;
   void UnbindLookup() override;
 

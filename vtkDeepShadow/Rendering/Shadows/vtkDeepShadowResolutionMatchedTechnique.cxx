@@ -544,6 +544,20 @@ void vtkDeepShadowResolutionMatchedTechnique::ReleaseGraphicsResources(vtkWindow
   this->State->Release();
 }
 
+void vtkDeepShadowResolutionMatchedTechnique::AddStatistics(Statistics& statistics) const
+{
+  this->Superclass::AddStatistics(statistics);
+  statistics.emplace_back("pages_requested", static_cast<double>(this->GetPagesRequested()));
+  statistics.emplace_back("requests_after_components", static_cast<double>(this->GetRequestsAfterComponents()));
+  statistics.emplace_back("pages_unique", this->GetPagesUnique());
+  statistics.emplace_back("pages_rendered", this->GetPagesRendered());
+  statistics.emplace_back("superpages", this->GetSuperpages());
+  statistics.emplace_back("pages_resident", this->GetPagesResident());
+  statistics.emplace_back("finest_level_used", this->GetFinestLevelUsed());
+  statistics.emplace_back("analyses", this->GetAnalyses());
+  statistics.emplace_back("atlas_bytes", static_cast<double>(this->GetAtlasBytes()));
+}
+
 void vtkDeepShadowResolutionMatchedTechnique::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

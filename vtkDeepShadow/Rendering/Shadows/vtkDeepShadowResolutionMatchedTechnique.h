@@ -125,6 +125,12 @@ protected:
   std::vector<double> GetStructureKey() const override;
   std::vector<double> GetLookupKey() const override;
   long long GetStructureBytes() const override;
+#ifndef __VTK_WRAP__
+  /** The last analysis (see GetPagesRequested()): pages_requested, requests_after_components,
+   * pages_unique, pages_rendered, superpages, pages_resident, finest_level_used, analyses,
+   * atlas_bytes. */
+  void AddStatistics(Statistics& statistics) const override;
+#endif
   std::string GetLookupSource() const override;
   int LookupLoopIterations() const override;
   void UnbindLookup() override;

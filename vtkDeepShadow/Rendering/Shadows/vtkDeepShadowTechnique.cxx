@@ -126,6 +126,40 @@ std::string vtkDeepShadowTechnique::GetName() const
   return this->GetParameters().Name();
 }
 
+vtkDeepShadowTechnique::Statistics vtkDeepShadowTechnique::GetStatistics() const
+{
+  Statistics statistics;
+  this->AddStatistics(statistics);
+  return statistics;
+}
+
+std::vector<std::string> vtkDeepShadowTechnique::GetStatisticNames() const
+{
+  std::vector<std::string> names;
+  for (const auto& statistic : this->GetStatistics())
+  {
+    names.push_back(statistic.first);
+  }
+  return names;
+}
+
+double vtkDeepShadowTechnique::GetStatistic(const std::string& name) const
+{
+  return FindStatistic(this->GetStatistics(), name);
+}
+
+double vtkDeepShadowTechnique::FindStatistic(const Statistics& statistics, const std::string& name)
+{
+  for (const auto& statistic : statistics)
+  {
+    if (statistic.first == name)
+    {
+      return statistic.second;
+    }
+  }
+  return 0.0;
+}
+
 long long vtkDeepShadowTechnique::GetShadowBytes() const
 {
   const Internals& impl = *this->Impl;
@@ -642,4 +676,8 @@ void vtkDeepShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowProperty: " << this->ShadowProperty << "\n";
   os << indent << "BuildCount: " << this->BuildCount << "\n";
   os << indent << "ShadowBytes: " << this->GetShadowBytes() << "\n";
+  for (const auto& statistic : this->GetStatistics())
+  {
+    os << indent << statistic.first << ": " << statistic.second << "\n";
+  }
 }

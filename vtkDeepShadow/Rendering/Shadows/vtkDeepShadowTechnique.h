@@ -33,6 +33,7 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+#include <utility> // For std::pair
 #include <vector> // For std::vector
 
 class vtkVolumeProperty;
@@ -142,6 +143,26 @@ public:
   const std::vector<std::string>& GetLastPasses() const { return this->LastPasses; }
   ///@}
 
+  ///@{
+  /**
+   * The technique's own statistics of its last build or analysis, as named values, for
+   * code that does not know the class: the deepshadow tool's JSON and CSV (the names are
+   * their keys), Python and ParaView read them this way. A light-space technique reports
+   * its clusters, a deep shadow map its nodes per texel and node chunks, a resolution-
+   * matched technique its pages; shadow rays report none. Names are lower_snake_case and
+   * the same every frame; GetStatistic() of a name the technique does not report is 0.
+   */
+  std::vector<std::string> GetStatisticNames() const;
+  double GetStatistic(const std::string& name) const;
+  ///@}
+#ifndef __VTK_WRAP__
+  /** Name and value of each statistic, in GetStatisticNames()'s order. */
+  using Statistics = std::vector<std::pair<std::string, double>>;
+  Statistics GetStatistics() const;
+  /** The value of `name` among `statistics` (0 if absent). */
+  static double FindStatistic(const Statistics& statistics, const std::string& name);
+#endif
+
   // ---- Used by vtkDeepShadowVolumeMapper, not by applications ----
 
   // Prepare, Bind and the grid evaluation take the module's internal types: they are
@@ -187,6 +208,10 @@ protected:
   /** The parameters only its lookup depends on (a cache depends on them too). */
   virtual std::vector<double> GetLookupKey() const { return {}; }
   virtual long long GetStructureBytes() const { return 0; }
+#ifndef __VTK_WRAP__
+  /** Appends this technique's statistics (see GetStatistics(); an override calls its parent's first). */
+  virtual void AddStatistics(Statistics&) const {}
+#endif
   /**
    * GLSL defining vec3 lightVisibility(int slot, vec3 position, vec3 toLight,
    * float lightDistance, vec3 receiverNormal) and its uniforms (its declarations part), for the ray

@@ -83,6 +83,25 @@ class TestPythonTechniques(Testing.vtkTest):
         self.assertEqual(technique.GetChunkBytes(), 40)
         self.assertLess(technique.GetShadowBytes(), layer_bytes / 4)
         self.assertTrue((chunked == layers).all())
+        # The same figures through the statistics any caller reads without knowing the class.
+        self.assertEqual(technique.GetStatistic("chunks_used"), technique.GetChunksUsed())
+        self.assertEqual(technique.GetStatistic("dsm_nodes_max"), technique.GetNodesMax())
+
+    def testStatisticsByName(self):
+        # Each technique's statistics (names and values) after a frame: shadow rays report
+        # none, deep shadow maps their nodes, resolution-matched maps their pages.
+        expected = {"rays": set(), "dsm": {"dsm_nodes_avg", "dsm_nodes_max", "chunks_used", "clusters"},
+                    "rmsm": {"pages_requested", "pages_unique", "superpages", "atlas_bytes"}}
+        for name, names in expected.items():
+            technique = vtkDeepShadowTechnique.NewFromName(name)
+            RodsScene(technique=technique).render()
+            reported = technique.GetStatisticNames()
+            self.assertTrue(names <= set(reported), (name, reported))
+            self.assertEqual(len(set(reported)), len(reported), name)
+            if name != "rays":
+                counted = "dsm_nodes_max" if name == "dsm" else "pages_unique"
+                self.assertGreater(technique.GetStatistic(counted), 0, name)
+            self.assertEqual(technique.GetStatistic("no_such_statistic"), 0.0)
 
     def testSetGetAndObservers(self):
         for cls in TECHNIQUE_CLASSES:
