@@ -43,7 +43,7 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
     plugin)
       draw 1 "$out/volume.png" "Volume"
       draw 1 "$out/none.png" "Shadowed Volume" none
-      draw 1 "$out/dsm.png" "Shadowed Volume" dsm
+      draw 1 "$out/dsm.png" "Shadowed Volume" dsm | tee "$out/dsm.log"
       draw 1 "$out/dsm-all-lights.png" "Shadowed Volume" dsm 1
       # The representation's ground plane, below the volume (-Z), lit and receiving.
       draw 1 "$out/ground-none.png" "Shadowed Volume" none 0 ground
@@ -104,6 +104,9 @@ case "$what" in
     # The key light's deep shadow darkens the volume; every light's more so.
     compare darker "$out/dsm.png" "$out/none.png" 0.97
     compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
+    # The technique's statistics reach the client by name (ShadowStatistics).
+    grep -Eq "shadow statistics: .*dsm_nodes_max=[1-9]" "$out/dsm.log" ||
+      { echo "the deep shadow map's statistics did not reach the client: FAILED"; exit 1; }
     # The ground under the volume, seen below it (rows 66-70 %, columns 42-56 %: ground
     # only), darkens in its shadow; without a technique it is lit.
     compare darker-in 0.42 0.66 0.56 0.70 "$out/ground-dsm.png" "$out/ground-none.png" 0.6

@@ -38,3 +38,4 @@ if representation == "Shadowed Volume":
     display.UpdatePropertyInformation()
     print("shadow exchange: %d bytes in %.2f ms per frame" % (display.GetPropertyValue("ShadowExchangeBytes"),
                                                                display.GetPropertyValue("ShadowExchangeMilliseconds")))
+    print("shadow statistics: %s" % display.GetPropertyValue("ShadowStatistics"))

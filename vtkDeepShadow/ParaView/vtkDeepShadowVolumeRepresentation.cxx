@@ -63,6 +63,20 @@ public:
   }
 };
 vtkStandardNewMacro(vtkDeepShadowMPIBrickExchange);
+
+// The registry's names whose technique exchanges bricks between ranks (the light-space ones).
+std::string ExchangedTechniques()
+{
+  std::string names;
+  for (const std::string& name : deepshadow::ShadowTechniqueNames())
+  {
+    if (vtkDeepShadowLightSpaceTechnique::SafeDownCast(vtkDeepShadowTechniqueFactory::New(name)))
+    {
+      names += (names.empty() ? "" : ", ") + name;
+    }
+  }
+  return names;
+}
 }
 
 vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
@@ -312,8 +326,7 @@ void vtkDeepShadowVolumeRepresentation::ShareShadowsAcrossRanks()
   if (ranks > 1 && technique && !lightSpace)
   {
     alone = "the technique '" + this->TechniqueName +
-      "' is not exchanged between ranks (the light-space ones are: shadowmap, dsm, dsm-color, dsm3, "
-      "cssm and their -cached variants)";
+      "' is not exchanged between ranks (the light-space ones are: " + ExchangedTechniques() + ")";
   }
   else if (ranks > 1 && technique && this->RanksWithoutPiece > 0)
   {
@@ -339,6 +352,21 @@ double vtkDeepShadowVolumeRepresentation::GetShadowExchangeBytes()
 double vtkDeepShadowVolumeRepresentation::GetShadowExchangeMilliseconds()
 {
   return this->Exchange->GetLastMilliseconds();
+}
+
+const char* vtkDeepShadowVolumeRepresentation::GetShadowStatistics()
+{
+  std::ostringstream text;
+  auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper);
+  if (vtkDeepShadowTechnique* technique = mapper ? mapper->GetShadowTechnique() : nullptr)
+  {
+    for (const auto& statistic : technique->GetStatistics())
+    {
+      text << (text.tellp() > 0 ? " " : "") << statistic.first << "=" << statistic.second;
+    }
+  }
+  this->StatisticsText = text.str();
+  return this->StatisticsText.c_str();
 }
 
 void vtkDeepShadowVolumeRepresentation::ChooseShadowLights()

@@ -80,6 +80,12 @@ public:
   double GetShadowExchangeBytes();
   double GetShadowExchangeMilliseconds();
   ///@}
+  /**
+   * The technique's statistics of the last frame on this rank (vtkDeepShadowTechnique::
+   * GetStatistics(): a deep shadow map's nodes per texel, rmsm's pages, ...) as NAME=VALUE
+   * pairs separated by spaces; empty without a technique or for one that reports none.
+   */
+  const char* GetShadowStatistics();
   /** The error of the last technique or parameters set, "" when they were applied. */
   const char* GetShadowError() const { return this->Error.c_str(); }
 
@@ -119,6 +125,7 @@ private:
   std::string TechniqueName = "dsm";
   std::string ParameterText;
   std::string Error;
+  std::string StatisticsText; // GetShadowStatistics()'s
 };
 
 #endif
