@@ -28,7 +28,7 @@
  *
  * The shader is composed from the features in use (VolumeSampling, EmptySpace, Lighting,
  * Phong, Jitter, OpaqueDepth, a technique's Shadow...: one component each, listed in
- * Rendering/Volume/VolumeFeatures.cxx): see GetShaderFeatures() and GetFragmentShaderSource().
+ * Rendering/RayCast/VolumeFeatures.cxx): see GetShaderFeatures() and GetFragmentShaderSource().
  * Work is redone only when what it depends on changed; the counters below make that
  * observable.
  *

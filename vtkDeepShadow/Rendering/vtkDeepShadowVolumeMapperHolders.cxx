@@ -6,7 +6,7 @@
 #include "vtkDeepShadowVolumeMapperInternals.h"
 
 #include "CoreAdapter.h"
-#include "Volume/RayCastFrame.h"
+#include "RayCast/RayCastFrame.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"

@@ -14,7 +14,7 @@
 #include "Volume/OccupancyTexture.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
-#include "Volume/UserShaderCode.h"
+#include "RayCast/UserShaderCode.h"
 #include "Volume/VolumeTexture.h"
 
 #include "vtkPolyData.h"

@@ -8,6 +8,7 @@
 #include "Core/Light.h"
 #include "Core/VolumeShading.h"
 #include "ShaderComposer.h"
+#include "Volume/TriangleHierarchy.h"
 #include "Core/Camera.h"
 #include "Core/Components.h"
 #include "Core/Transfer2D.h"
@@ -34,27 +35,6 @@ class vtkTextureObject;
 namespace deepshadow
 {
 class SurfaceSet;
-
-/**
- * Surfaces that cast shadows as the GPU finds them (Features/Surfaces.glsl): one hierarchy
- * in the volume's index space, and each surface's transmission (rgb coloured, a grey).
- */
-struct SurfaceTextures
-{
-  vtkTextureObject* Nodes = nullptr;
-  vtkTextureObject* Triangles = nullptr;
-  int Root = -1;
-  std::vector<glm::vec4> Transmission;
-};
-
-/** A volume's polyhedral bound as the GPU walks it (Features/Bound.glsl). */
-struct BoundTextures
-{
-  vtkTextureObject* Nodes = nullptr;
-  vtkTextureObject* Triangles = nullptr;
-  std::vector<int> LeafRoots;
-  std::vector<int> TruthTable;
-};
 
 struct ShadowContext
 {

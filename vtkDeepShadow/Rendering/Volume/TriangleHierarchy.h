@@ -4,9 +4,8 @@
 #ifndef vtkDeepShadowTriangleHierarchy_h
 #define vtkDeepShadowTriangleHierarchy_h
 
-#include "Volume/ShadowContext.h"
-
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // held by vtkSmartPointer, returned as a raw pointer
 #include "vtkType.h"
 
 #include <glm/mat4x4.hpp>
@@ -18,13 +17,33 @@
 
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
-class vtkTextureObject;
 class vtkWindow;
 
 namespace deepshadow
 {
 class BoundRegion;
 class SurfaceSet;
+
+/**
+ * Surfaces that cast shadows as the GPU finds them (Features/Surfaces.glsl): one hierarchy
+ * in the volume's index space, and each surface's transmission (rgb coloured, a grey).
+ */
+struct SurfaceTextures
+{
+  vtkTextureObject* Nodes = nullptr;
+  vtkTextureObject* Triangles = nullptr;
+  int Root = -1;
+  std::vector<glm::vec4> Transmission;
+};
+
+/** A volume's polyhedral bound as the GPU walks it (Features/Bound.glsl). */
+struct BoundTextures
+{
+  vtkTextureObject* Nodes = nullptr;
+  vtkTextureObject* Triangles = nullptr;
+  std::vector<int> LeafRoots;
+  std::vector<int> TruthTable;
+};
 
 /** A hierarchy's nodes and triangles as float texels (GL/FloatTexels). */
 class TriangleHierarchy

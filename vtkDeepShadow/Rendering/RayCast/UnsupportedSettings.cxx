@@ -1,4 +1,4 @@
-#include "UnsupportedSettings.h"
+#include "RayCast/UnsupportedSettings.h"
 
 #include "CoreAdapter.h"
 

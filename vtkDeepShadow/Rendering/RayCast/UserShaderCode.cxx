@@ -1,4 +1,4 @@
-#include "Volume/UserShaderCode.h"
+#include "RayCast/UserShaderCode.h"
 
 #include "vtkDeepShadowFeatureUserShader.h"
 

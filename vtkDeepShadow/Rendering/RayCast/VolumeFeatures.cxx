@@ -1,12 +1,12 @@
-#include "Volume/VolumeFeatures.h"
+#include "RayCast/VolumeFeatures.h"
 
 #include "CoreAdapter.h"
 #include "GL/FramebufferCopy.h"
 #include "LightingUniforms.h"
 #include "Shadows/OtherVolumeShadows.h"
 #include "Translucency/TranslucentLayers.h"
-#include "Volume/RayCastFrame.h"
-#include "Volume/UserShaderCode.h"
+#include "RayCast/RayCastFrame.h"
+#include "RayCast/UserShaderCode.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkCamera.h"
@@ -228,9 +228,12 @@ void ComposeShadow(const Frame& f, ComposedFeatures& features)
 }
 }
 
-const std::vector<VolumeFeature>& VolumeFeatures()
+namespace
 {
-  static const std::vector<VolumeFeature> features = {
+// What the volume's data holds: its components, opacity modifiers, mask, empty space, bounds.
+std::vector<VolumeFeature> DataFeatures()
+{
+  return {
     { "VolumeSampling", [](const Frame&) { return true; }, nullptr, BindSampling, UnbindSampling },
     { "Components", [](const Frame& f) { return !f.Context.OtherComponents.empty(); },
       [](const Frame& f, ComposedFeatures& features) {
@@ -292,6 +295,14 @@ const std::vector<VolumeFeature>& VolumeFeatures()
         f.Context.Surfaces->Nodes->Deactivate();
         f.Context.Surfaces->Triangles->Deactivate();
       } },
+  };
+}
+
+// How samples are lit and blended: the opaque scene's depth, lighting and shading, the
+// user's code, jitter, projections and isosurfaces.
+std::vector<VolumeFeature> ShadingFeatures()
+{
+  return {
     { "OpaqueDepth", [](const Frame& f) { return f.Opaque != nullptr; }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         f.Opaque->GetDepth()->Activate();
@@ -335,6 +346,14 @@ const std::vector<VolumeFeature>& VolumeFeatures()
                                                     : 0.0f);
       },
       nullptr },
+  };
+}
+
+// What shadows and interleaves the march: the technique, the other volumes' shadows, the
+// translucent meshes' layers and the second volume's segments.
+std::vector<VolumeFeature> ShadowAndMergeFeatures()
+{
+  return {
     { "Shadow", [](const Frame& f) { return f.Technique != nullptr; }, ComposeShadow,
       [](const Frame& f, UniformSink& sink)
       { vtkDeepShadowTechnique::Internals::Bind(f.Technique, sink, f.Context); },
@@ -362,6 +381,20 @@ const std::vector<VolumeFeature>& VolumeFeatures()
       },
       nullptr },
   };
+}
+}
+
+const std::vector<VolumeFeature>& VolumeFeatures()
+{
+  // In this order: composition and binding follow it.
+  static const std::vector<VolumeFeature> features = [] {
+    std::vector<VolumeFeature> all;
+    for (auto group : { DataFeatures(), ShadingFeatures(), ShadowAndMergeFeatures() })
+    {
+      all.insert(all.end(), group.begin(), group.end());
+    }
+    return all;
+  }();
   return features;
 }
 
