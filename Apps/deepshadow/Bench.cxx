@@ -88,9 +88,9 @@ double TimeMapper(vtkDeepShadowRenderWindow* window, vtkRenderer* renderer, vtkV
   }
   return Median(times);
 }
-}
 
-int RunBench(const Options& options)
+// Refuses, before any work, a --size whose frame buffers exceed the memory budget.
+void RequireFrameBudget(const Options& options)
 {
   const std::string problem = CheckMemoryBudget("--size " + std::to_string(options.Width) + "x" +
       std::to_string(options.Height) + " (the frame's buffers)",
@@ -99,16 +99,23 @@ int RunBench(const Options& options)
   {
     throw UsageError(problem + " (--memory-budget BYTES to change it)");
   }
-  vtkNew<vtkDeepShadowRenderWindow> window;
+}
+
+// The window both mappers render in: --backend and --size.
+void SetUpWindow(const Options& options, vtkDeepShadowRenderWindow* window)
+{
   if (!options.Backend.empty())
   {
     window->SetBackend(vtkDeepShadowRenderWindow::BackendFromString(options.Backend.c_str()));
   }
   window->SetSize(options.Width, options.Height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.08, 0.09, 0.12);
-  window->AddRenderer(renderer);
+}
 
+// The cases to time: with --blend-modes, the head at the first --bench-sizes size in each
+// mode; without, each size on the sparse spheres and the dense head, shaded, and the head
+// unshaded.
+std::vector<BenchCase> BenchCases(const Options& options)
+{
   std::vector<BenchCase> cases;
   for (const std::string& blend : options.BenchBlendModes)
   {
@@ -121,82 +128,166 @@ int RunBench(const Options& options)
     cases.push_back({ "head", size / 256.0, true });
     cases.push_back({ "head", size / 256.0, false });
   }
+  return cases;
+}
+
+// Builds the case's scene at its scale and shading (an isosurface at half the peak opacity);
+// returns the scene's suggested sample distance, which both mappers use.
+double SetUpScene(vtkDeepShadowStandardScene* scene, const BenchCase& c)
+{
+  scene->SetScene(c.Scene);
+  scene->SetResolutionScale(std::clamp(c.Scale, 0.01, 2.0));
+  vtkImageData* data = scene->GetVolume();
+  vtkVolumeProperty* property = scene->GetVolumeProperty();
+  property->SetShade(c.Shade ? 1 : 0);
+  const double step = scene->GetSuggestedSampleDistance();
+  if (c.Blend == "isosurface")
+  {
+    property->GetIsoSurfaceValues()->SetValue(0, HalfOpacityScalar(property, data->GetScalarRange()));
+  }
+  return step;
+}
+
+// Lights the scene with its key light alone, from the key light's direction towards the
+// volume's centre (the renderer keeps the light).
+void AddKeyLight(vtkRenderer* renderer, vtkDeepShadowStandardScene* scene)
+{
+  vtkImageData* data = scene->GetVolume();
+  double direction[3], center[3];
+  scene->GetLightDirection(direction);
+  data->GetCenter(center);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetFocalPoint(center);
+  light->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
+  renderer->AddLight(light);
+}
+
+// Both mappers on the same data, sample distance and blend mode; VTK's without automatic
+// sample distances or jittering, so that both take the same samples.
+void SetUpMappers(vtkDeepShadowVolumeMapper* ours, vtkGPUVolumeRayCastMapper* theirs,
+  vtkImageData* data, double step, const std::string& blend)
+{
+  ours->SetInputData(data);
+  ours->SetSampleDistance(step);
+  theirs->SetInputData(data);
+  theirs->SetAutoAdjustSampleDistances(0);
+  theirs->SetSampleDistance(step);
+  theirs->SetUseJittering(0);
+  ours->SetBlendMode(BlendModeOf(blend));
+  theirs->SetBlendMode(BlendModeOf(blend));
+}
+
+// What one case measured.
+struct BenchTimes
+{
+  double OursMs = 0.0;
+  double NoSkipMs = 0.0; // ours without empty-space skipping
+  double VtkMs = 0.0;
+  double EmptyFraction = 0.0; // of ours' blocks
+};
+
+// Times our mapper, then ours without empty-space skipping, then VTK's; throws UsageError if
+// ours failed (a lost context, or its own error).
+BenchTimes TimeMappers(vtkDeepShadowRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume,
+  vtkDeepShadowVolumeMapper* ours, vtkGPUVolumeRayCastMapper* theirs,
+  vtkDeepShadowStandardScene* scene, int frames)
+{
+  BenchTimes times;
+  times.OursMs = TimeMapper(window, renderer, volume, ours, scene, frames);
+  RequireContext(window);
+  if (!ours->GetLastError().empty())
+  {
+    throw UsageError("bench: " + ours->GetLastError());
+  }
+  times.EmptyFraction = ours->GetEmptyBlockFraction();
+  ours->EmptySpaceSkippingOff(); // the same work as VTK's mapper: every sample taken
+  times.NoSkipMs = TimeMapper(window, renderer, volume, ours, scene, frames);
+  ours->EmptySpaceSkippingOn();
+  times.VtkMs = TimeMapper(window, renderer, volume, theirs, scene, frames);
+  volume->SetMapper(nullptr);
+  return times;
+}
+
+// The volume's dimensions as the table shows them, "256x256x160".
+std::string DimensionsText(vtkImageData* data)
+{
+  int dims[3];
+  data->GetDimensions(dims);
+  return std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
+}
+
+// A case's line of the table on stdout, flushed: progress while the bench runs.
+void PrintCaseLine(
+  const BenchCase& c, const std::string& dimsText, double step, const BenchTimes& t)
+{
+  std::printf("%-8s %-13s %-6s %-10s %8.3f %9.1f %9.1f %9.1f %7.3f %7.3f %6.2f\n", c.Scene.c_str(),
+    dimsText.c_str(), c.Shade ? "yes" : "no", c.Blend.c_str(), step, t.OursMs, t.NoSkipMs, t.VtkMs,
+    t.OursMs / t.VtkMs, t.NoSkipMs / t.VtkMs, t.EmptyFraction);
+  std::fflush(stdout);
+}
+
+// A case's figures as the --json file lists them.
+Json CaseJson(const BenchCase& c, const std::string& dimsText, double step, const BenchTimes& t)
+{
+  Json row;
+  row.Set("scene", c.Scene)
+    .Set("dims", dimsText)
+    .Set("shade", c.Shade)
+    .Set("blend", c.Blend)
+    .Set("sample_distance", step)
+    .Set("ours_ms", t.OursMs)
+    .Set("ours_no_skipping_ms", t.NoSkipMs)
+    .Set("vtk_ms", t.VtkMs)
+    .Set("ratio", t.OursMs / t.VtkMs)
+    .Set("ratio_no_skipping", t.NoSkipMs / t.VtkMs)
+    .Set("empty_block_fraction", t.EmptyFraction);
+  return row;
+}
+
+// One case: its scene staged in `renderer`, both mappers timed, its line printed; returns
+// its figures for the --json file.
+Json RunCase(const Options& options, vtkDeepShadowRenderWindow* window, vtkRenderer* renderer,
+  const BenchCase& c)
+{
+  vtkNew<vtkDeepShadowStandardScene> scene;
+  const double step = SetUpScene(scene, c);
+  vtkImageData* data = scene->GetVolume();
+
+  renderer->RemoveAllViewProps(); // the previous case's volume and light
+  renderer->RemoveAllLights();
+  vtkNew<vtkVolume> volume;
+  volume->SetProperty(scene->GetVolumeProperty());
+  renderer->AddVolume(volume);
+  AddKeyLight(renderer, scene);
+
+  vtkNew<vtkDeepShadowVolumeMapper> ours;
+  vtkNew<vtkGPUVolumeRayCastMapper> theirs;
+  SetUpMappers(ours, theirs, data, step, c.Blend);
+  const BenchTimes times =
+    TimeMappers(window, renderer, volume, ours, theirs, scene, options.Frames);
+  const std::string dimsText = DimensionsText(data);
+  PrintCaseLine(c, dimsText, step, times);
+  return CaseJson(c, dimsText, step, times);
+}
+}
+
+int RunBench(const Options& options)
+{
+  RequireFrameBudget(options);
+  vtkNew<vtkDeepShadowRenderWindow> window;
+  SetUpWindow(options, window);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.08, 0.09, 0.12);
+  window->AddRenderer(renderer);
+  const std::vector<BenchCase> cases = BenchCases(options);
 
   std::printf("%-8s %-13s %-6s %-10s %8s %9s %9s %9s %7s %7s %6s\n", "scene", "dims", "shade", "blend",
     "step", "ours_ms", "noskip_ms", "vtk_ms", "ratio", "noskip", "empty");
   std::vector<Json> rows;
   for (const BenchCase& c : cases)
   {
-    vtkNew<vtkDeepShadowStandardScene> scene;
-    scene->SetScene(c.Scene);
-    scene->SetResolutionScale(std::clamp(c.Scale, 0.01, 2.0));
-    vtkImageData* data = scene->GetVolume();
-    vtkVolumeProperty* property = scene->GetVolumeProperty();
-    property->SetShade(c.Shade ? 1 : 0);
-    const double step = scene->GetSuggestedSampleDistance();
-    if (c.Blend == "isosurface")
-    {
-      property->GetIsoSurfaceValues()->SetValue(0, HalfOpacityScalar(property, data->GetScalarRange()));
-    }
-
-    renderer->RemoveAllViewProps();
-    renderer->RemoveAllLights();
-    vtkNew<vtkVolume> volume;
-    volume->SetProperty(property);
-    renderer->AddVolume(volume);
-    double direction[3], center[3];
-    scene->GetLightDirection(direction);
-    data->GetCenter(center);
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetFocalPoint(center);
-    light->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
-    renderer->AddLight(light);
-
-    vtkNew<vtkDeepShadowVolumeMapper> ours;
-    ours->SetInputData(data);
-    ours->SetSampleDistance(step);
-    vtkNew<vtkGPUVolumeRayCastMapper> theirs;
-    theirs->SetInputData(data);
-    theirs->SetAutoAdjustSampleDistances(0);
-    theirs->SetSampleDistance(step);
-    theirs->SetUseJittering(0);
-    ours->SetBlendMode(BlendModeOf(c.Blend));
-    theirs->SetBlendMode(BlendModeOf(c.Blend));
-
-    const double oursMs = TimeMapper(window, renderer, volume, ours, scene, options.Frames);
-    RequireContext(window);
-    if (!ours->GetLastError().empty())
-    {
-      throw UsageError("bench: " + ours->GetLastError());
-    }
-    const double emptyFraction = ours->GetEmptyBlockFraction();
-    ours->EmptySpaceSkippingOff(); // the same work as VTK's mapper: every sample taken
-    const double noSkipMs = TimeMapper(window, renderer, volume, ours, scene, options.Frames);
-    ours->EmptySpaceSkippingOn();
-    const double vtkMs = TimeMapper(window, renderer, volume, theirs, scene, options.Frames);
-    volume->SetMapper(nullptr);
-    int dims[3];
-    data->GetDimensions(dims);
-    const std::string dimsText =
-      std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
-    std::printf("%-8s %-13s %-6s %-10s %8.3f %9.1f %9.1f %9.1f %7.3f %7.3f %6.2f\n", c.Scene.c_str(),
-      dimsText.c_str(), c.Shade ? "yes" : "no", c.Blend.c_str(), step, oursMs, noSkipMs, vtkMs,
-      oursMs / vtkMs, noSkipMs / vtkMs, emptyFraction);
-    std::fflush(stdout);
-    Json row;
-    row.Set("scene", c.Scene)
-      .Set("dims", dimsText)
-      .Set("shade", c.Shade)
-      .Set("blend", c.Blend)
-      .Set("sample_distance", step)
-      .Set("ours_ms", oursMs)
-      .Set("ours_no_skipping_ms", noSkipMs)
-      .Set("vtk_ms", vtkMs)
-      .Set("ratio", oursMs / vtkMs)
-      .Set("ratio_no_skipping", noSkipMs / vtkMs)
-      .Set("empty_block_fraction", emptyFraction);
-    rows.push_back(row);
+    rows.push_back(RunCase(options, window, renderer, c));
   }
   if (!options.Json.empty())
   {

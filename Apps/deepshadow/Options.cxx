@@ -345,9 +345,104 @@ OptionEntry Whole(const char* key, int Options::*field, int lo, int hi)
           } };
 }
 
-const std::vector<OptionEntry>& GeneralOptions()
+// --mesh-opacity, --mesh-color, --mesh-transform: the look of the --mesh before them.
+void ParseMeshOption(Options& o, const std::string& key, const NextValue& next)
 {
-  static const std::vector<OptionEntry> entries = {
+  if (o.Meshes.empty())
+  {
+    throw UsageError(key + " applies to the --mesh before it, and none was given");
+  }
+  MeshSpec& mesh = o.Meshes.back();
+  const std::string value = next();
+  if (key == "--mesh-opacity")
+  {
+    mesh.Opacity = ParseNumber(key, value);
+    if (!(mesh.Opacity >= 0.0 && mesh.Opacity <= 1.0))
+    {
+      throw UsageError("--mesh-opacity must lie in [0, 1], got '" + value + "'");
+    }
+  }
+  else if (key == "--mesh-color")
+  {
+    mesh.Color = ParseVector(key, value);
+    for (double c : mesh.Color)
+    {
+      if (!(c >= 0.0 && c <= 1.0))
+      {
+        throw UsageError("--mesh-color components must lie in [0, 1], got '" + value + "'");
+      }
+    }
+  }
+  else
+  {
+    const auto parts = Split(value, ',');
+    if (parts.size() != 3 && parts.size() != 4)
+    {
+      throw UsageError("--mesh-transform expects TX,TY,TZ[,SCALE], got '" + value + "'");
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      mesh.Translate[c] = ParseNumber(key, parts[c]);
+    }
+    mesh.Scale = parts.size() == 4 ? ParseNumber(key, parts[3]) : 1.0;
+    if (!(mesh.Scale > 0.0))
+    {
+      throw UsageError("--mesh-transform's scale must be positive, got '" + value + "'");
+    }
+  }
+}
+
+// --blend-modes: blend modes by name, or all.
+void ParseBlendModes(Options& o, const NextValue& next)
+{
+  o.BenchBlendModes.clear();
+  const std::string text = next();
+  const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
+    "isosurface" };
+  for (const auto& part : text == "all" ? known : Split(text, ','))
+  {
+    if (std::find(known.begin(), known.end(), part) == known.end())
+    {
+      throw UsageError("--blend-modes: unknown blend mode '" + part +
+        "' (composite, maximum, minimum, average, additive, isosurface or all)");
+    }
+    o.BenchBlendModes.push_back(part);
+  }
+}
+
+// WxH into two whole numbers (--size, --error-size).
+OptionEntry Size(const char* key, int Options::*width, int Options::*height)
+{
+  return { { key }, [width, height](Options& o, const std::string& k, const NextValue& next) {
+            const std::string text = next();
+            const auto parts = Split(text, 'x');
+            if (parts.size() != 2)
+            {
+              throw UsageError(k + " expects WxH, got '" + text + "'");
+            }
+            o.*width = ParseInteger(k, parts[0], 1, 16384);
+            o.*height = ParseInteger(k, parts[1], 1, 16384);
+          } };
+}
+
+// One of `names` (--shading, --backend), kept as given.
+OptionEntry OneOf(const char* key, std::vector<std::string> names, const char* said,
+  std::function<void(Options&, const std::string&)> set)
+{
+  return { { key }, [key, names, said, set](Options& o, const std::string&, const NextValue& next) {
+            const std::string value = next();
+            if (std::find(names.begin(), names.end(), value) == names.end())
+            {
+              throw UsageError(std::string(key) + " must be " + said + ", got '" + value + "'");
+            }
+            set(o, value);
+          } };
+}
+
+// What is drawn: the scene or the files, masks, meshes and bounds.
+std::vector<OptionEntry> InputOptions()
+{
+  return {
     Text("--scene", &Options::Scene),
     Text("--volume", &Options::VolumeFile),
     Text("--mask", &Options::MaskFile),
@@ -361,51 +456,7 @@ const std::vector<OptionEntry>& GeneralOptions()
       [](Options& o, const std::string&, const NextValue& next) {
         o.Meshes.push_back(MeshSpec{ next() });
       } },
-    { { "--mesh-opacity", "--mesh-color", "--mesh-transform" },
-      [](Options& o, const std::string& key, const NextValue& next) {
-        if (o.Meshes.empty())
-        {
-          throw UsageError(key + " applies to the --mesh before it, and none was given");
-        }
-        MeshSpec& mesh = o.Meshes.back();
-        const std::string value = next();
-        if (key == "--mesh-opacity")
-        {
-          mesh.Opacity = ParseNumber(key, value);
-          if (!(mesh.Opacity >= 0.0 && mesh.Opacity <= 1.0))
-          {
-            throw UsageError("--mesh-opacity must lie in [0, 1], got '" + value + "'");
-          }
-        }
-        else if (key == "--mesh-color")
-        {
-          mesh.Color = ParseVector(key, value);
-          for (double c : mesh.Color)
-          {
-            if (!(c >= 0.0 && c <= 1.0))
-            {
-              throw UsageError("--mesh-color components must lie in [0, 1], got '" + value + "'");
-            }
-          }
-        }
-        else
-        {
-          const auto parts = Split(value, ',');
-          if (parts.size() != 3 && parts.size() != 4)
-          {
-            throw UsageError("--mesh-transform expects TX,TY,TZ[,SCALE], got '" + value + "'");
-          }
-          for (int c = 0; c < 3; ++c)
-          {
-            mesh.Translate[c] = ParseNumber(key, parts[c]);
-          }
-          mesh.Scale = parts.size() == 4 ? ParseNumber(key, parts[3]) : 1.0;
-          if (!(mesh.Scale > 0.0))
-          {
-            throw UsageError("--mesh-transform's scale must be positive, got '" + value + "'");
-          }
-        }
-      } },
+    { { "--mesh-opacity", "--mesh-color", "--mesh-transform" }, ParseMeshOption },
     Switch("--ground", &Options::Ground),
     Whole("--volume-segments", &Options::VolumeSegments, 0, 8),
     Whole("--translucent-layers", &Options::TranslucentLayers, 0, 8),
@@ -437,17 +488,14 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
         o.ObjectCount = static_cast<int>(count);
       } },
-    { { "--size" },
-      [](Options& o, const std::string& key, const NextValue& next) {
-        const std::string text = next();
-        const auto parts = Split(text, 'x');
-        if (parts.size() != 2)
-        {
-          throw UsageError("--size expects WxH, got '" + text + "'");
-        }
-        o.Width = ParseInteger(key, parts[0], 1, 16384);
-        o.Height = ParseInteger(key, parts[1], 1, 16384);
-      } },
+  };
+}
+
+// How it is drawn: size, sampling, lights and shading.
+std::vector<OptionEntry> DrawingOptions()
+{
+  return {
+    Size("--size", &Options::Width, &Options::Height),
     { { "--sample-distance" },
       [](Options& o, const std::string& key, const NextValue& next) {
         o.SampleDistance = ParseNumber(key, next());
@@ -479,15 +527,8 @@ const std::vector<OptionEntry>& GeneralOptions()
         o.Shade = false;
         o.ShadeGiven = true;
       } },
-    { { "--shading" },
-      [](Options& o, const std::string&, const NextValue& next) {
-        const std::string model = next();
-        if (model != "vtk" && model != "blinn-phong")
-        {
-          throw UsageError("--shading must be vtk or blinn-phong, got '" + model + "'");
-        }
-        o.VTKShading = model == "vtk";
-      } },
+    OneOf("--shading", { "vtk", "blinn-phong" }, "vtk or blinn-phong",
+      [](Options& o, const std::string& model) { o.VTKShading = model == "vtk"; }),
     { { "--jitter" },
       [](Options& o, const std::string& key, const NextValue& next) {
         o.Jitter = true;
@@ -495,14 +536,15 @@ const std::vector<OptionEntry>& GeneralOptions()
       } },
     Switch("--no-empty-space-skipping", &Options::EmptySpaceSkipping, false),
     Switch("--replace-nonfinite", &Options::ReplaceNonFinite),
-    { { "--backend" },
-      [](Options& o, const std::string&, const NextValue& next) {
-        o.Backend = next();
-        if (o.Backend != "osmesa" && o.Backend != "egl")
-        {
-          throw UsageError("--backend must be osmesa or egl, got '" + o.Backend + "'");
-        }
-      } },
+    OneOf("--backend", { "osmesa", "egl" }, "osmesa or egl",
+      [](Options& o, const std::string& backend) { o.Backend = backend; }),
+  };
+}
+
+// What comes out, and what the benchmarks sweep.
+std::vector<OptionEntry> OutputAndBenchOptions()
+{
+  return {
     Text("--out", &Options::Out),
     Text("--json", &Options::Json),
     Whole("--frames", &Options::Frames, 0, 100000),
@@ -525,33 +567,9 @@ const std::vector<OptionEntry>& GeneralOptions()
           WithTechniqueSpec(o, spec); // throws for a bad spec
         }
       } },
-    { { "--error-size" },
-      [](Options& o, const std::string& key, const NextValue& next) {
-        const std::string text = next();
-        const auto parts = Split(text, 'x');
-        if (parts.size() != 2)
-        {
-          throw UsageError("--error-size expects WxH, got '" + text + "'");
-        }
-        o.ErrorWidth = ParseInteger(key, parts[0], 1, 16384);
-        o.ErrorHeight = ParseInteger(key, parts[1], 1, 16384);
-      } },
+    Size("--error-size", &Options::ErrorWidth, &Options::ErrorHeight),
     { { "--blend-modes" },
-      [](Options& o, const std::string&, const NextValue& next) {
-        o.BenchBlendModes.clear();
-        const std::string text = next();
-        const std::vector<std::string> known = { "composite", "maximum", "minimum", "average", "additive",
-          "isosurface" };
-        for (const auto& part : text == "all" ? known : Split(text, ','))
-        {
-          if (std::find(known.begin(), known.end(), part) == known.end())
-          {
-            throw UsageError("--blend-modes: unknown blend mode '" + part +
-              "' (composite, maximum, minimum, average, additive, isosurface or all)");
-          }
-          o.BenchBlendModes.push_back(part);
-        }
-      } },
+      [](Options& o, const std::string&, const NextValue& next) { ParseBlendModes(o, next); } },
     { { "--bench-sizes" },
       [](Options& o, const std::string& key, const NextValue& next) {
         o.BenchSizes.clear();
@@ -561,6 +579,18 @@ const std::vector<OptionEntry>& GeneralOptions()
         }
       } },
   };
+}
+
+const std::vector<OptionEntry>& GeneralOptions()
+{
+  static const std::vector<OptionEntry> entries = [] {
+    std::vector<OptionEntry> all;
+    for (auto group : { InputOptions(), DrawingOptions(), OutputAndBenchOptions() })
+    {
+      all.insert(all.end(), group.begin(), group.end());
+    }
+    return all;
+  }();
   return entries;
 }
 

@@ -98,9 +98,9 @@ std::string TechniqueUsage()
   }
   return usage;
 }
-}
 
-std::string Options::Usage()
+// The synopsis of every command.
+std::string UsageSynopsis()
 {
   return R"(deepshadow: volume rendering with shadows, headless (vtkDeepShadow)
 
@@ -123,7 +123,13 @@ Usage:
   deepshadow --version
   deepshadow --help
 
-Commands:
+)";
+}
+
+// What each command does.
+std::string UsageCommands()
+{
+  return R"(Commands:
   render      GPU ray casting with vtkDeepShadowVolumeMapper; writes the image and, with
               --json, the frame statistics.
   reference   The same scene rendered by the CPU reference in double precision (the ground
@@ -166,7 +172,13 @@ Commands:
   series      Lists the DICOM series of a folder (number, modality, description, slices,
               size, UID), as --series takes them.
 
-SCENE (default: --scene box):
+)";
+}
+
+// The scene options.
+std::string UsageScene()
+{
+  return R"(SCENE (default: --scene box):
   --scene NAME            a standard scene (see `deepshadow scenes`)
   --scale S               voxels per axis of the scene times S (0.01-2, default 1)
   --objects N             sparse: its first N objects (1-24; default its 19; above 19,
@@ -207,7 +219,13 @@ SCENE (default: --scene box):
                           view ray, to be composited at their depths inside the first (0 to 8,
                           default 8; 0: VTK's order, the second volume over the first)
 
-VIEW:
+)";
+}
+
+// The view and rendering options (the technique and look options from their tables).
+std::string UsageViewAndRendering()
+{
+  return R"(VIEW:
   --size WxH              image size (default 512x512)
   --light-dir X,Y,Z       a directional light from that direction (world; towards the light)
   --light-pos X,Y,Z       a positional (point) light at that world position
@@ -227,7 +245,13 @@ RENDERING:
   --no-empty-space-skipping
   --backend osmesa|egl    headless OpenGL backend (default: VTK_DEEPSHADOW_BACKEND or osmesa)
 
-OUTPUT:
+)";
+}
+
+// The output options and the exit codes.
+std::string UsageOutput()
+{
+  return R"(OUTPUT:
   --out FILE|DIR          PNG to write (render, reference) or directory (all)
   --json FILE             statistics as JSON: technique, width, height, frames, build_ms,
                           render_ms (median over frames after a warm-up, GL finished),
@@ -244,6 +268,12 @@ OUTPUT:
 
 Exit codes: 0 success, 2 bad arguments or input (one line on stderr), 1 other failures.
 )";
+}
+}
+
+std::string Options::Usage()
+{
+  return UsageSynopsis() + UsageCommands() + UsageScene() + UsageViewAndRendering() + UsageOutput();
 }
 
 

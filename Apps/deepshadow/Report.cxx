@@ -278,15 +278,10 @@ void WriteBudgetMatrix(std::ostream& md, const std::vector<Row>& rows,
   md << "\n";
 }
 
-void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
-  const std::vector<std::string>& scenes, const std::map<std::string, GroundTruth>& truths,
-  const Options& options, const std::string& renderer, const std::string& command, double minutes)
+// The README's opening: how it was made, and what each column means.
+void WriteMarkdownIntro(std::ostream& md, const Options& options, const std::string& renderer,
+  const std::string& command, double minutes)
 {
-  std::ofstream md(path);
-  if (!md)
-  {
-    throw UsageError("cannot write " + path);
-  }
   const bool timed = options.Frames > 0;
   md << "# vtkDeepShadow: error against run time\n\n"
      << "Written by `" << command << "` in " << Number(minutes, "%.1f") << " minutes on "
@@ -313,7 +308,12 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
         "each volume's shadows to the other.\n"
      << "- *Pareto*: no other row is both at least as fast and at least as accurate (C: "
         "camera moves, L: light moves). `results.csv` has every figure.\n\n";
+}
 
+// The guard's section: every translucent technique at its defaults that is less accurate
+// than no shadows at all, or "None here".
+void WriteGuardSection(std::ostream& md, const std::vector<Row>& rows)
+{
   std::vector<const Row*> defects;
   for (const Row& r : rows)
   {
@@ -340,8 +340,14 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     }
     md << "\n";
   }
+}
 
-  for (const std::string& scene : timed ? scenes : std::vector<std::string>())
+// "Which technique for which budget": the matrices over all scenes, then each scene's Pareto
+// fronts. Only for timed runs (the caller's choice): without frame times there is no budget.
+void WriteBudgetSection(std::ostream& md, const std::vector<Row>& rows,
+  const std::vector<std::string>& scenes)
+{
+  for (const std::string& scene : scenes)
   {
     if (scene == scenes.front())
     {
@@ -366,177 +372,284 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     md << "The light moves every frame:\n\n";
     WriteBudgets(md, sceneRows, false);
   }
+}
 
-  for (const std::string& scene : scenes)
+// A scene's heading, its chart (timed runs only) and the table of its rows' figures.
+void WriteSceneTable(
+  std::ostream& md, const std::vector<Row>& rows, const std::string& scene, bool timed)
+{
+  md << "## " << scene << "\n\n" << (timed ? "![error against time](" + scene + "/error-vs-time.png)\n\n" : "")
+     << "| technique | parameters | build ms | frame ms | frame / unshadowed | light moves | "
+        "MiB | RMSE | max | shadow RMSE | shadow max | Pareto |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
   {
-    md << "## " << scene << "\n\n" << (timed ? "![error against time](" + scene + "/error-vs-time.png)\n\n" : "")
-       << "| technique | parameters | build ms | frame ms | frame / unshadowed | light moves | "
-          "MiB | RMSE | max | shadow RMSE | shadow max | Pareto |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const Row& r : rows)
+    if (r.Scene != scene)
     {
-      if (r.Scene != scene)
-      {
-        continue;
-      }
-      md << "| " << r.Technique << (r.WorseThanNone ? " **(worse than none)**" : "") << " | " << r.Parameters << " | "
-         << (r.M.BuildMs > 0.0 ? Number(r.M.BuildMs, "%.1f") : "-") << " | "
-         << Number(r.M.CameraMs, "%.1f") << " | " << Number(r.M.CameraMs / r.Baseline, "%.2f")
-         << " | " << Number(r.M.LightMs / r.Baseline, "%.2f") << " | "
-         << Number(static_cast<double>(r.M.ShadowBytes) / (1024.0 * 1024.0), "%.1f") << " | "
-         << Number(r.Error.RMSE, "%.5f") << " | " << Number(r.Error.MaxAbs, "%.3f") << " | "
-         << Number(r.ShadowError.RMSE, "%.5f") << " | " << Number(r.ShadowError.MaxAbs, "%.3f")
-         << " | " << (r.ParetoCamera ? "C" : "") << (r.ParetoLight ? "L" : "") << " |\n";
+      continue;
     }
-    md << "\nPictures at the error size: technique | ground truth | difference x10.\n\n"
-       << "| technique | image | ground truth | difference x10 |\n|---|---|---|---|\n";
-    for (const Row& r : rows)
-    {
-      if (r.Scene != scene)
-      {
-        continue;
-      }
-      const std::string truth = r.Colored ? "truth-color.png" : "truth.png";
-      md << "| `" << r.Spec << "` | <img src=\"" << scene << "/" << r.Slug
-         << ".png\" width=\"160\"> | <img src=\"" << scene << "/" << truth
-         << "\" width=\"160\"> | <img src=\"" << scene << "/" << r.Slug
-         << "-diff.png\" width=\"160\"> |\n";
-    }
-    const auto truth = truths.find(scene);
-    md << "\nGround truth " << Number(truth != truths.end() ? truth->second.Milliseconds : 0.0, "%.0f")
-       << " ms on the CPU; its shadow term: <img src=\"" << scene << "/truth-shadow.png\" width=\"160\">\n\n";
+    md << "| " << r.Technique << (r.WorseThanNone ? " **(worse than none)**" : "") << " | " << r.Parameters << " | "
+       << (r.M.BuildMs > 0.0 ? Number(r.M.BuildMs, "%.1f") : "-") << " | "
+       << Number(r.M.CameraMs, "%.1f") << " | " << Number(r.M.CameraMs / r.Baseline, "%.2f")
+       << " | " << Number(r.M.LightMs / r.Baseline, "%.2f") << " | "
+       << Number(static_cast<double>(r.M.ShadowBytes) / (1024.0 * 1024.0), "%.1f") << " | "
+       << Number(r.Error.RMSE, "%.5f") << " | " << Number(r.Error.MaxAbs, "%.3f") << " | "
+       << Number(r.ShadowError.RMSE, "%.5f") << " | " << Number(r.ShadowError.MaxAbs, "%.3f")
+       << " | " << (r.ParetoCamera ? "C" : "") << (r.ParetoLight ? "L" : "") << " |\n";
   }
 }
+
+// A scene's pictures side by side (each row's image, its ground truth and their difference),
+// then the ground truth's CPU time and its shadow term.
+void WriteScenePictures(std::ostream& md, const std::vector<Row>& rows, const std::string& scene,
+  const std::map<std::string, GroundTruth>& truths)
+{
+  md << "\nPictures at the error size: technique | ground truth | difference x10.\n\n"
+     << "| technique | image | ground truth | difference x10 |\n|---|---|---|---|\n";
+  for (const Row& r : rows)
+  {
+    if (r.Scene != scene)
+    {
+      continue;
+    }
+    const std::string truth = r.Colored ? "truth-color.png" : "truth.png";
+    md << "| `" << r.Spec << "` | <img src=\"" << scene << "/" << r.Slug
+       << ".png\" width=\"160\"> | <img src=\"" << scene << "/" << truth
+       << "\" width=\"160\"> | <img src=\"" << scene << "/" << r.Slug
+       << "-diff.png\" width=\"160\"> |\n";
+  }
+  const auto truth = truths.find(scene);
+  md << "\nGround truth " << Number(truth != truths.end() ? truth->second.Milliseconds : 0.0, "%.0f")
+     << " ms on the CPU; its shadow term: <img src=\"" << scene << "/truth-shadow.png\" width=\"160\">\n\n";
 }
 
-int RunReport(const Options& options)
+void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
+  const std::vector<std::string>& scenes, const std::map<std::string, GroundTruth>& truths,
+  const Options& options, const std::string& renderer, const std::string& command, double minutes)
 {
-  const auto start = std::chrono::steady_clock::now();
+  std::ofstream md(path);
+  if (!md)
+  {
+    throw UsageError("cannot write " + path);
+  }
+  const bool timed = options.Frames > 0;
+  WriteMarkdownIntro(md, options, renderer, command, minutes);
+  WriteGuardSection(md, rows);
+  if (timed)
+  {
+    WriteBudgetSection(md, rows, scenes);
+  }
+  for (const std::string& scene : scenes)
+  {
+    WriteSceneTable(md, rows, scene, timed);
+    WriteScenePictures(md, rows, scene, truths);
+  }
+}
+
+// Progress lines on stderr: the step count and the seconds since the report started.
+class Progress
+{
+public:
+  Progress(std::chrono::steady_clock::time_point start, size_t steps)
+    : Start(start)
+    , Steps(steps)
+  {
+  }
+
+  double Elapsed() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count();
+  }
+
+  void Step(const std::string& scene, const std::string& what)
+  {
+    std::fprintf(stderr, "report: [%3zu/%zu] %6.0f s  %-8s %s\n", ++this->Done, this->Steps,
+      this->Elapsed(), scene.c_str(), what.c_str());
+    std::fflush(stderr);
+  }
+
+private:
+  std::chrono::steady_clock::time_point Start;
+  size_t Steps;
+  size_t Done = 0;
+};
+
+// What the sweep gathers over all scenes, for the CSV and the README.
+struct Results
+{
+  std::vector<Row> Rows;
+  std::map<std::string, GroundTruth> Truths;
+  std::string Renderer; // the first scene's
+};
+
+// --scenes, or every standard scene; each name checked before any work.
+std::vector<std::string> ReportScenes(const Options& options)
+{
   const std::vector<std::string> scenes =
     options.BenchScenes.empty() ? vtkDeepShadowStandardScene::GetSceneNames() : options.BenchScenes;
   for (const std::string& scene : scenes)
   {
     RequireSceneName(scene); // hybrid and bounded scenes too
   }
+  return scenes;
+}
+
+// The scene's unshadowed row: the baseline every other row's frame times are divided by.
+Row MeasureUnshadowed(SceneBench& bench, const std::string& scene)
+{
+  Row none;
+  none.Scene = scene;
+  none.Spec = none.Technique = "none";
+  none.Parameters = "-";
+  none.M = bench.Measure(nullptr, true);
+  none.Baseline = none.M.CameraMs;
+  none.Slug = "none";
+  return none;
+}
+
+// One technique spec measured on the scene (and on its second volume, if it has one).
+Row MeasureSpec(
+  SceneBench& bench, const std::string& scene, const std::string& spec, double baseline)
+{
+  Row row;
+  row.Scene = scene;
+  row.Spec = spec;
+  const size_t colon = spec.find(':');
+  row.Technique = spec.substr(0, colon);
+  row.Parameters = colon == std::string::npos ? "defaults" : spec.substr(colon + 1);
+  std::replace(row.Parameters.begin(), row.Parameters.end(), ':', ' ');
+  auto technique = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec));
+  auto second = bench.Setup().SecondMapper ? MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec))
+                                           : nullptr; // a second volume's
+  row.Colored = technique && technique->GetParameters().IsColored();
+  row.M = bench.Measure(technique, true, second);
+  row.Baseline = baseline;
+  row.Slug = Slug(spec);
+  return row;
+}
+
+// One row's errors against `truth`, the guard, and its pictures written to `directory`.
+void ScoreRow(Row& r, const GroundTruth& truth, double unshadowedError, const std::string& scene,
+  const std::string& directory)
+{
+  r.Error = Compare(r.M.Picture, truth.Picture);
+  r.UnshadowedError = unshadowedError;
+  r.WorseThanNone = GuardedByNone(r.Technique, r.Parameters) && r.Error.RMSE > r.UnshadowedError;
+  if (r.WorseThanNone)
+  {
+    std::fprintf(stderr, "report: DEFECT: %s on %s is less accurate than no shadows (RMSE %.5f > %.5f)\n",
+      r.Spec.c_str(), scene.c_str(), r.Error.RMSE, r.UnshadowedError);
+  }
+  r.ShadowError = Compare(r.M.ShadowTerm, truth.ShadowTerm);
+  WritePNG(ToImageData(r.M.Picture), directory + "/" + r.Slug + ".png");
+  WritePNG(ToImageData(AbsoluteDifference(r.M.Picture, truth.Picture, 10.0)),
+    directory + "/" + r.Slug + "-diff.png");
+  r.M.Picture = Image(); // the pictures are on disk; keep the memory of a long sweep flat
+  r.M.ShadowTerm = Image();
+}
+
+// Errors against the ground truth of the same kind (grey or coloured), and the pictures, of
+// the scene's rows (`rows` from `first` on, the unshadowed one first); the unshadowed
+// picture's against both, for the guard. The coloured ground truth only if a row needs it.
+void ScoreScene(SceneBench& bench, const GroundTruth& grey, const std::string& scene,
+  const std::string& directory, std::vector<Row>& rows, size_t first)
+{
+  bool anyColored = false;
+  for (size_t i = first; i < rows.size(); ++i)
+  {
+    anyColored = anyColored || rows[i].Colored;
+  }
+  const double unshadowedGrey = Compare(rows[first].M.Picture, grey.Picture).RMSE;
+  const double unshadowedColored = anyColored ? Compare(rows[first].M.Picture, bench.Truth(true).Picture).RMSE : 0.0;
+  for (size_t i = first; i < rows.size(); ++i)
+  {
+    Row& r = rows[i];
+    const double unshadowed = r.Colored ? unshadowedColored : unshadowedGrey;
+    ScoreRow(r, bench.Truth(r.Colored), unshadowed, scene, directory);
+  }
+  if (anyColored)
+  {
+    WritePNG(ToImageData(bench.Truth(true).Picture), directory + "/truth-color.png");
+  }
+}
+
+// One scene: its ground truth, every spec measured and scored, its pictures and its chart
+// written to DIR/<scene>; its rows appended to `results`.
+void RunScene(const Options& options, const std::string& scene,
+  const std::vector<std::string>& specs, Progress& progress, Results& results)
+{
+  std::vector<Row>& rows = results.Rows;
+  const std::string directory = options.OutDir + "/" + scene;
+  MakeDirectory(directory);
+  progress.Step(scene, "unshadowed, and the ground truth on the CPU");
+  SceneBench bench(options, scene);
+  if (results.Renderer.empty())
+  {
+    results.Renderer = RendererString(bench.Setup().Window);
+  }
+  const size_t first = rows.size();
+  const GroundTruth& grey = bench.Truth(false);
+  WritePNG(ToImageData(grey.Picture), directory + "/truth.png");
+  WritePNG(ToImageData(grey.ShadowTerm), directory + "/truth-shadow.png");
+  results.Truths[scene] = grey;
+
+  rows.push_back(MeasureUnshadowed(bench, scene));
+  const double baseline = rows.back().M.CameraMs;
+  for (const std::string& spec : specs)
+  {
+    progress.Step(scene, spec);
+    rows.push_back(MeasureSpec(bench, scene, spec, baseline));
+  }
+
+  ScoreScene(bench, grey, scene, directory, rows, first);
+  std::vector<Row*> sceneRows;
+  for (size_t i = first; i < rows.size(); ++i)
+  {
+    sceneRows.push_back(&rows[i]);
+  }
+  if (options.Frames > 0)
+  {
+    ChartScene(directory, scene, sceneRows);
+  }
+}
+
+// The command line as the README quotes it.
+std::string CommandLine(const Options& options)
+{
+  std::string command = "deepshadow report";
+  for (const std::string& arg : options.Arguments)
+  {
+    command += " " + arg;
+  }
+  return command;
+}
+}
+
+int RunReport(const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<std::string> scenes = ReportScenes(options);
   std::vector<std::string> specs = options.BenchTechniques;
   if (specs.empty())
   {
     specs = Sweep(options.Quick);
   }
   MakeDirectory(options.OutDir);
-  auto elapsed = [&]() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  const size_t steps = scenes.size() * (specs.size() + 1);
-  size_t step = 0;
-  auto progress = [&](const std::string& scene, const std::string& what) {
-    std::fprintf(stderr, "report: [%3zu/%zu] %6.0f s  %-8s %s\n", ++step, steps, elapsed(),
-      scene.c_str(), what.c_str());
-    std::fflush(stderr);
-  };
+  Progress progress(start, scenes.size() * (specs.size() + 1));
 
-  std::vector<Row> rows;
-  std::map<std::string, GroundTruth> truths;
-  std::string renderer;
+  Results results;
   for (const std::string& scene : scenes)
   {
-    const std::string directory = options.OutDir + "/" + scene;
-    MakeDirectory(directory);
-    progress(scene, "unshadowed, and the ground truth on the CPU");
-    SceneBench bench(options, scene);
-    if (renderer.empty())
-    {
-      renderer = RendererString(bench.Setup().Window);
-    }
-    const size_t first = rows.size();
-    const GroundTruth& grey = bench.Truth(false);
-    WritePNG(ToImageData(grey.Picture), directory + "/truth.png");
-    WritePNG(ToImageData(grey.ShadowTerm), directory + "/truth-shadow.png");
-    truths[scene] = grey;
-
-    Row none;
-    none.Scene = scene;
-    none.Spec = none.Technique = "none";
-    none.Parameters = "-";
-    none.M = bench.Measure(nullptr, true);
-    none.Baseline = none.M.CameraMs;
-    none.Slug = "none";
-    rows.push_back(none);
-    const double baseline = none.M.CameraMs;
-
-    for (const std::string& spec : specs)
-    {
-      progress(scene, spec);
-      Row row;
-      row.Scene = scene;
-      row.Spec = spec;
-      const size_t colon = spec.find(':');
-      row.Technique = spec.substr(0, colon);
-      row.Parameters = colon == std::string::npos ? "defaults" : spec.substr(colon + 1);
-      std::replace(row.Parameters.begin(), row.Parameters.end(), ':', ' ');
-      auto technique = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec));
-      auto second = bench.Setup().SecondMapper ? MakeTechnique(WithTechniqueSpec(bench.GetOptions(), spec))
-                                               : nullptr; // a second volume's
-      row.Colored = technique && technique->GetParameters().IsColored();
-      row.M = bench.Measure(technique, true, second);
-      row.Baseline = baseline;
-      row.Slug = Slug(spec);
-      rows.push_back(row);
-    }
-
-    // Errors against the ground truth of the same kind (grey or coloured), and the pictures;
-    // the unshadowed picture's against both, for the guard.
-    bool anyColored = false;
-    for (size_t i = first; i < rows.size(); ++i)
-    {
-      anyColored = anyColored || rows[i].Colored;
-    }
-    const double unshadowedGrey = Compare(rows[first].M.Picture, grey.Picture).RMSE;
-    const double unshadowedColored = anyColored ? Compare(rows[first].M.Picture, bench.Truth(true).Picture).RMSE : 0.0;
-    for (size_t i = first; i < rows.size(); ++i)
-    {
-      Row& r = rows[i];
-      const GroundTruth& truth = bench.Truth(r.Colored);
-      r.Error = Compare(r.M.Picture, truth.Picture);
-      r.UnshadowedError = r.Colored ? unshadowedColored : unshadowedGrey;
-      r.WorseThanNone = GuardedByNone(r.Technique, r.Parameters) && r.Error.RMSE > r.UnshadowedError;
-      if (r.WorseThanNone)
-      {
-        std::fprintf(stderr, "report: DEFECT: %s on %s is less accurate than no shadows (RMSE %.5f > %.5f)\n",
-          r.Spec.c_str(), scene.c_str(), r.Error.RMSE, r.UnshadowedError);
-      }
-      r.ShadowError = Compare(r.M.ShadowTerm, truth.ShadowTerm);
-      WritePNG(ToImageData(r.M.Picture), directory + "/" + r.Slug + ".png");
-      WritePNG(ToImageData(AbsoluteDifference(r.M.Picture, truth.Picture, 10.0)),
-        directory + "/" + r.Slug + "-diff.png");
-      r.M.Picture = Image(); // the pictures are on disk; keep the memory of a long sweep flat
-      r.M.ShadowTerm = Image();
-    }
-    if (anyColored)
-    {
-      WritePNG(ToImageData(bench.Truth(true).Picture), directory + "/truth-color.png");
-    }
-    std::vector<Row*> sceneRows;
-    for (size_t i = first; i < rows.size(); ++i)
-    {
-      sceneRows.push_back(&rows[i]);
-    }
-    if (options.Frames > 0)
-    {
-      ChartScene(directory, scene, sceneRows);
-    }
+    RunScene(options, scene, specs, progress, results);
   }
 
+  const std::vector<Row>& rows = results.Rows;
   WriteCsv(options.OutDir + "/results.csv", rows, options);
-  std::string command = "deepshadow report";
-  for (const std::string& arg : options.Arguments)
-  {
-    command += " " + arg;
-  }
-  WriteMarkdown(options.OutDir + "/README.md", rows, scenes, truths, options, renderer, command,
-    elapsed() / 60.0);
-  std::fprintf(stderr, "report: %zu rows in %.0f s: %s/README.md, results.csv%s\n", rows.size(), elapsed(),
-    options.OutDir.c_str(), options.Frames > 0 ? ", <scene>/error-vs-time.png" : " (errors only)");
+  WriteMarkdown(options.OutDir + "/README.md", rows, scenes, results.Truths, options,
+    results.Renderer, CommandLine(options), progress.Elapsed() / 60.0);
+  std::fprintf(stderr, "report: %zu rows in %.0f s: %s/README.md, results.csv%s\n", rows.size(),
+    progress.Elapsed(), options.OutDir.c_str(),
+    options.Frames > 0 ? ", <scene>/error-vs-time.png" : " (errors only)");
   return 0;
 }
 

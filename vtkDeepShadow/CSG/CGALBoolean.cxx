@@ -224,10 +224,11 @@ void ExactMesh::ToPolyData(vtkPolyData* output) const
   output->SetPolys(polys);
 }
 
-bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& report, std::string& problem)
+namespace
 {
-  report = ConversionReport();
-  result = ExactMesh();
+// Polygons to combine, with finite points: what reaches CGAL at all (nor vtkTriangleFilter).
+bool CheckPolygonsAndPoints(vtkPolyData* input, ConversionReport& report, std::string& problem)
+{
   if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
     problem = "is empty";
@@ -240,7 +241,6 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
       Plural(static_cast<std::size_t>(report.IgnoredCells), "vertex or line cell", "vertex or line cells");
     return false;
   }
-  // Non-finite coordinates never reach CGAL (nor vtkTriangleFilter).
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
@@ -255,17 +255,16 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
       return false;
     }
   }
+  return true;
+}
 
-  // Triangles over exactly merged points; faces with a repeated vertex are dropped.
-  std::vector<std::array<vtkIdType, 3>> cells;
-  if (!SurfaceTriangles(input, cells, problem))
-  {
-    return false;
-  }
+// Triangles over exactly merged points (-0.0 is 0.0); faces with a repeated vertex are
+// dropped and counted. False with `problem` when none is left.
+bool MergedTriangleSoup(vtkPolyData* input, const std::vector<std::array<vtkIdType, 3>>& cells,
+  std::vector<Point>& points, std::vector<Triangle>& soup, ConversionReport& report, std::string& problem)
+{
   std::unordered_map<Coordinates, std::size_t, CoordinatesHash> merged;
-  std::vector<std::size_t> soupIndex(static_cast<std::size_t>(numberOfPoints), SIZE_MAX);
-  std::vector<Point> points;
-  std::vector<Triangle> soup;
+  std::vector<std::size_t> soupIndex(static_cast<std::size_t>(input->GetNumberOfPoints()), SIZE_MAX);
   soup.reserve(cells.size());
   vtkIdType referenced = 0;
   for (const auto& pts : cells)
@@ -306,8 +305,12 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
       : "is empty";
     return false;
   }
+  return true;
+}
 
-  // An edge shared by more than two triangles cannot be part of a solid's surface.
+// An edge shared by more than two triangles cannot be part of a solid's surface.
+bool CheckEdgesManifold(const std::vector<Triangle>& soup, std::string& problem)
+{
   std::unordered_map<std::uint64_t, int> edgeUses;
   edgeUses.reserve(soup.size() * 2);
   for (const Triangle& t : soup)
@@ -329,9 +332,13 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
       Plural(nonManifoldEdges, "edge is", "edges are") + " shared by more than two faces";
     return false;
   }
+  return true;
+}
 
-  // Polygon soup -> mesh. orient_polygon_soup duplicates the points where separate sheets meet
-  // (or where no consistent orientation exists); such a surface bounds no volume.
+// Polygon soup -> closed mesh. orient_polygon_soup duplicates the points where separate sheets
+// meet (or where no consistent orientation exists); such a surface bounds no volume.
+bool SoupToClosedMesh(std::vector<Point>& points, std::vector<Triangle>& soup, Mesh& mesh, std::string& problem)
+{
   const std::size_t pointsBefore = points.size();
   if (!PMP::orient_polygon_soup(points, soup))
   {
@@ -345,29 +352,44 @@ bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& r
     problem = "is not a manifold surface";
     return false;
   }
-  Mesh& mesh = result.Get().M;
   PMP::polygon_soup_to_polygon_mesh(points, soup, mesh);
-  if (!CheckClosed(mesh, problem))
-  {
-    return false;
-  }
+  return CheckClosed(mesh, problem);
+}
 
-  // Zero-area faces with three distinct vertices (caps and needles): collapsed or flipped away.
+// Zero-area faces with three distinct vertices (caps and needles): collapsed or flipped away.
+bool RemoveZeroAreaFaces(Mesh& mesh, ConversionReport& report, std::string& problem)
+{
   std::vector<Mesh::Face_index> degenerate;
   PMP::degenerate_faces(mesh, std::back_inserter(degenerate));
-  if (!degenerate.empty())
+  if (degenerate.empty())
   {
-    const bool removed = PMP::remove_degenerate_faces(mesh);
-    mesh.collect_garbage();
-    report.RemovedDegenerateFaces += static_cast<vtkIdType>(degenerate.size());
-    if (!removed)
-    {
-      problem = "has " + Plural(degenerate.size(), "zero-area face", "zero-area faces") +
-        " that could not be removed";
-      return false;
-    }
+    return true;
   }
-  return ValidateSolid(result, report.Reoriented, problem);
+  const bool removed = PMP::remove_degenerate_faces(mesh);
+  mesh.collect_garbage();
+  report.RemovedDegenerateFaces += static_cast<vtkIdType>(degenerate.size());
+  if (!removed)
+  {
+    problem = "has " + Plural(degenerate.size(), "zero-area face", "zero-area faces") +
+      " that could not be removed";
+    return false;
+  }
+  return true;
+}
+}
+
+bool MeshFromPolyData(vtkPolyData* input, ExactMesh& result, ConversionReport& report, std::string& problem)
+{
+  report = ConversionReport();
+  result = ExactMesh();
+  std::vector<std::array<vtkIdType, 3>> cells;
+  std::vector<Point> points;
+  std::vector<Triangle> soup;
+  Mesh& mesh = result.Get().M;
+  return CheckPolygonsAndPoints(input, report, problem) && SurfaceTriangles(input, cells, problem) &&
+    MergedTriangleSoup(input, cells, points, soup, report, problem) && CheckEdgesManifold(soup, problem) &&
+    SoupToClosedMesh(points, soup, mesh, problem) && RemoveZeroAreaFaces(mesh, report, problem) &&
+    ValidateSolid(result, report.Reoriented, problem);
 }
 
 namespace

@@ -260,6 +260,12 @@ public:
     bool termOnly, bool wantTerm, std::vector<std::optional<glm::dvec3>>& factors, glm::dvec3& term);
 
   /**
+   * Where a view ray marches a volume: from its entry (or the ray's start) to its exit or
+   * `tLimit`; false if it misses the box.
+   */
+  static bool MarchInterval(const Ray& ray, const VolumeGrid& grid, double tLimit, double& t0, double& t1);
+
+  /**
    * Lit colour of a mesh point, as vtkDeepShadowPolyDataMapper's shader computes it.
    * `shadows`: the first shadowing volume's lookups, per light, or null; `others`: what the
    * other volumes cast onto this mesh, per light, or null. `term`: also the point's shadow

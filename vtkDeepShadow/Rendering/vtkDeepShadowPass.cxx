@@ -26,6 +26,52 @@
 
 vtkStandardNewMacro(vtkDeepShadowPass);
 
+namespace
+{
+using VolumeEntries = std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>;
+using MeshEntries = std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>;
+
+// The visible props this pass drives: volumes and meshes drawn by our mappers.
+void CollectProps(const vtkRenderState* state, VolumeEntries& volumes, MeshEntries& meshes)
+{
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      if (auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(volume->GetMapper()))
+      {
+        volumes.emplace_back(volume, mapper);
+      }
+    }
+    else if (auto* actor = vtkActor::SafeDownCast(prop))
+    {
+      if (auto* mapper = vtkDeepShadowPolyDataMapper::SafeDownCast(actor->GetMapper()))
+      {
+        meshes.emplace_back(actor, mapper);
+      }
+    }
+  }
+}
+
+// Hands every mapper the frame (null: takes it back).
+void HandFrame(const VolumeEntries& volumes, const MeshEntries& meshes, deepshadow::PassFrame* frame)
+{
+  for (const auto& entry : volumes)
+  {
+    entry.second->SetPassFrame(frame);
+  }
+  for (const auto& entry : meshes)
+  {
+    entry.second->SetPassFrame(frame);
+  }
+}
+}
+
 class vtkDeepShadowPass::Internals
 {
 public:
@@ -78,37 +124,16 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   this->UpdateCamera(renderer);
   this->UpdateLightGeometry(renderer);
   this->UpdateLights(renderer);
-  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> volumes;
-  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> meshes;
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = state->GetPropArray()[i];
-    if (!prop->GetVisibility())
-    {
-      continue;
-    }
-    if (auto* volume = vtkVolume::SafeDownCast(prop))
-    {
-      if (auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(volume->GetMapper()))
-      {
-        volumes.emplace_back(volume, mapper);
-      }
-    }
-    else if (auto* actor = vtkActor::SafeDownCast(prop))
-    {
-      if (auto* mapper = vtkDeepShadowPolyDataMapper::SafeDownCast(actor->GetMapper()))
-      {
-        meshes.emplace_back(actor, mapper);
-      }
-    }
-  }
+  VolumeEntries volumes;
+  MeshEntries meshes;
+  CollectProps(state, volumes, meshes);
 
   this->UpdateCastingSurfaces(meshes);
 
   // Every volume with a technique casts shadows onto the others and onto the meshes. The
   // first one is the meshes' shadow source and holds the casting meshes (so that they count
   // once); the others reach each receiver through a grid (deepshadow::OtherVolumeShadows).
-  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> shadowing;
+  VolumeEntries shadowing;
   for (const auto& entry : volumes)
   {
     if (entry.second->GetShadowTechnique())
@@ -121,14 +146,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   impl.Frame = deepshadow::PassFrame();
   impl.Frame.Surfaces = impl.Surfaces;
   impl.Frame.SurfaceHolder = shadowing.empty() ? nullptr : shadowing.front().second;
-  for (const auto& entry : volumes)
-  {
-    entry.second->SetPassFrame(&impl.Frame);
-  }
-  for (const auto& entry : meshes)
-  {
-    entry.second->SetPassFrame(&impl.Frame);
-  }
+  HandFrame(volumes, meshes, &impl.Frame);
   std::vector<deepshadow::VolumeCaster> casters(shadowing.size());
   if (!meshes.empty() || shadowing.size() > 1)
   {
@@ -145,7 +163,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   // Translucent meshes go into layers, and the volumes after the first into segments, when
   // the first volume will merge them into its march.
   const bool glWindow = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) != nullptr;
-  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> peeled;
+  MeshEntries peeled;
   if (this->TranslucentLayers > 0 && !volumes.empty() && glWindow)
   {
     for (const auto& entry : meshes)
@@ -156,7 +174,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
       }
     }
   }
-  std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>> guests;
+  VolumeEntries guests;
   if (this->VolumeSegments > 0 && glWindow && volumes.size() > 1)
   {
     guests.assign(volumes.begin() + 1, volumes.end());
@@ -180,14 +198,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   this->TranslucentLayerBytes = impl.Layers.GetBytes();
 
   // The frame ends: the mappers let go of it, and it lets go of the contexts.
-  for (const auto& entry : volumes)
-  {
-    entry.second->SetPassFrame(nullptr);
-  }
-  for (const auto& entry : meshes)
-  {
-    entry.second->SetPassFrame(nullptr);
-  }
+  HandFrame(volumes, meshes, nullptr);
   impl.Frame = deepshadow::PassFrame();
 }
 

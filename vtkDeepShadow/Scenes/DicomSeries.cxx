@@ -267,6 +267,272 @@ bool MultiFrameGeometry(const SeriesInfo& series, Geometry& geometry, std::strin
   geometry.Files = series.Files;
   return true;
 }
+
+// What the slices' headers say of their pixels: the image size, which every slice must share,
+// and the widest stored value (bits, signedness) of any slice, which the scalar type must hold.
+struct PixelLayout
+{
+  int Rows = 0, Columns = 0, Bits = 0, Signed = 0;
+};
+
+// The volume's directions: the slices' row and column, the normal of their planes, and the
+// step from one slice to the next (along the normal unless the slices are sheared).
+struct Axes
+{
+  Vector Row{}, Column{}, Normal{}, Step{};
+  double StepLength = 0.0;
+};
+
+// One file's header as a slice, and its pixel layout. False with `problem` for what cannot be
+// a slice of a volume: a mosaic, no position or orientation, several samples a pixel.
+bool ReadSlice(const gdcm::Scanner& scanner, const std::string& file, Slice& slice,
+  PixelLayout& layout, std::string& problem)
+{
+  const char* f = file.c_str();
+  if (Trimmed(scanner.GetValue(f, ImageTypeTag)).find("MOSAIC") != std::string::npos)
+  {
+    problem = Name(file) + ": a Siemens mosaic (a volume's slices tiled in one image); convert "
+      "the series with dcm2niix and read its NIfTI";
+    return false;
+  }
+  slice.File = file;
+  const std::vector<double> position = Numbers(scanner.GetValue(f, PositionTag));
+  const std::vector<double> orientation = Numbers(scanner.GetValue(f, OrientationTag));
+  const std::vector<double> spacing = Numbers(scanner.GetValue(f, PixelSpacingTag));
+  if (position.size() != 3 || orientation.size() != 6)
+  {
+    problem = Name(file) + ": no ImagePositionPatient and ImageOrientationPatient (it cannot be "
+      "placed in a volume)";
+    return false;
+  }
+  std::copy(position.begin(), position.end(), slice.Position.begin());
+  std::copy(orientation.begin(), orientation.end(), slice.Orientation.begin());
+  slice.RowSpacing = spacing.size() == 2 ? spacing[0] : 1.0;
+  slice.ColumnSpacing = spacing.size() == 2 ? spacing[1] : 1.0;
+  slice.Slope = Number(scanner.GetValue(f, SlopeTag), 1.0);
+  slice.Intercept = Number(scanner.GetValue(f, InterceptTag), 0.0);
+  const int samples = static_cast<int>(Number(scanner.GetValue(f, SamplesTag), 1));
+  if (samples != 1)
+  {
+    problem = Name(file) + ": " + std::to_string(samples) +
+      " samples a pixel (colour): a volume here holds one value a voxel";
+    return false;
+  }
+  layout.Rows = static_cast<int>(Number(scanner.GetValue(f, RowsTag), 0));
+  layout.Columns = static_cast<int>(Number(scanner.GetValue(f, ColumnsTag), 0));
+  layout.Bits = static_cast<int>(Number(scanner.GetValue(f, BitsStoredTag), 16));
+  layout.Signed = static_cast<int>(Number(scanner.GetValue(f, RepresentationTag), 0));
+  return true;
+}
+
+// Adds the layout of the slice `file` to the series' (`slices`: those read before it): the
+// first sets it; the others must share its size and may widen its values.
+bool AddLayout(const std::vector<Slice>& slices, const std::string& file,
+  const PixelLayout& own, PixelLayout& layout, std::string& problem)
+{
+  if (slices.empty())
+  {
+    layout = own;
+  }
+  else if (own.Rows != layout.Rows || own.Columns != layout.Columns)
+  {
+    problem = "the series mixes image sizes: " + Name(slices.front().File) + " is " +
+      std::to_string(layout.Columns) + "x" + std::to_string(layout.Rows) + ", " + Name(file) +
+      " " + std::to_string(own.Columns) + "x" + std::to_string(own.Rows);
+    return false;
+  }
+  else
+  {
+    layout.Bits = std::max(layout.Bits, own.Bits);
+    layout.Signed = std::max(layout.Signed, own.Signed);
+  }
+  return true;
+}
+
+// Every file's header as a slice, in the series' file order, with their common layout.
+bool ReadSlices(const SeriesInfo& series, std::vector<Slice>& slices, PixelLayout& layout,
+  std::string& problem)
+{
+  GdcmMessages quiet;
+  gdcm::Scanner scanner;
+  for (const gdcm::Tag& tag : { RowsTag, ColumnsTag, PositionTag, OrientationTag, PixelSpacingTag,
+         SamplesTag, BitsStoredTag, RepresentationTag, InterceptTag, SlopeTag, ImageTypeTag })
+  {
+    scanner.AddTag(tag);
+  }
+  scanner.Scan(series.Files);
+  for (const std::string& file : series.Files)
+  {
+    Slice slice;
+    PixelLayout own;
+    if (!ReadSlice(scanner, file, slice, own, problem) ||
+      !AddLayout(slices, file, own, layout, problem))
+    {
+      return false;
+    }
+    slices.push_back(slice);
+  }
+  return true;
+}
+
+// One orientation and pixel spacing for all: each slice against the first in file order.
+bool CheckOneOrientationAndSpacing(const std::vector<Slice>& slices, std::string& problem)
+{
+  const Slice& first = slices.front();
+  for (const Slice& slice : slices)
+  {
+    for (size_t i = 0; i < 6; ++i)
+    {
+      if (std::abs(slice.Orientation[i] - first.Orientation[i]) > 1e-3)
+      {
+        problem = "the series mixes image orientations (" + Name(first.File) + " and " +
+          Name(slice.File) + "): not one volume";
+        return false;
+      }
+    }
+    if (std::abs(slice.RowSpacing - first.RowSpacing) > 1e-4 * first.RowSpacing ||
+      std::abs(slice.ColumnSpacing - first.ColumnSpacing) > 1e-4 * first.ColumnSpacing)
+    {
+      problem = "the series mixes pixel spacings (" + Name(first.File) + " and " +
+        Name(slice.File) + "): not one volume";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The row and column directions of `first`'s ImageOrientationPatient and their normal.
+bool PlaneAxes(const Slice& first, Axes& axes, std::string& problem)
+{
+  axes.Row = { first.Orientation[0], first.Orientation[1], first.Orientation[2] };
+  axes.Column = { first.Orientation[3], first.Orientation[4], first.Orientation[5] };
+  axes.Normal = Cross(axes.Row, axes.Column);
+  if (!Normalize(axes.Row) || !Normalize(axes.Column) || !Normalize(axes.Normal))
+  {
+    problem = Name(first.File) + ": its ImageOrientationPatient is not two directions";
+    return false;
+  }
+  return true;
+}
+
+// Orders the slices by their position along the normal of their planes.
+void SortAlongNormal(std::vector<Slice>& slices, const Vector& normal)
+{
+  for (Slice& slice : slices)
+  {
+    slice.Along = Dot(slice.Position, normal);
+  }
+  std::stable_sort(slices.begin(), slices.end(), [](const Slice& a, const Slice& b) { return a.Along < b.Along; });
+}
+
+// The sorted slices' gaps along the normal: none empty (two slices at one position are several
+// volumes), and all alike (else slices are missing, or the acquisition was uneven).
+bool CheckEvenGaps(const std::vector<Slice>& slices, std::string& problem)
+{
+  const size_t n = slices.size();
+  const double extent = slices.back().Along - slices.front().Along;
+  const double step = extent / static_cast<double>(n - 1);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  for (size_t k = 0; k + 1 < n; ++k)
+  {
+    const double gap = slices[k + 1].Along - slices[k].Along;
+    if (gap < 1e-3)
+    {
+      problem = "slices " + Name(slices[k].File) + " and " + Name(slices[k + 1].File) +
+        " lie at the same position: several volumes in one series (echoes, phases or times?)";
+      return false;
+    }
+    smallest = std::min(smallest, gap);
+    largest = std::max(largest, gap);
+  }
+  if (largest - smallest > 0.01 * step + 1e-3)
+  {
+    std::ostringstream text;
+    text << "its slices are unevenly spaced (gaps of " << smallest << " to " << largest
+         << " mm along the normal): not one volume; resample it, or give a series of even spacing";
+    problem = text.str();
+    return false;
+  }
+  return true;
+}
+
+// The third axis: from the first slice's position to the last's, a step a slice. Along the
+// normal, unless the slices are sheared (gantry tilt): then off it, each slice still at its
+// own position (the direction matrix is not orthogonal; nothing is resampled). False when a
+// slice is off that line.
+bool StepAxis(const std::vector<Slice>& slices, Axes& axes, std::string& problem)
+{
+  const size_t n = slices.size();
+  const Slice& origin = slices.front();
+  for (size_t a = 0; a < 3; ++a)
+  {
+    axes.Step[a] = (slices.back().Position[a] - origin.Position[a]) / static_cast<double>(n - 1);
+  }
+  axes.StepLength = std::sqrt(Dot(axes.Step, axes.Step));
+  for (size_t k = 0; k < n; ++k)
+  {
+    double off = 0.0;
+    for (size_t a = 0; a < 3; ++a)
+    {
+      const double expected = origin.Position[a] + static_cast<double>(k) * axes.Step[a];
+      off = std::max(off, std::abs(slices[k].Position[a] - expected));
+    }
+    if (off > 0.01 * axes.StepLength + 1e-3)
+    {
+      problem = "its slices do not lie on one line at even steps (" + Name(slices[k].File) +
+        " is " + std::to_string(off) + " mm off it): not one volume";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Says a gantry tilt in the geometry's warning: the reader reads the series, but the volume's
+// third axis is not the normal of its slices.
+void WarnOfShear(const Axes& axes, Geometry& geometry)
+{
+  const double shear =
+    std::acos(std::min(1.0, std::abs(Dot(axes.Step, axes.Normal)) / axes.StepLength)) * 180.0 / M_PI;
+  if (shear > 0.01)
+  {
+    std::ostringstream text;
+    text << "its slices are sheared by " << shear << " degrees off the normal of their planes "
+         << "(gantry tilt): each is placed at its own position, the volume's third axis "
+         << "following them (not resampled)";
+    geometry.Warning = text.str();
+  }
+}
+
+// Places the volume of the sorted, checked slices: origin, spacing and directions from the
+// first slice along the normal (its pixel spacing and rescale among them), files in slice
+// order. Float values when the slices are rescaled differently.
+void PlaceVolume(const std::vector<Slice>& slices, const PixelLayout& layout, const Axes& axes,
+  Geometry& geometry)
+{
+  const Slice& first = slices.front();
+  double slope = first.Slope, intercept = first.Intercept;
+  bool oneRescale = true;
+  for (const Slice& slice : slices)
+  {
+    geometry.Files.push_back(slice.File);
+    oneRescale = oneRescale && slice.Slope == slope && slice.Intercept == intercept;
+  }
+  geometry.Dimensions[0] = layout.Columns;
+  geometry.Dimensions[1] = layout.Rows;
+  geometry.Dimensions[2] = static_cast<int>(slices.size());
+  geometry.Spacing[0] = first.ColumnSpacing;
+  geometry.Spacing[1] = first.RowSpacing;
+  geometry.Spacing[2] = axes.StepLength;
+  for (size_t a = 0; a < 3; ++a)
+  {
+    geometry.Origin[a] = first.Position[a];
+    geometry.Direction[3 * a] = axes.Row[a];
+    geometry.Direction[3 * a + 1] = axes.Column[a];
+    geometry.Direction[3 * a + 2] = axes.Step[a] / axes.StepLength;
+  }
+  geometry.ScalarType =
+    oneRescale ? RescaledType(layout.Bits, layout.Signed != 0, slope, intercept) : VTK_FLOAT;
+}
 }
 
 std::vector<std::string> RegularFiles(const std::string& directory, std::string* problem)
@@ -456,184 +722,22 @@ bool ReadGeometry(const SeriesInfo& series, Geometry& geometry, std::string& pro
     problem = "the series is one slice; a volume needs at least 2";
     return false;
   }
-  GdcmMessages quiet;
-  gdcm::Scanner scanner;
-  for (const gdcm::Tag& tag : { RowsTag, ColumnsTag, PositionTag, OrientationTag, PixelSpacingTag,
-         SamplesTag, BitsStoredTag, RepresentationTag, InterceptTag, SlopeTag, ImageTypeTag })
-  {
-    scanner.AddTag(tag);
-  }
-  scanner.Scan(series.Files);
   std::vector<Slice> slices;
-  int bits = 0, isSigned = 0, rows = 0, columns = 0;
-  for (const std::string& file : series.Files)
+  PixelLayout layout;
+  Axes axes;
+  // The planes' directions come from the first slice in file order, before sorting.
+  if (!ReadSlices(series, slices, layout, problem) ||
+    !CheckOneOrientationAndSpacing(slices, problem) || !PlaneAxes(slices.front(), axes, problem))
   {
-    const char* f = file.c_str();
-    if (Trimmed(scanner.GetValue(f, ImageTypeTag)).find("MOSAIC") != std::string::npos)
-    {
-      problem = Name(file) + ": a Siemens mosaic (a volume's slices tiled in one image); convert "
-        "the series with dcm2niix and read its NIfTI";
-      return false;
-    }
-    Slice slice;
-    slice.File = file;
-    const std::vector<double> position = Numbers(scanner.GetValue(f, PositionTag));
-    const std::vector<double> orientation = Numbers(scanner.GetValue(f, OrientationTag));
-    const std::vector<double> spacing = Numbers(scanner.GetValue(f, PixelSpacingTag));
-    if (position.size() != 3 || orientation.size() != 6)
-    {
-      problem = Name(file) + ": no ImagePositionPatient and ImageOrientationPatient (it cannot be "
-        "placed in a volume)";
-      return false;
-    }
-    std::copy(position.begin(), position.end(), slice.Position.begin());
-    std::copy(orientation.begin(), orientation.end(), slice.Orientation.begin());
-    slice.RowSpacing = spacing.size() == 2 ? spacing[0] : 1.0;
-    slice.ColumnSpacing = spacing.size() == 2 ? spacing[1] : 1.0;
-    slice.Slope = Number(scanner.GetValue(f, SlopeTag), 1.0);
-    slice.Intercept = Number(scanner.GetValue(f, InterceptTag), 0.0);
-    const int samples = static_cast<int>(Number(scanner.GetValue(f, SamplesTag), 1));
-    if (samples != 1)
-    {
-      problem = Name(file) + ": " + std::to_string(samples) +
-        " samples a pixel (colour): a volume here holds one value a voxel";
-      return false;
-    }
-    const int r = static_cast<int>(Number(scanner.GetValue(f, RowsTag), 0));
-    const int c = static_cast<int>(Number(scanner.GetValue(f, ColumnsTag), 0));
-    const int b = static_cast<int>(Number(scanner.GetValue(f, BitsStoredTag), 16));
-    const int s = static_cast<int>(Number(scanner.GetValue(f, RepresentationTag), 0));
-    if (slices.empty())
-    {
-      rows = r, columns = c, bits = b, isSigned = s;
-    }
-    else if (r != rows || c != columns)
-    {
-      problem = "the series mixes image sizes: " + Name(slices.front().File) + " is " +
-        std::to_string(columns) + "x" + std::to_string(rows) + ", " + Name(file) + " " +
-        std::to_string(c) + "x" + std::to_string(r);
-      return false;
-    }
-    else
-    {
-      bits = std::max(bits, b);
-      isSigned = std::max(isSigned, s);
-    }
-    slices.push_back(slice);
-  }
-  // One orientation and pixel spacing for all.
-  const Slice& first = slices.front();
-  for (const Slice& slice : slices)
-  {
-    for (size_t i = 0; i < 6; ++i)
-    {
-      if (std::abs(slice.Orientation[i] - first.Orientation[i]) > 1e-3)
-      {
-        problem = "the series mixes image orientations (" + Name(first.File) + " and " +
-          Name(slice.File) + "): not one volume";
-        return false;
-      }
-    }
-    if (std::abs(slice.RowSpacing - first.RowSpacing) > 1e-4 * first.RowSpacing ||
-      std::abs(slice.ColumnSpacing - first.ColumnSpacing) > 1e-4 * first.ColumnSpacing)
-    {
-      problem = "the series mixes pixel spacings (" + Name(first.File) + " and " +
-        Name(slice.File) + "): not one volume";
-      return false;
-    }
-  }
-  Vector row{ first.Orientation[0], first.Orientation[1], first.Orientation[2] };
-  Vector column{ first.Orientation[3], first.Orientation[4], first.Orientation[5] };
-  Vector normal = Cross(row, column);
-  if (!Normalize(row) || !Normalize(column) || !Normalize(normal))
-  {
-    problem = Name(first.File) + ": its ImageOrientationPatient is not two directions";
     return false;
   }
-  for (Slice& slice : slices)
+  SortAlongNormal(slices, axes.Normal);
+  if (!CheckEvenGaps(slices, problem) || !StepAxis(slices, axes, problem))
   {
-    slice.Along = Dot(slice.Position, normal);
-  }
-  std::stable_sort(slices.begin(), slices.end(), [](const Slice& a, const Slice& b) { return a.Along < b.Along; });
-  const size_t n = slices.size();
-  const double extent = slices.back().Along - slices.front().Along;
-  const double step = extent / static_cast<double>(n - 1);
-  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
-  for (size_t k = 0; k + 1 < n; ++k)
-  {
-    const double gap = slices[k + 1].Along - slices[k].Along;
-    if (gap < 1e-3)
-    {
-      problem = "slices " + Name(slices[k].File) + " and " + Name(slices[k + 1].File) +
-        " lie at the same position: several volumes in one series (echoes, phases or times?)";
-      return false;
-    }
-    smallest = std::min(smallest, gap);
-    largest = std::max(largest, gap);
-  }
-  if (largest - smallest > 0.01 * step + 1e-3)
-  {
-    std::ostringstream text;
-    text << "its slices are unevenly spaced (gaps of " << smallest << " to " << largest
-         << " mm along the normal): not one volume; resample it, or give a series of even spacing";
-    problem = text.str();
     return false;
   }
-  // The third axis: from the first slice's position to the last's, a step a slice. Along the
-  // normal, unless the slices are sheared (gantry tilt): then off it, each slice still at its
-  // own position (the direction matrix is not orthogonal; nothing is resampled).
-  const Slice& origin = slices.front();
-  Vector axis;
-  for (size_t a = 0; a < 3; ++a)
-  {
-    axis[a] = (slices.back().Position[a] - origin.Position[a]) / static_cast<double>(n - 1);
-  }
-  const double stepLength = std::sqrt(Dot(axis, axis));
-  for (size_t k = 0; k < n; ++k)
-  {
-    double off = 0.0;
-    for (size_t a = 0; a < 3; ++a)
-    {
-      const double expected = origin.Position[a] + static_cast<double>(k) * axis[a];
-      off = std::max(off, std::abs(slices[k].Position[a] - expected));
-    }
-    if (off > 0.01 * stepLength + 1e-3)
-    {
-      problem = "its slices do not lie on one line at even steps (" + Name(slices[k].File) +
-        " is " + std::to_string(off) + " mm off it): not one volume";
-      return false;
-    }
-  }
-  const double shear = std::acos(std::min(1.0, std::abs(Dot(axis, normal)) / stepLength)) * 180.0 / M_PI;
-  if (shear > 0.01)
-  {
-    std::ostringstream text;
-    text << "its slices are sheared by " << shear << " degrees off the normal of their planes "
-         << "(gantry tilt): each is placed at its own position, the volume's third axis "
-         << "following them (not resampled)";
-    geometry.Warning = text.str();
-  }
-  double slope = first.Slope, intercept = first.Intercept;
-  bool oneRescale = true;
-  for (const Slice& slice : slices)
-  {
-    geometry.Files.push_back(slice.File);
-    oneRescale = oneRescale && slice.Slope == slope && slice.Intercept == intercept;
-  }
-  geometry.Dimensions[0] = columns;
-  geometry.Dimensions[1] = rows;
-  geometry.Dimensions[2] = static_cast<int>(n);
-  geometry.Spacing[0] = first.ColumnSpacing;
-  geometry.Spacing[1] = first.RowSpacing;
-  geometry.Spacing[2] = stepLength;
-  for (size_t a = 0; a < 3; ++a)
-  {
-    geometry.Origin[a] = origin.Position[a];
-    geometry.Direction[3 * a] = row[a];
-    geometry.Direction[3 * a + 1] = column[a];
-    geometry.Direction[3 * a + 2] = axis[a] / stepLength;
-  }
-  geometry.ScalarType = oneRescale ? RescaledType(bits, isSigned != 0, slope, intercept) : VTK_FLOAT;
+  WarnOfShear(axes, geometry);
+  PlaceVolume(slices, layout, axes, geometry);
   return true;
 }
 

@@ -132,71 +132,208 @@ double BinaryValue(const unsigned char* bytes, const std::string& type, bool big
   return value;
 }
 
-std::string CheckBody(std::ifstream& in, const std::vector<Element>& elements, bool ascii,
-  bool bigEndian, std::uint64_t dataBytes, std::uint64_t vertices)
+// The vertex indices of an ASCII index list (the `count` words after its count at `next`):
+// whole numbers within the vertices (tristrips: -1 too, which separates strips).
+std::string CheckAsciiIndices(const Element& element, std::uint64_t e,
+  const std::vector<std::string>& words, size_t next, double count, std::uint64_t vertices)
 {
-  if (ascii)
+  const double lowest = element.Name == "tristrips" ? -1.0 : 0.0;
+  for (size_t k = next + 1; k <= next + static_cast<size_t>(count); ++k)
   {
-    std::string line;
-    for (const Element& element : elements)
+    char* end = nullptr;
+    const double index = std::strtod(words[k].c_str(), &end);
+    if (*end != '\0' || !(index >= lowest) || !(index < static_cast<double>(vertices)) ||
+      index != std::floor(index))
     {
-      for (std::uint64_t e = 0; e < element.Count; ++e)
+      return BadIndex(element, e, index, vertices);
+    }
+  }
+  return "";
+}
+
+// The words of the ASCII line of element `e` against its properties: a value for each, and
+// each list's count matching the values after it.
+std::string CheckAsciiValues(const Element& element, std::uint64_t e,
+  const std::vector<std::string>& words, std::uint64_t vertices)
+{
+  size_t next = 0;
+  for (const Property& property : element.Properties)
+  {
+    if (next >= words.size())
+    {
+      return element.Name + " " + std::to_string(e) + " has fewer values than its properties";
+    }
+    if (!property.CountType.empty())
+    {
+      char* end = nullptr;
+      const double count = std::strtod(words[next].c_str(), &end);
+      if (*end != '\0' || !(count >= 0.0) || count != std::floor(count) ||
+        count > static_cast<double>(words.size() - next - 1))
       {
-        if (!std::getline(in, line))
+        return element.Name + " " + std::to_string(e) + "'s " + property.Name +
+          " list count '" + words[next] + "' does not match its values";
+      }
+      if (IsIndexList(element, property))
+      {
+        const std::string problem = CheckAsciiIndices(element, e, words, next, count, vertices);
+        if (!problem.empty())
         {
-          return "it ends after " + std::to_string(e) + " of its " + std::to_string(element.Count) +
-            " " + element.Name + " lines (truncated?)";
-        }
-        if (!IsHeaderText(line))
-        {
-          return element.Name + " " + std::to_string(e) + "'s line holds bytes that are not text";
-        }
-        if (in.eof())
-        {
-          // VTK's reader frees twice at an end of file inside a line.
-          return "it ends inside the line of " + element.Name + " " + std::to_string(e) + " (truncated?)";
-        }
-        const std::vector<std::string> words = Words(line);
-        size_t next = 0;
-        for (const Property& property : element.Properties)
-        {
-          if (next >= words.size())
-          {
-            return element.Name + " " + std::to_string(e) + " has fewer values than its properties";
-          }
-          if (!property.CountType.empty())
-          {
-            char* end = nullptr;
-            const double count = std::strtod(words[next].c_str(), &end);
-            if (*end != '\0' || !(count >= 0.0) || count != std::floor(count) ||
-              count > static_cast<double>(words.size() - next - 1))
-            {
-              return element.Name + " " + std::to_string(e) + "'s " + property.Name +
-                " list count '" + words[next] + "' does not match its values";
-            }
-            if (IsIndexList(element, property))
-            {
-              const double lowest = element.Name == "tristrips" ? -1.0 : 0.0;
-              for (size_t k = next + 1; k <= next + static_cast<size_t>(count); ++k)
-              {
-                const double index = std::strtod(words[k].c_str(), &end);
-                if (*end != '\0' || !(index >= lowest) || !(index < static_cast<double>(vertices)) ||
-                  index != std::floor(index))
-                {
-                  return BadIndex(element, e, index, vertices);
-                }
-              }
-            }
-            next += static_cast<size_t>(count);
-          }
-          ++next;
+          return problem;
         }
       }
+      next += static_cast<size_t>(count);
     }
+    ++next;
+  }
+  return "";
+}
+
+// An ASCII body: a whole line of text for each element, its values as its properties say.
+std::string CheckAsciiBody(
+  std::ifstream& in, const std::vector<Element>& elements, std::uint64_t vertices)
+{
+  std::string line;
+  for (const Element& element : elements)
+  {
+    for (std::uint64_t e = 0; e < element.Count; ++e)
+    {
+      if (!std::getline(in, line))
+      {
+        return "it ends after " + std::to_string(e) + " of its " + std::to_string(element.Count) +
+          " " + element.Name + " lines (truncated?)";
+      }
+      if (!IsHeaderText(line))
+      {
+        return element.Name + " " + std::to_string(e) + "'s line holds bytes that are not text";
+      }
+      if (in.eof())
+      {
+        // VTK's reader frees twice at an end of file inside a line.
+        return "it ends inside the line of " + element.Name + " " + std::to_string(e) + " (truncated?)";
+      }
+      const std::string problem = CheckAsciiValues(element, e, Words(line), vertices);
+      if (!problem.empty())
+      {
+        return problem;
+      }
+    }
+  }
+  return "";
+}
+
+// A walk through a binary body: the file (at the next value), its byte order, the bytes of
+// data after the header and how many of them were used, and the vertices indices refer to.
+struct BinaryWalk
+{
+  BinaryWalk(std::ifstream& in, bool bigEndian, std::uint64_t dataBytes, std::uint64_t vertices)
+    : In(in)
+    , BigEndian(bigEndian)
+    , DataBytes(dataBytes)
+    , Vertices(vertices)
+  {
+  }
+
+  std::ifstream& In;
+  const bool BigEndian;
+  const std::uint64_t DataBytes, Vertices;
+  std::uint64_t Used = 0;
+  std::vector<unsigned char> Buffer = std::vector<unsigned char>(8);
+};
+
+// Elements without lists are of a fixed size: their total is known without reading them, so
+// the walk checks it against the data left and skips them.
+std::string SkipFixedElements(BinaryWalk& walk, const Element& element, std::uint64_t fixed)
+{
+  const std::uint64_t bytes = SaturatingProduct(element.Count, fixed);
+  if (bytes > walk.DataBytes - walk.Used)
+  {
+    return "its header declares " + std::to_string(element.Count) + " " + element.Name +
+      " elements (" + std::to_string(bytes) + " bytes) but " +
+      std::to_string(walk.DataBytes - walk.Used) + " bytes of data are left (truncated?)";
+  }
+  walk.Used += bytes;
+  walk.In.seekg(static_cast<std::streamoff>(bytes), std::ios::cur);
+  return "";
+}
+
+// The `count` vertex indices of an index list, the file at its first: whole numbers within
+// the vertices (tristrips: -1 too, which separates strips).
+std::string CheckBinaryIndices(BinaryWalk& walk, const Element& element, std::uint64_t e,
+  const Property& property, double count)
+{
+  const int itemSize = PLYTypeSize(property.Type);
+  const double lowest = element.Name == "tristrips" ? -1.0 : 0.0;
+  for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(count); ++k)
+  {
+    walk.In.read(reinterpret_cast<char*>(walk.Buffer.data()), itemSize);
+    const double index = BinaryValue(walk.Buffer.data(), property.Type, walk.BigEndian);
+    if (!(index >= lowest) || !(index < static_cast<double>(walk.Vertices)) || index != std::floor(index))
+    {
+      return BadIndex(element, e, index, walk.Vertices);
+    }
+  }
+  return "";
+}
+
+// A list whose count (in the walk's buffer) was just read: a whole count of items within the
+// data left, then its items, checked when they are vertex indices, skipped otherwise.
+std::string CheckBinaryList(
+  BinaryWalk& walk, const Element& element, std::uint64_t e, const Property& property)
+{
+  double count = 0.0;
+  if (!ListCount(walk.Buffer.data(), property.CountType, walk.BigEndian, count))
+  {
+    return element.Name + " " + std::to_string(e) + "'s " + property.Name +
+      " list has a count that is not a whole number >= 0";
+  }
+  const int itemSize = PLYTypeSize(property.Type);
+  if (count > static_cast<double>((walk.DataBytes - walk.Used) / static_cast<std::uint64_t>(itemSize)))
+  {
+    return element.Name + " " + std::to_string(e) + "'s " + property.Name + " list of " +
+      std::to_string(static_cast<std::uint64_t>(count)) + " items runs past the end of the file (truncated?)";
+  }
+  const std::uint64_t items = static_cast<std::uint64_t>(count) * static_cast<std::uint64_t>(itemSize);
+  walk.Used += items;
+  if (!IsIndexList(element, property))
+  {
+    walk.In.seekg(static_cast<std::streamoff>(items), std::ios::cur);
     return "";
   }
-  std::uint64_t used = 0;
-  std::vector<unsigned char> buffer(8);
+  return CheckBinaryIndices(walk, element, e, property, count);
+}
+
+// Element `e` of an element with lists, value by value: each within the data left.
+std::string CheckBinaryElement(BinaryWalk& walk, const Element& element, std::uint64_t e)
+{
+  for (const Property& property : element.Properties)
+  {
+    const bool list = !property.CountType.empty();
+    const int size = PLYTypeSize(list ? property.CountType : property.Type);
+    if (static_cast<std::uint64_t>(size) > walk.DataBytes - walk.Used ||
+      !walk.In.read(reinterpret_cast<char*>(walk.Buffer.data()), size))
+    {
+      return "it ends inside " + element.Name + " " + std::to_string(e) + " of " +
+        std::to_string(element.Count) + " (truncated?)";
+    }
+    walk.Used += static_cast<std::uint64_t>(size);
+    if (!list)
+    {
+      continue;
+    }
+    const std::string problem = CheckBinaryList(walk, element, e, property);
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  return "";
+}
+
+// A binary body: every element within the data after the header (`dataBytes`).
+std::string CheckBinaryBody(std::ifstream& in, const std::vector<Element>& elements,
+  bool bigEndian, std::uint64_t dataBytes, std::uint64_t vertices)
+{
+  BinaryWalk walk(in, bigEndian, dataBytes, vertices);
   for (const Element& element : elements)
   {
     std::uint64_t fixed = 0; // bytes of the scalar properties
@@ -208,154 +345,183 @@ std::string CheckBody(std::ifstream& in, const std::vector<Element>& elements, b
     }
     if (!lists)
     {
-      // Fixed-size elements: their total is known without reading them.
-      const std::uint64_t bytes = SaturatingProduct(element.Count, fixed);
-      if (bytes > dataBytes - used)
+      const std::string problem = SkipFixedElements(walk, element, fixed);
+      if (!problem.empty())
       {
-        return "its header declares " + std::to_string(element.Count) + " " + element.Name +
-          " elements (" + std::to_string(bytes) + " bytes) but " +
-          std::to_string(dataBytes - used) + " bytes of data are left (truncated?)";
+        return problem;
       }
-      used += bytes;
-      in.seekg(static_cast<std::streamoff>(bytes), std::ios::cur);
       continue;
     }
     for (std::uint64_t e = 0; e < element.Count; ++e)
     {
-      for (const Property& property : element.Properties)
+      const std::string problem = CheckBinaryElement(walk, element, e);
+      if (!problem.empty())
       {
-        const bool list = !property.CountType.empty();
-        const int size = PLYTypeSize(list ? property.CountType : property.Type);
-        if (static_cast<std::uint64_t>(size) > dataBytes - used ||
-          !in.read(reinterpret_cast<char*>(buffer.data()), size))
-        {
-          return "it ends inside " + element.Name + " " + std::to_string(e) + " of " +
-            std::to_string(element.Count) + " (truncated?)";
-        }
-        used += static_cast<std::uint64_t>(size);
-        if (!list)
-        {
-          continue;
-        }
-        double count = 0.0;
-        if (!ListCount(buffer.data(), property.CountType, bigEndian, count))
-        {
-          return element.Name + " " + std::to_string(e) + "'s " + property.Name +
-            " list has a count that is not a whole number >= 0";
-        }
-        const int itemSize = PLYTypeSize(property.Type);
-        if (count > static_cast<double>((dataBytes - used) / static_cast<std::uint64_t>(itemSize)))
-        {
-          return element.Name + " " + std::to_string(e) + "'s " + property.Name + " list of " +
-            std::to_string(static_cast<std::uint64_t>(count)) + " items runs past the end of the file (truncated?)";
-        }
-        const std::uint64_t items = static_cast<std::uint64_t>(count) * static_cast<std::uint64_t>(itemSize);
-        used += items;
-        if (!IsIndexList(element, property))
-        {
-          in.seekg(static_cast<std::streamoff>(items), std::ios::cur);
-          continue;
-        }
-        const double lowest = element.Name == "tristrips" ? -1.0 : 0.0;
-        for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(count); ++k)
-        {
-          in.read(reinterpret_cast<char*>(buffer.data()), itemSize);
-          const double index = BinaryValue(buffer.data(), property.Type, bigEndian);
-          if (!(index >= lowest) || !(index < static_cast<double>(vertices)) || index != std::floor(index))
-          {
-            return BadIndex(element, e, index, vertices);
-          }
-        }
+        return problem;
       }
     }
   }
   return "";
 }
+
+std::string CheckBody(std::ifstream& in, const std::vector<Element>& elements, bool ascii,
+  bool bigEndian, std::uint64_t dataBytes, std::uint64_t vertices)
+{
+  return ascii ? CheckAsciiBody(in, elements, vertices)
+               : CheckBinaryBody(in, elements, bigEndian, dataBytes, vertices);
 }
 
-std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
+// What a PLY header declares, filled in as its lines are read.
+struct PLYHeader
 {
-  bytes = 0;
-  std::ifstream in(fileName, std::ios::binary);
+  std::vector<Element> Elements;
+  bool Ascii = false, BigEndian = false, FormatSeen = false, Ended = false;
+};
+
+// A "format" line: the only one, of one of PLY's three formats.
+std::string ParseFormat(const std::vector<std::string>& words, int number, PLYHeader& header)
+{
+  if (header.FormatSeen || words.size() != 3 ||
+    (words[1] != "ascii" && words[1] != "binary_little_endian" && words[1] != "binary_big_endian"))
+  {
+    return "its header line " + std::to_string(number) + " is not a PLY format line";
+  }
+  header.FormatSeen = true;
+  header.Ascii = words[1] == "ascii";
+  header.BigEndian = words[1] == "binary_big_endian";
+  return "";
+}
+
+// An "element NAME COUNT" line, its count a whole number up to 2^31 - 1.
+std::string ParseElement(const std::vector<std::string>& words, int number, PLYHeader& header)
+{
+  char* end = nullptr;
+  const double count = words.size() == 3 ? std::strtod(words[2].c_str(), &end) : -1.0;
+  if (words.size() != 3 || *end != '\0' || !(count >= 0.0) || count != std::floor(count) ||
+    count > 2147483647.0)
+  {
+    return "its header line " + std::to_string(number) + " is not 'element NAME COUNT' with a count up to 2^31 - 1";
+  }
+  header.Elements.push_back({ words[1], static_cast<std::uint64_t>(count), {} });
+  return "";
+}
+
+// A "property TYPE NAME" or "property list COUNT_TYPE TYPE NAME" line of the last element, of
+// known types; a list's count of an integer type.
+std::string ParseProperty(const std::vector<std::string>& words, int number, PLYHeader& header)
+{
+  const bool list = words.size() == 5 && words[1] == "list";
+  if (header.Elements.empty() || (!list && words.size() != 3) ||
+    PLYTypeSize(words[list ? 3 : 1]) == 0 || (list && PLYTypeSize(words[2]) == 0))
+  {
+    return "its header line " + std::to_string(number) +
+      " is not a property of known type after an element";
+  }
+  if (list && IsFloatType(words[2]))
+  {
+    return "its header line " + std::to_string(number) + " counts a list with a floating-point type";
+  }
+  header.Elements.back().Properties.push_back(
+    { words[list ? 4 : 2], words[list ? 3 : 1], list ? words[2] : std::string() });
+  return "";
+}
+
+// Header line `number` (from 1): "ply" first, then keyword lines up to end_header.
+std::string ParseHeaderLine(const std::string& line, int number, PLYHeader& header)
+{
+  if (line.size() > 1000 || !IsHeaderText(line))
+  {
+    return "its header line " + std::to_string(number) +
+      (IsHeaderText(line) ? " is longer than 1000 characters" : " holds bytes that are not text");
+  }
+  const std::vector<std::string> words = Words(line);
+  const std::string key = words.empty() ? "" : words[0];
+  if (number == 1)
+  {
+    if (key != "ply" || words.size() != 1)
+    {
+      return "it does not start with 'ply'";
+    }
+  }
+  else if (key == "format")
+  {
+    return ParseFormat(words, number, header);
+  }
+  else if (key == "element")
+  {
+    return ParseElement(words, number, header);
+  }
+  else if (key == "property")
+  {
+    return ParseProperty(words, number, header);
+  }
+  else if (key == "end_header")
+  {
+    header.Ended = true;
+  }
+  else if (key != "comment" && key != "obj_info" && !key.empty())
+  {
+    return "its header line " + std::to_string(number) + " starts with the unknown keyword '" + key + "'";
+  }
+  return "";
+}
+
+// Reads the header up to its end_header, leaving `in` at the body.
+std::string ReadHeader(std::ifstream& in, PLYHeader& header)
+{
   std::string line;
-  std::vector<Element> elements;
-  bool ascii = false, bigEndian = false, formatSeen = false, ended = false;
   // vtkPLY reads header lines into fixed buffers and words into a fixed table.
-  for (int number = 1; !ended && std::getline(in, line); ++number)
+  for (int number = 1; !header.Ended && std::getline(in, line); ++number)
   {
-    if (line.size() > 1000 || !IsHeaderText(line))
+    const std::string problem = ParseHeaderLine(line, number, header);
+    if (!problem.empty())
     {
-      return "its header line " + std::to_string(number) +
-        (IsHeaderText(line) ? " is longer than 1000 characters" : " holds bytes that are not text");
-    }
-    const std::vector<std::string> words = Words(line);
-    const std::string key = words.empty() ? "" : words[0];
-    if (number == 1)
-    {
-      if (key != "ply" || words.size() != 1)
-      {
-        return "it does not start with 'ply'";
-      }
-    }
-    else if (key == "format")
-    {
-      if (formatSeen || words.size() != 3 ||
-        (words[1] != "ascii" && words[1] != "binary_little_endian" && words[1] != "binary_big_endian"))
-      {
-        return "its header line " + std::to_string(number) + " is not a PLY format line";
-      }
-      formatSeen = true;
-      ascii = words[1] == "ascii";
-      bigEndian = words[1] == "binary_big_endian";
-    }
-    else if (key == "element")
-    {
-      char* end = nullptr;
-      const double count = words.size() == 3 ? std::strtod(words[2].c_str(), &end) : -1.0;
-      if (words.size() != 3 || *end != '\0' || !(count >= 0.0) || count != std::floor(count) ||
-        count > 2147483647.0)
-      {
-        return "its header line " + std::to_string(number) + " is not 'element NAME COUNT' with a count up to 2^31 - 1";
-      }
-      elements.push_back({ words[1], static_cast<std::uint64_t>(count), {} });
-    }
-    else if (key == "property")
-    {
-      const bool list = words.size() == 5 && words[1] == "list";
-      if (elements.empty() || (!list && words.size() != 3) ||
-        PLYTypeSize(words[list ? 3 : 1]) == 0 || (list && PLYTypeSize(words[2]) == 0))
-      {
-        return "its header line " + std::to_string(number) +
-          " is not a property of known type after an element";
-      }
-      if (list && IsFloatType(words[2]))
-      {
-        return "its header line " + std::to_string(number) + " counts a list with a floating-point type";
-      }
-      elements.back().Properties.push_back(
-        { words[list ? 4 : 2], words[list ? 3 : 1], list ? words[2] : std::string() });
-    }
-    else if (key == "end_header")
-    {
-      ended = true;
-    }
-    else if (key != "comment" && key != "obj_info" && !key.empty())
-    {
-      return "its header line " + std::to_string(number) + " starts with the unknown keyword '" + key + "'";
+      return problem;
     }
   }
-  if (!formatSeen || !ended)
+  if (!header.FormatSeen || !header.Ended)
   {
-    return !formatSeen ? "its header has no format line" : "its header does not end (no end_header)";
+    return !header.FormatSeen ? "its header has no format line" : "its header does not end (no end_header)";
   }
-  if (elements.size() > 100)
+  if (header.Elements.size() > 100)
   {
     return "its header declares more than 100 elements";
   }
-  // What VTK's reader assumes without checking (it crashes or frees twice otherwise): element
-  // and property names unique, a vertex element with scalar x, y and z, and faces and strips
-  // with an integer list of vertex indices.
-  std::uint64_t vertices = 0;
+  return "";
+}
+
+// An element's properties: names unique, vertex indices of an integer type. Counts its scalar
+// x, y and z in `xyz`, and its vertex index lists in `lists`.
+std::string CheckProperties(const Element& element, int& xyz, int& lists)
+{
+  for (size_t p = 0; p < element.Properties.size(); ++p)
+  {
+    const Property& property = element.Properties[p];
+    for (size_t q = 0; q < p; ++q)
+    {
+      if (element.Properties[q].Name == property.Name)
+      {
+        return "its element " + element.Name + " declares the property " + property.Name + " twice";
+      }
+    }
+    xyz += property.CountType.empty() && (property.Name == "x" || property.Name == "y" || property.Name == "z");
+    if (IsIndexList(element, property))
+    {
+      if (IsFloatType(property.Type))
+      {
+        return "its element " + element.Name + " lists vertex indices of a floating-point type";
+      }
+      ++lists;
+    }
+  }
+  return "";
+}
+
+// What VTK's reader assumes without checking (it crashes or frees twice otherwise): element
+// and property names unique, a vertex element with scalar x, y and z, and faces and strips
+// with an integer list of vertex indices. `vertices`: the vertex element's count.
+std::string CheckElements(const std::vector<Element>& elements, std::uint64_t& vertices)
+{
   bool haveVertex = false;
   for (size_t i = 0; i < elements.size(); ++i)
   {
@@ -368,25 +534,10 @@ std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
       }
     }
     int xyz = 0, lists = 0;
-    for (size_t p = 0; p < element.Properties.size(); ++p)
+    const std::string problem = CheckProperties(element, xyz, lists);
+    if (!problem.empty())
     {
-      const Property& property = element.Properties[p];
-      for (size_t q = 0; q < p; ++q)
-      {
-        if (element.Properties[q].Name == property.Name)
-        {
-          return "its element " + element.Name + " declares the property " + property.Name + " twice";
-        }
-      }
-      xyz += property.CountType.empty() && (property.Name == "x" || property.Name == "y" || property.Name == "z");
-      if (IsIndexList(element, property))
-      {
-        if (IsFloatType(property.Type))
-        {
-          return "its element " + element.Name + " lists vertex indices of a floating-point type";
-        }
-        ++lists;
-      }
+      return problem;
     }
     if (element.Name == "vertex")
     {
@@ -406,6 +557,13 @@ std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
   {
     return "its header declares no vertex element";
   }
+  return "";
+}
+
+// Adds to `bytes` what VTK allocates for each element, element by element (a refused element
+// leaves the sum of those before it): at most 100 properties an element.
+std::string AddElementBytes(const std::vector<Element>& elements, std::uint64_t& bytes)
+{
   for (const Element& element : elements)
   {
     if (element.Properties.size() > 100)
@@ -416,9 +574,33 @@ std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
     // below within the file's size).
     bytes += SaturatingProduct(element.Count, 8 * (element.Properties.size() + 1));
   }
+  return "";
+}
+}
+
+std::string CheckPLY(const std::string& fileName, std::uint64_t& bytes)
+{
+  bytes = 0;
+  std::ifstream in(fileName, std::ios::binary);
+  PLYHeader header;
+  std::uint64_t vertices = 0;
+  std::string problem = ReadHeader(in, header);
+  if (problem.empty())
+  {
+    problem = CheckElements(header.Elements, vertices);
+  }
+  if (problem.empty())
+  {
+    problem = AddElementBytes(header.Elements, bytes);
+  }
+  if (!problem.empty())
+  {
+    return problem;
+  }
   const std::uint64_t size = vtksys::SystemTools::FileLength(fileName);
   const std::uint64_t headerEnd = static_cast<std::uint64_t>(in.tellg());
-  return CheckBody(in, elements, ascii, bigEndian, size > headerEnd ? size - headerEnd : 0, vertices);
+  return CheckBody(in, header.Elements, header.Ascii, header.BigEndian,
+    size > headerEnd ? size - headerEnd : 0, vertices);
 }
 
 std::string CheckOBJ(const std::string& fileName, std::uint64_t& bytes)

@@ -33,15 +33,32 @@ int NextPowerOfTwo(long long n)
 }
 }
 
+glm::ivec2 PageAnalysis::AnalysisSize(const ShadowContext& context, int downsample) const
+{
+  const glm::ivec2 viewport(context.View.GetWidth(), context.View.GetHeight());
+  return (viewport + downsample - 1) / downsample;
+}
+
 bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContext& context, const SlotFaces& faces,
   int facesPerLight, const PageLayout& layout, int downsample, std::vector<std::uint32_t>& unique,
   std::string& error)
 {
-  const glm::ivec2 viewport(context.View.GetWidth(), context.View.GetHeight());
-  const glm::ivec2 size = (viewport + downsample - 1) / downsample;
-  const glm::mat4 inverseViewProjection(context.View.GetInverseViewProjection());
+  if (!this->FindReceivers(technique, context, downsample, error) || !this->BuildStages(faces, error))
+  {
+    return false;
+  }
+  const unsigned int listed = this->ListRequests(context, faces, facesPerLight, layout, downsample);
+  this->Last.Requested = this->SortUnique(listed, unique);
+  context.Window->GetShaderCache()->ReleaseCurrentShader();
+  this->Last.AfterComponents = listed;
+  return true;
+}
 
-  // 1. The receiver each analysis pixel shows: the first occluder along its ray.
+bool PageAnalysis::FindReceivers(
+  vtkDeepShadowTechnique* technique, const ShadowContext& context, int downsample, std::string& error)
+{
+  const glm::ivec2 viewport(context.View.GetWidth(), context.View.GetHeight());
+  const glm::ivec2 size = this->AnalysisSize(context, downsample);
   if (!this->Hits || this->HitsSize != size)
   {
     DeleteTexture(this->Hits);
@@ -54,7 +71,7 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
     error = technique->GetLastError();
     return false;
   }
-  this->Receivers.Set("u_inverseViewProjection", inverseViewProjection);
+  this->Receivers.Set("u_inverseViewProjection", glm::mat4(context.View.GetInverseViewProjection()));
   this->Receivers.Set("u_viewport", glm::vec2(viewport));
   this->Receivers.Set("u_downsample", downsample);
   this->Receivers.Set("u_analysisSize", size);
@@ -64,8 +81,11 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
   this->Receivers.Dispatch(glm::ivec3(size, 1), glm::ivec3(8, 8, 1));
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   vtkDeepShadowTechnique::Internals::EndBuildPass(technique, context);
+  return true;
+}
 
-  // 2. Requests, deduplicated: one program per stage of vtkDeepShadowPageRequestsCS.
+bool PageAnalysis::BuildStages(const SlotFaces& faces, std::string& error)
+{
   std::map<std::string, ShaderFeature> runtime;
   runtime["Locate"] = ShaderFeature(
     "Locate", "//@Dec\n#define LIGHT_SPACE_LOCATE_ONLY\n" + LightSpaceSource(faces));
@@ -81,6 +101,14 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
       return false;
     }
   }
+  return true;
+}
+
+unsigned int PageAnalysis::ListRequests(const ShadowContext& context, const SlotFaces& faces,
+  int facesPerLight, const PageLayout& layout, int downsample)
+{
+  const glm::ivec2 viewport(context.View.GetWidth(), context.View.GetHeight());
+  const glm::ivec2 size = this->AnalysisSize(context, downsample);
   const long long requests = static_cast<long long>(size.x) * size.y * static_cast<int>(faces.size());
   const int padded = NextPowerOfTwo(static_cast<int>(std::max<long long>(requests, 2)));
   EnsureStorageBuffer(this->Requests, this->RequestsBytes, 4 * requests);
@@ -108,7 +136,7 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
   context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, this->Hits);
   requestPass.Set("u_hits", unit);
-  requestPass.Set("u_inverseViewProjection", inverseViewProjection);
+  requestPass.Set("u_inverseViewProjection", glm::mat4(context.View.GetInverseViewProjection()));
   requestPass.Set("u_viewport", glm::vec2(viewport));
   requestPass.Set("u_downsample", downsample);
   requestPass.Set("u_analysisSize", size);
@@ -125,7 +153,11 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
   GLuint listed = 0;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->List);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(listed), &listed);
+  return listed;
+}
 
+long long PageAnalysis::SortUnique(unsigned int listed, std::vector<std::uint32_t>& unique)
+{
   // Bitonic sort of the listed requests, padded with NoPage to a power of two.
   const int length = NextPowerOfTwo(static_cast<int>(std::max<GLuint>(listed, 2)));
   this->Stages[2].Use();
@@ -157,12 +189,9 @@ bool PageAnalysis::Analyse(vtkDeepShadowTechnique* technique, const ShadowContex
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  context.Window->GetShaderCache()->ReleaseCurrentShader();
   // The unique pass appends in any order.
   std::sort(unique.begin(), unique.end());
-  this->Last.Requested = header[1];
-  this->Last.AfterComponents = listed;
-  return true;
+  return header[1];
 }
 
 void PageAnalysis::Release()

@@ -46,6 +46,21 @@ public:
   void Release();
 
 private:
+  /** Step 1: each analysis pixel's first occluder along its ray into Hits. */
+  bool FindReceivers(vtkDeepShadowTechnique* technique, const ShadowContext& context, int downsample,
+    std::string& error);
+  /** The four stages of vtkDeepShadowPageRequestsCS, composed for the lights' faces. */
+  bool BuildStages(const SlotFaces& faces, std::string& error);
+  /** Step 2: one request per pixel and face (stage 0), the connected components' survivors
+   * listed (stage 1); returns how many were listed. */
+  unsigned int ListRequests(const ShadowContext& context, const SlotFaces& faces, int facesPerLight,
+    const PageLayout& layout, int downsample);
+  /** Step 3: the listed requests sorted (stage 2) and made unique (stage 3), read back;
+   * returns the requests stage 0 counted. */
+  long long SortUnique(unsigned int listed, std::vector<std::uint32_t>& unique);
+
+  glm::ivec2 AnalysisSize(const ShadowContext& context, int downsample) const;
+
   unsigned int Hits = 0; // the analysis pixels' first-occluder distances, R32F
   glm::ivec2 HitsSize{ 0 };
   unsigned int Requests = 0, List = 0, Unique = 0;

@@ -53,6 +53,79 @@ void CellPairs(int cells, std::vector<int>& lo, std::vector<int>& hi)
   }
 }
 
+// The cells per axis of `input` and the 2n + 1 points per axis they are drawn on; false with
+// `error` for an axis without a cell or beyond what a 3D texture holds.
+bool CellGrid(vtkImageData* input, int cellsPerAxis[3], int points[3], std::string& error)
+{
+  int dims[3];
+  input->GetDimensions(dims);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    cellsPerAxis[axis] = dims[axis] - 1;
+    points[axis] = 2 * cellsPerAxis[axis] + 1;
+    if (cellsPerAxis[axis] < 1)
+    {
+      std::ostringstream why;
+      why << "the volume has zero extent along " << "xyz"[axis] << " (" << dims[0] << "x" << dims[1]
+          << "x" << dims[2] << " points); cell scalars need at least one cell per axis";
+      error = why.str();
+      return false;
+    }
+    if (points[axis] > DrawnScalars::MaxCellGridPoints)
+    {
+      std::ostringstream why;
+      why << "cell scalars of " << cellsPerAxis[0] << "x" << cellsPerAxis[1] << "x" << cellsPerAxis[2]
+          << " cells are drawn on a grid of 2n + 1 points per axis, beyond the " << DrawnScalars::MaxCellGridPoints
+          << " a 3D texture holds (at most " << (DrawnScalars::MaxCellGridPoints - 1) / 2 << " cells per axis)";
+      error = why.str();
+      return false;
+    }
+  }
+  return true;
+}
+
+// Each point of the 2n + 1 grid: the mean of the 8 cells around it (Image's float values);
+// false with `error` for a mean beyond single precision.
+bool ResampleCells(vtkDataArray* values, const int cellsPerAxis[3], const int points[3], float* out, std::string& error)
+{
+  std::vector<int> lo[3], hi[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    CellPairs(cellsPerAxis[axis], lo[axis], hi[axis]);
+  }
+  auto cell = [&](int i, int j, int k) {
+    return values->GetComponent(
+      static_cast<vtkIdType>(i) + cellsPerAxis[0] * (static_cast<vtkIdType>(j) + static_cast<vtkIdType>(cellsPerAxis[1]) * k), 0);
+  };
+  for (int k = 0; k < points[2]; ++k)
+  {
+    for (int j = 0; j < points[1]; ++j)
+    {
+      for (int i = 0; i < points[0]; ++i)
+      {
+        // Equal weights: each axis reads one cell twice or two neighbours once each.
+        double sum = 0.0;
+        for (int c = 0; c < 8; ++c)
+        {
+          sum += cell((c & 1 ? hi : lo)[0][static_cast<size_t>(i)], (c & 2 ? hi : lo)[1][static_cast<size_t>(j)],
+            (c & 4 ? hi : lo)[2][static_cast<size_t>(k)]);
+        }
+        const double value = sum / 8.0;
+        if (std::isfinite(value) && std::abs(value) > static_cast<double>(FLT_MAX))
+        {
+          std::ostringstream why;
+          why << "the volume's " << values->GetDataTypeAsString() << " cell scalars reach " << value
+              << ", beyond single precision's range (+-3.4e38) in which they are kept";
+          error = why.str();
+          return false;
+        }
+        *out++ = static_cast<float>(value);
+      }
+    }
+  }
+  return true;
+}
+
 }
 
 vtkImageData* DrawnScalars::Update(vtkVolumeMapper* mapper, vtkImageData* input, std::string& error)
@@ -111,73 +184,59 @@ bool DrawnScalars::Build(vtkImageData* input, vtkAbstractArray* array, bool cell
     return false;
   }
   this->Others.clear();
+  return cells ? this->BuildFromCells(input, values, error) : this->BuildFromPoints(input, values, error);
+}
+
+bool DrawnScalars::BuildFromPoints(vtkImageData* input, vtkDataArray* values, std::string& error)
+{
   const int components = values->GetNumberOfComponents();
-  if (!cells && components == 1)
+  if (components == 1)
   {
     this->Image->Initialize();
     this->Image->CopyStructure(input);
     this->Image->GetPointData()->SetScalars(values);
     return true;
   }
-  if (!cells)
+  if (components > MaxComponents)
   {
-    if (components > MaxComponents)
-    {
-      error = "the volume's scalars have " + std::to_string(components) + " components; at most " +
-        std::to_string(MaxComponents) + " are drawn";
-      return false;
-    }
-    // One image per component, in the array's own type: each is a volume of its own to the
-    // textures and the twin (Core/Components.h combines them).
-    for (int c = 0; c < components; ++c)
-    {
-      vtkSmartPointer<vtkDataArray> single = vtk::TakeSmartPointer(values->NewInstance());
-      single->SetNumberOfComponents(1);
-      single->SetNumberOfTuples(values->GetNumberOfTuples());
-      single->CopyComponent(0, values, c);
-      single->SetName(values->GetName());
-      vtkImageData* image = this->Image;
-      if (c > 0)
-      {
-        this->Others.push_back(vtkSmartPointer<vtkImageData>::New());
-        image = this->Others.back();
-      }
-      image->Initialize();
-      image->CopyStructure(input);
-      image->GetPointData()->SetScalars(single);
-    }
-    return true;
+    error = "the volume's scalars have " + std::to_string(components) + " components; at most " +
+      std::to_string(MaxComponents) + " are drawn";
+    return false;
   }
+  // One image per component, in the array's own type: each is a volume of its own to the
+  // textures and the twin (Core/Components.h combines them).
+  for (int c = 0; c < components; ++c)
+  {
+    vtkSmartPointer<vtkDataArray> single = vtk::TakeSmartPointer(values->NewInstance());
+    single->SetNumberOfComponents(1);
+    single->SetNumberOfTuples(values->GetNumberOfTuples());
+    single->CopyComponent(0, values, c);
+    single->SetName(values->GetName());
+    vtkImageData* image = this->Image;
+    if (c > 0)
+    {
+      this->Others.push_back(vtkSmartPointer<vtkImageData>::New());
+      image = this->Others.back();
+    }
+    image->Initialize();
+    image->CopyStructure(input);
+    image->GetPointData()->SetScalars(single);
+  }
+  return true;
+}
+
+bool DrawnScalars::BuildFromCells(vtkImageData* input, vtkDataArray* values, std::string& error)
+{
   if (values->GetNumberOfComponents() != 1)
   {
     error = "the volume's cell scalars have " + std::to_string(values->GetNumberOfComponents()) +
       " components; only single-component scalars are supported";
     return false;
   }
-  int dims[3];
-  input->GetDimensions(dims);
   int cellsPerAxis[3], points[3];
-  for (int axis = 0; axis < 3; ++axis)
+  if (!CellGrid(input, cellsPerAxis, points, error))
   {
-    cellsPerAxis[axis] = dims[axis] - 1;
-    points[axis] = 2 * cellsPerAxis[axis] + 1;
-    if (cellsPerAxis[axis] < 1)
-    {
-      std::ostringstream why;
-      why << "the volume has zero extent along " << "xyz"[axis] << " (" << dims[0] << "x" << dims[1]
-          << "x" << dims[2] << " points); cell scalars need at least one cell per axis";
-      error = why.str();
-      return false;
-    }
-    if (points[axis] > MaxCellGridPoints)
-    {
-      std::ostringstream why;
-      why << "cell scalars of " << cellsPerAxis[0] << "x" << cellsPerAxis[1] << "x" << cellsPerAxis[2]
-          << " cells are drawn on a grid of 2n + 1 points per axis, beyond the " << MaxCellGridPoints
-          << " a 3D texture holds (at most " << (MaxCellGridPoints - 1) / 2 << " cells per axis)";
-      error = why.str();
-      return false;
-    }
+    return false;
   }
   const vtkIdType expected = static_cast<vtkIdType>(cellsPerAxis[0]) * cellsPerAxis[1] * cellsPerAxis[2];
   if (values->GetNumberOfTuples() != expected)
@@ -185,11 +244,6 @@ bool DrawnScalars::Build(vtkImageData* input, vtkAbstractArray* array, bool cell
     error = "the volume's cell array has " + std::to_string(values->GetNumberOfTuples()) +
       " values for " + std::to_string(expected) + " cells";
     return false;
-  }
-  std::vector<int> lo[3], hi[3];
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    CellPairs(cellsPerAxis[axis], lo[axis], hi[axis]);
   }
   vtkNew<vtkFloatArray> resampled;
   resampled->SetName(values->GetName());
@@ -203,36 +257,9 @@ bool DrawnScalars::Build(vtkImageData* input, vtkAbstractArray* array, bool cell
     error = "no memory for the " + std::to_string(count) + " points that the cell scalars are drawn on";
     return false;
   }
-  auto cell = [&](int i, int j, int k) {
-    return values->GetComponent(
-      static_cast<vtkIdType>(i) + cellsPerAxis[0] * (static_cast<vtkIdType>(j) + static_cast<vtkIdType>(cellsPerAxis[1]) * k), 0);
-  };
-  float* out = resampled->GetPointer(0);
-  for (int k = 0; k < points[2]; ++k)
+  if (!ResampleCells(values, cellsPerAxis, points, resampled->GetPointer(0), error))
   {
-    for (int j = 0; j < points[1]; ++j)
-    {
-      for (int i = 0; i < points[0]; ++i)
-      {
-        // Equal weights: each axis reads one cell twice or two neighbours once each.
-        double sum = 0.0;
-        for (int c = 0; c < 8; ++c)
-        {
-          sum += cell((c & 1 ? hi : lo)[0][static_cast<size_t>(i)], (c & 2 ? hi : lo)[1][static_cast<size_t>(j)],
-            (c & 4 ? hi : lo)[2][static_cast<size_t>(k)]);
-        }
-        const double value = sum / 8.0;
-        if (std::isfinite(value) && std::abs(value) > static_cast<double>(FLT_MAX))
-        {
-          std::ostringstream why;
-          why << "the volume's " << values->GetDataTypeAsString() << " cell scalars reach " << value
-              << ", beyond single precision's range (+-3.4e38) in which they are kept";
-          error = why.str();
-          return false;
-        }
-        *out++ = static_cast<float>(value);
-      }
-    }
+    return false;
   }
   double spacing[3];
   input->GetSpacing(spacing);

@@ -23,6 +23,7 @@
 #include <vector>
 
 class vtkAbstractArray;
+class vtkDataArray;
 class vtkVolumeMapper;
 
 namespace deepshadow
@@ -54,6 +55,10 @@ public:
 
 private:
   bool Build(vtkImageData* input, vtkAbstractArray* array, bool cells, std::string& error);
+  /** Point scalars: the array itself, or one image per component. */
+  bool BuildFromPoints(vtkImageData* input, vtkDataArray* values, std::string& error);
+  /** Cell scalars, resampled onto the grid of 2n + 1 points per axis. */
+  bool BuildFromCells(vtkImageData* input, vtkDataArray* values, std::string& error);
 
   vtkNew<vtkImageData> Image;
   std::vector<vtkSmartPointer<vtkImageData>> Others;
