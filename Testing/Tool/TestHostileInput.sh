@@ -43,6 +43,10 @@ expect 2 "the same OBJ as --bound" "out of range" -- "$tool" "${box[@]}" --bound
 expect 2 "an OBJ face naming a normal it lacks" "normal" -- "$tool" "${box[@]}" --mesh normal.obj --out x.png
 sed 's/^element face 96$/element face 96\nelement face 96/' seeds/mesh.ply > twice.ply
 expect 2 "a PLY declaring an element twice" "twice" -- "$tool" "${box[@]}" --mesh twice.ply --out x.png
+# An element without properties: VTK's reader frees a pointer it never set (found by a
+# mutation run: "free(): invalid pointer"); refused before it.
+sed 's/^end_header$/element more 1\nend_header/' seeds/mesh.ply > bare.ply
+expect 2 "a PLY element without properties" "element more has no properties" -- "$tool" "${box[@]}" --mesh bare.ply --out x.png
 sed 's/^property float y$/property float why/' seeds/mesh.ply > noy.ply
 expect 2 "a PLY without y" "x, y and z" -- "$tool" "${box[@]}" --mesh noy.ply --out x.png
 head -c $(($(wc -c < seeds/mesh-ascii.ply) - 1)) seeds/mesh-ascii.ply > cut.ply

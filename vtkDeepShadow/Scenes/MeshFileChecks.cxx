@@ -533,6 +533,11 @@ std::string CheckElements(const std::vector<Element>& elements, std::uint64_t& v
         return "its header declares the element " + element.Name + " twice";
       }
     }
+    // VTK's PLY reader frees a pointer it never set for an element without properties.
+    if (element.Properties.empty())
+    {
+      return "its element " + element.Name + " has no properties";
+    }
     int xyz = 0, lists = 0;
     const std::string problem = CheckProperties(element, xyz, lists);
     if (!problem.empty())
