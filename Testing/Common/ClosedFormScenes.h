@@ -14,6 +14,7 @@
 #include "ClosedForm.h"
 
 #include "Core/Shadows/LightSpace.h"
+#include "Core/Shadows/ResolutionMatched.h"
 #include "Core/Shadows.h"
 #include "Core/Shadows/StochasticShadowMap.h"
 #include "Core/ShadowTechniques.h"
@@ -23,11 +24,13 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -180,7 +183,6 @@ inline SurfaceMesh Ground()
  */
 inline ShadowParameters Technique(std::string name)
 {
-  ShadowParameters p;
   std::vector<std::pair<std::string, std::string>> settings;
   for (size_t colon = name.rfind(':'); colon != std::string::npos; colon = name.rfind(':'))
   {
@@ -189,25 +191,28 @@ inline ShadowParameters Technique(std::string name)
     settings.emplace_back(setting.substr(0, equals), setting.substr(equals + 1));
     name.resize(colon);
   }
-  const std::string cached = "-cached";
-  if (name.size() > cached.size() && name.compare(name.size() - cached.size(), cached.size(), cached) == 0)
+  // The registry's defaults for NAME or NAME-cached, as the tool and the GPU classes take them.
+  bool cached = false;
+  const ShadowTechniqueInfo* technique = FindShadowTechnique(name, &cached);
+  if (!technique)
   {
-    p.Cached = true;
-    name.resize(name.size() - cached.size());
+    throw std::invalid_argument("no technique " + name);
   }
-  p.Kind = name.rfind("rays", 0) == 0 ? ShadowKind::Rays
-    : name == "shadowmap"             ? ShadowKind::ShadowMap
-    : name == "dsm3"                  ? ShadowKind::OpacityLevels
-    : name == "cssm"                  ? ShadowKind::Stochastic
-                                      : ShadowKind::DeepShadowMap;
-  p.Opaque = name == "rays-opaque";
-  p.Colored = name == "rays-color" || name == "dsm-color";
+  ShadowParameters p = technique->DefaultParameters(cached);
   for (const auto& setting : settings)
   {
     const ShadowParameterInfo* info = FindShadowParameter(setting.first);
     info->Set(p, info->Parse(setting.second));
   }
   return p;
+}
+
+/** Every technique of the registry, cached or not ("none" left out): the suites' list. */
+inline std::vector<std::string> RegistryTechniques()
+{
+  std::vector<std::string> names = ShadowTechniqueNames();
+  names.erase(std::remove(names.begin(), names.end(), "none"), names.end());
+  return names;
 }
 
 /** A hard shadow (lit or not, by the threshold): the registry's flag (ShadowTechniqueInfo::Binary). */
@@ -246,6 +251,7 @@ inline double LookupRadius(const ShadowParameters& parameters, const std::vector
       texels = 1.5; // bilinear
       break;
     case ShadowKind::ShadowMap:
+    case ShadowKind::ResolutionMatched:
       texels = 2.5; // PCF 3x3 around the nearest texel
       break;
     case ShadowKind::Stochastic:
@@ -254,9 +260,13 @@ inline double LookupRadius(const ShadowParameters& parameters, const std::vector
     default:
       return 0.0;
   }
+  // Resolution-matched maps without a camera hold their base level alone (4 x 4 pages).
+  const PageLayout layout = PageLayout::Of(parameters);
+  const int resolution = parameters.Kind == ShadowKind::ResolutionMatched ? layout.LevelSize(layout.BaseLevel())
+                                                                         : parameters.MapSize;
   const ShadowMapFace& face = faces[ShadowMapFaceFor(faces, p - faces[0].Origin)];
   const double z = face.Perspective ? glm::dot(p - face.Origin, face.Forward) : 1.0;
-  return texels * 2.0 * z * face.Extent / parameters.MapSize;
+  return texels * 2.0 * z * face.Extent / resolution;
 }
 
 /** The faces the technique's light-space map gets for this caster and light (LightSpace.h). */
@@ -339,7 +349,9 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
     switch (parameters.Kind)
     {
       case ShadowKind::DeepShadowMap:
-        tolerance += parameters.Epsilon; // |V' - V| <= epsilon at every sample depth
+        // |V' - V| <= epsilon at every sample depth, per map; clustered maps multiply up to
+        // one lookup per cluster along the ray, each within epsilon of its factor.
+        tolerance += parameters.Epsilon * std::max(1, parameters.Clusters);
         break;
       case ShadowKind::OpacityLevels:
         // Three levels joined by smoothsteps (paper 001) approximate an exponential opacity
@@ -362,7 +374,9 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
       // the point's depth less its bias: the closed form that far towards the light differs
       // by as much as one more stretch of medium lets through.
       const double bias =
-        parameters.Kind == ShadowKind::ShadowMap ? exact[c] * (std::exp(sigma * parameters.Bias * step) - 1.0) : 0.0;
+        parameters.Kind == ShadowKind::ShadowMap || parameters.Kind == ShadowKind::ResolutionMatched
+        ? exact[c] * (std::exp(sigma * parameters.Bias * step) - 1.0)
+        : 0.0;
       const double opacity = 1.0 - exact[c];
       verdict.Checked[c] = std::abs(opacity - parameters.Threshold) > tolerance + spread[c] + bias;
       verdict.Expected[c] = opacity > parameters.Threshold ? 0.0 : 1.0;

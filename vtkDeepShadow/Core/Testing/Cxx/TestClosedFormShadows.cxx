@@ -163,7 +163,9 @@ void CheckSlabSelfShadow(const std::string& name)
   const Outcome outcome =
     CheckAgainstClosedForm(name + " slab, its own samples", body, parameters, *shadow, light, receivers, cell);
   EXPECT_EQ(outcome.Failed, 0);
-  EXPECT_GT(outcome.Checked, 100);
+  // At least half the 40 receivers' channels: a binary technique skips those within its
+  // tolerance of the threshold (a cached one's grid widens that: 90 of 120).
+  EXPECT_GE(outcome.Checked, 60);
 }
 
 
@@ -250,6 +252,18 @@ const glm::dvec3 Orange{ 1.0, 0.6, 0.2 };
 }
 
 // Grey techniques on a mesh receiver: the ground under a translucent ball.
+// Every technique of the registry, cached or not, on the scenes every kind serves: the
+// ball's shadow on the ground and the slab's own samples. A new technique is here without
+// an edit; the tests below keep the variants (chunked nodes, coloured media, other lights).
+TEST(ClosedFormShadows, EveryRegistryTechnique)
+{
+  for (const std::string& name : RegistryTechniques())
+  {
+    CheckBallOnGround(name);
+    CheckSlabSelfShadow(name);
+  }
+}
+
 TEST(ClosedFormShadows, RaysOnAGroundUnderABall) { CheckBallOnGround("rays"); }
 TEST(ClosedFormShadows, DeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("dsm"); }
 TEST(ClosedFormShadows, ChunkedDeepShadowMapOnAGroundUnderABall) { CheckBallOnGround("dsm:chunk-nodes=4"); }
