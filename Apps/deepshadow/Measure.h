@@ -50,8 +50,8 @@ struct Measurement
   std::vector<std::string> Features;     // shader features composed
   Image Picture;    // at the error size, start view
   Image ShadowTerm; // the same, shadow term alone (empty unless asked for)
-  // The technique's own statistics after the first frame at the start view (its build or
-  // analysis; see vtkDeepShadowTechnique::GetStatistics()).
+  // The technique's own statistics after the camera-only frames: its last build, or the last
+  // camera frame's analysis (see vtkDeepShadowTechnique::GetStatistics()).
   vtkDeepShadowTechnique::Statistics Statistics;
 };
 
