@@ -5,7 +5,7 @@
 
 #include "Core/Light.h"
 #include "Core/OpticalModel.h"
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
 
 #include <glm/vec3.hpp>
 

@@ -7,7 +7,7 @@
 #ifndef deepshadow_PassFrame_h
 #define deepshadow_PassFrame_h
 
-#include "Volume/ShadowContext.h"
+#include "Sampling/ShadowContext.h"
 
 #include <map>
 #include <memory>

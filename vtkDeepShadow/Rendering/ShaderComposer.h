@@ -30,6 +30,14 @@ private:
   std::map<std::string, std::string> Parts;
 };
 
+/** The features a shader is composed of. */
+struct ComposedFeatures
+{
+  std::set<std::string> Enabled;                // embedded features, by name
+  std::map<std::string, ShaderFeature> Runtime; // built for this frame (they count as enabled)
+  std::vector<std::string> Labels;              // reported after Enabled (e.g. "Shadow:DSM")
+};
+
 /** The features embedded in the library (each .glsl of Shaders/Features), by name (Jitter, Phong, ...). */
 const std::map<std::string, ShaderFeature>& EmbeddedShaderFeatures();
 

@@ -2,7 +2,7 @@
 
 #include "PassFrame.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "Volume/ShadowContext.h"
+#include "Sampling/ShadowContext.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
 #include "vtkDeepShadowPolyDataMapper.h"

@@ -5,7 +5,9 @@
 #include "PassFrame.h"
 #include "ShaderComposer.h"
 #include "Shadows/OtherVolumeShadows.h"
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/SamplingFeatures.h"
+#include "Sampling/ShadowContext.h"
 #include "Core/Geometry/PolygonTriangulation.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
@@ -329,33 +331,33 @@ namespace
 // receives, with what the other volumes cast, a peeled layer, or the shadow term on request.
 void ChooseSurfaceFeatures(vtkDeepShadowTechnique* technique, const deepshadow::ShadowContext* context,
   const deepshadow::OtherVolumeShadows* others, const deepshadow::PeelStep* peel, bool shadowTerm,
-  std::set<std::string>& features, std::map<std::string, deepshadow::ShaderFeature>& runtime)
+  deepshadow::ComposedFeatures& features)
 {
   if (technique)
   {
     // The technique's own lookup: a cache's grid covers the volume's box only.
-    context->AddVolumeFeatures(features, runtime, technique->NeedsFeeler(true));
-    runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource(true));
+    deepshadow::ComposeSamplingFeatures({ *context, technique->NeedsFeeler(true) }, features);
+    features.Runtime["Shadow"] = deepshadow::ShaderFeature("Shadow", technique->GetShaderFeatureSource(true));
     if (technique->NeedsFeeler(true))
     {
-      features.insert("Feeler");
+      features.Enabled.insert("Feeler");
     }
     for (const std::string& feature : technique->GetLookupFeatures(true))
     {
-      features.insert(feature);
+      features.Enabled.insert(feature);
     }
   }
   if (others)
   {
-    features.insert({ "OtherVolumeShadows", "ShadowGrid" });
+    features.Enabled.insert({ "OtherVolumeShadows", "ShadowGrid" });
   }
   if (peel)
   {
-    features.insert("Peel");
+    features.Enabled.insert("Peel");
   }
   if (shadowTerm)
   {
-    features.insert("ShadowTerm");
+    features.Enabled.insert("ShadowTerm");
   }
 }
 
@@ -385,8 +387,7 @@ void BindShadowInputs(deepshadow::UniformSink& sink, vtkDeepShadowTechnique* tec
 {
   if (technique)
   {
-    context->ActivateVolumeTextures();
-    context->SetVolumeUniforms(sink);
+    deepshadow::BindSamplingFeatures({ *context, technique->NeedsFeeler(true) }, sink);
     vtkDeepShadowTechnique::Internals::Bind(technique, sink, *context, true);
     const double bias = shadowBias > 0.0
       ? shadowBias
@@ -415,7 +416,7 @@ void UnbindShadowInputs(vtkDeepShadowTechnique* technique, const deepshadow::Sha
   if (technique)
   {
     technique->Unbind(true);
-    context->DeactivateVolumeTextures();
+    deepshadow::UnbindSamplingFeatures({ *context, technique->NeedsFeeler(true) });
   }
   if (others)
   {
@@ -590,12 +591,12 @@ void vtkDeepShadowPolyDataMapper::RenderPiece(vtkRenderer* renderer, vtkActor* a
   const deepshadow::OtherVolumeShadows* others =
     technique && passOthers && passOthers->Any() ? passOthers : nullptr;
   const deepshadow::PeelStep* peel = impl.Peel;
-  std::set<std::string> features{ "Lighting", "Phong", "MeshNormal" };
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  ChooseSurfaceFeatures(
-    technique, context, others, peel, this->OutputMode == OutputShadowTerm, features, runtime);
-  const std::string source = deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features, runtime);
-  this->ShaderFeatures.assign(features.begin(), features.end());
+  deepshadow::ComposedFeatures features;
+  features.Enabled = { "Lighting", "Phong", "MeshNormal" };
+  ChooseSurfaceFeatures(technique, context, others, peel, this->OutputMode == OutputShadowTerm, features);
+  const std::string source =
+    deepshadow::ComposeShader(vtkDeepShadowSurfaceFS, features.Enabled, features.Runtime);
+  this->ShaderFeatures.assign(features.Enabled.begin(), features.Enabled.end());
   if (technique)
   {
     this->ShaderFeatures.push_back("Shadow:" + technique->GetName());

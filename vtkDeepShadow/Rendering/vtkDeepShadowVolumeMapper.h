@@ -28,7 +28,8 @@
  *
  * The shader is composed from the features in use (VolumeSampling, EmptySpace, Lighting,
  * Phong, Jitter, OpaqueDepth, a technique's Shadow...: one component each, listed in
- * Rendering/RayCast/VolumeFeatures.cxx): see GetShaderFeatures() and GetFragmentShaderSource().
+ * Rendering/Sampling/SamplingFeatures.cxx for the data's and Rendering/RayCast/VolumeFeatures.cxx
+ * for the view's): see GetShaderFeatures() and GetFragmentShaderSource().
  * Work is redone only when what it depends on changed; the counters below make that
  * observable.
  *

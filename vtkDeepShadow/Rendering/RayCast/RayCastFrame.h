@@ -5,7 +5,7 @@
 
 #include "Core/Camera.h"
 #include "Core/Projection.h"
-#include "Volume/ShadowContext.h"
+#include "Sampling/ShadowContext.h"
 
 #include <glm/mat3x3.hpp>
 

@@ -7,6 +7,7 @@
 #include "Translucency/TranslucentLayers.h"
 #include "RayCast/RayCastFrame.h"
 #include "RayCast/UserShaderCode.h"
+#include "Sampling/SamplingFeatures.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkCamera.h"
@@ -28,13 +29,15 @@ namespace
 {
 using Frame = RayCastFrame;
 
-// The volume and the template's own uniforms: the ray (camera, viewport, step) and the table.
-void BindSampling(const Frame& f, UniformSink& sink)
+// The sampling features of the same name (Sampling/SamplingFeatures) composed these entries'
+// GLSL and bind the volume's part; the entries bind what the view adds.
+void ComposedBySampling(const Frame&, ComposedFeatures&) {}
+
+// The template's own uniforms: the ray (camera, viewport, step) and the view's table.
+void BindViewRay(const Frame& f, UniformSink& sink)
 {
   const ShadowContext& c = f.Context;
-  c.Volume->Activate();
   f.Transfer->Activate();
-  c.SetSamplingUniforms(sink);
   sink.Set("u_transfer", f.Transfer->GetTextureUnit());
   sink.Set("u_boxMax", glm::vec3(c.Dims - 1));
   sink.Set("u_clipToWorld", glm::mat4(f.View.GetInverseViewProjection()));
@@ -47,28 +50,15 @@ void BindSampling(const Frame& f, UniformSink& sink)
   sink.Set("u_terminationOpacity", f.TerminationOpacity);
 }
 
-void UnbindSampling(const Frame& f)
-{
-  f.Context.Volume->Deactivate();
-  f.Transfer->Deactivate();
-}
-
-// Components 1..: their textures and the view's tables, each component's material, and their
-// gradient opacities.
-void BindComponents(const Frame& f, UniformSink& sink)
+// Components 1..'s tables of the view, and each component's material.
+void BindComponentTables(const Frame& f, UniformSink& sink)
 {
   const ShadowContext& c = f.Context;
   for (size_t i = 0; i < c.OtherComponents.size(); ++i)
   {
-    c.OtherComponents[i].Texture->Activate();
     f.ComponentTransfers[i]->Activate();
     sink.Set(("u_componentTransfer" + std::to_string(i + 1)).c_str(), f.ComponentTransfers[i]->GetTextureUnit());
   }
-  if (c.ComponentGradientTable)
-  {
-    c.ComponentGradientTable->Activate();
-  }
-  c.SetComponentUniforms(sink);
   for (int i = 0; i <= static_cast<int>(c.OtherComponents.size()); ++i)
   {
     // Dependent components are lit with component 0's material (as VTK's).
@@ -78,16 +68,11 @@ void BindComponents(const Frame& f, UniformSink& sink)
   }
 }
 
-void UnbindComponents(const Frame& f)
+void UnbindComponentTables(const Frame& f)
 {
-  for (size_t i = 0; i < f.Context.OtherComponents.size(); ++i)
+  for (vtkTextureObject* table : f.ComponentTransfers)
   {
-    f.Context.OtherComponents[i].Texture->Deactivate();
-    f.ComponentTransfers[i]->Deactivate();
-  }
-  if (f.Context.ComponentGradientTable)
-  {
-    f.Context.ComponentGradientTable->Deactivate();
+    table->Deactivate();
   }
 }
 
@@ -124,31 +109,10 @@ void BindProjection(const Frame& f, UniformSink& sink)
   }
 }
 
-// A binary mask or a label map (and its labels' tables).
-void BindMask(const Frame& f, UniformSink& sink)
-{
-  f.Context.Mask->Activate();
-  if (f.Context.LabelTable)
-  {
-    f.Context.LabelTable->Activate();
-  }
-  f.Context.SetMaskUniforms(sink);
-  sink.Set("u_labelUnlitWeight", f.ShadowTerm ? 0.0f : 1.0f);
-}
-
-void UnbindMask(const Frame& f)
-{
-  f.Context.Mask->Deactivate();
-  if (f.Context.LabelTable)
-  {
-    f.Context.LabelTable->Deactivate();
-  }
-}
-
 // Surfaces are met by the feelers of lookups only; light-space builds have their own.
-bool SurfacesMet(const Frame& f)
+SamplingUse Sampling(const Frame& f)
 {
-  return f.Technique && f.Technique->NeedsFeeler() && f.Context.Surfaces;
+  return { f.Context, f.Technique && f.Technique->NeedsFeeler() };
 }
 
 // Gradient shading; the shadow term needs no normal.
@@ -230,71 +194,24 @@ void ComposeShadow(const Frame& f, ComposedFeatures& features)
 
 namespace
 {
-// What the volume's data holds: its components, opacity modifiers, mask, empty space, bounds.
+// What the view adds to the volume's data features.
 std::vector<VolumeFeature> DataFeatures()
 {
   return {
-    { "VolumeSampling", [](const Frame&) { return true; }, nullptr, BindSampling, UnbindSampling },
-    { "Components", [](const Frame& f) { return !f.Context.OtherComponents.empty(); },
-      [](const Frame& f, ComposedFeatures& features) {
-        features.Runtime["Components"] = ComponentsShaderFeature(1 + static_cast<int>(f.Context.OtherComponents.size()),
-          static_cast<int>(f.Context.Mode), f.Context.ComponentsLitApart, f.Context.ComponentGradientTable != nullptr);
-        features.Labels.emplace_back("Components");
-      },
-      BindComponents, UnbindComponents },
-    { "GradientOpacity", [](const Frame& f) { return f.Context.GradientOpacityTable != nullptr; }, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        f.Context.GradientOpacityTable->Activate();
-        f.Context.SetGradientOpacityUniforms(sink);
-      },
-      [](const Frame& f) { f.Context.GradientOpacityTable->Deactivate(); } },
-    // The light's per-sample opacity factor, which the two above set in the feelers (a label
-    // map replaces opacity instead).
-    { "OpacityScale",
-      [](const Frame& f) { return f.Context.GradientOpacityTable || f.Context.MaskFeature() == "Mask"; },
-      nullptr, nullptr, nullptr },
-    { "Transfer2D", [](const Frame& f) { return f.Context.Transfer2DImage != nullptr; }, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        f.Context.Transfer2DImage->Activate();
-        f.Context.SetTransfer2DUniforms(sink);
-      },
-      [](const Frame& f) { f.Context.Transfer2DImage->Deactivate(); } },
-    { "Mask", [](const Frame& f) { return f.Context.MaskFeature() == "Mask"; }, nullptr, BindMask,
-      UnbindMask },
-    { "LabelMap", [](const Frame& f) { return f.Context.MaskFeature() == "LabelMap"; }, nullptr,
-      BindMask, UnbindMask },
-    { "EmptySpace", [](const Frame& f) { return f.Context.Occupancy != nullptr; }, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        f.Context.Occupancy->Activate();
-        f.Context.SetEmptySpaceUniforms(sink);
-      },
-      [](const Frame& f) { f.Context.Occupancy->Deactivate(); } },
-    { "TriangleHierarchy", [](const Frame& f) { return f.Context.Bound || SurfacesMet(f); }, nullptr, nullptr,
+    { "VolumeSampling", [](const Frame&) { return true; }, ComposedBySampling, BindViewRay,
+      [](const Frame& f) { f.Transfer->Deactivate(); } },
+    { "Components", [](const Frame& f) { return !f.Context.OtherComponents.empty(); }, ComposedBySampling,
+      BindComponentTables, UnbindComponentTables },
+    { "LabelMap", [](const Frame& f) { return f.Context.MaskFeature() == "LabelMap"; }, ComposedBySampling,
+      [](const Frame& f, UniformSink& sink) { sink.Set("u_labelUnlitWeight", f.ShadowTerm ? 0.0f : 1.0f); },
       nullptr },
-    { "Bound", [](const Frame& f) { return f.Context.Bound != nullptr; },
-      [](const Frame& f, ComposedFeatures& features) {
-        features.Runtime["Bound"] = BoundShaderFeature(static_cast<int>(f.Context.Bound->LeafRoots.size()));
-        features.Labels.emplace_back("Bound");
-      },
+    { "Isosurface", [](const Frame& f) { return !f.Context.IsoValues.empty(); }, ComposedBySampling,
       [](const Frame& f, UniformSink& sink) {
-        f.Context.Bound->Nodes->Activate();
-        f.Context.Bound->Triangles->Activate();
-        f.Context.SetBoundUniforms(sink);
+        sink.Set("u_isoReceiverOffset", f.Technique ? static_cast<float>(IsoReceiverOffset(
+                                                        f.Technique->GetStepFactor() * f.Context.ShadowStep))
+                                                    : 0.0f);
       },
-      [](const Frame& f) {
-        f.Context.Bound->Nodes->Deactivate();
-        f.Context.Bound->Triangles->Deactivate();
-      } },
-    { "Surfaces", SurfacesMet, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        f.Context.Surfaces->Nodes->Activate();
-        f.Context.Surfaces->Triangles->Activate();
-        f.Context.SetSurfacesUniforms(sink);
-      },
-      [](const Frame& f) {
-        f.Context.Surfaces->Nodes->Deactivate();
-        f.Context.Surfaces->Triangles->Deactivate();
-      } },
+      nullptr },
   };
 }
 
@@ -337,15 +254,6 @@ std::vector<VolumeFeature> ShadingFeatures()
       [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },
     { "Projection", [](const Frame& f) { return f.Projection.Mode != BlendMode::Composite; }, nullptr,
       BindProjection, nullptr },
-    // Its contour values are the volume's (ShadowContext::SetSamplingUniforms): shadow passes
-    // read them too.
-    { "Isosurface", [](const Frame& f) { return !f.Context.IsoValues.empty(); }, nullptr,
-      [](const Frame& f, UniformSink& sink) {
-        sink.Set("u_isoReceiverOffset", f.Technique ? static_cast<float>(IsoReceiverOffset(
-                                                        f.Technique->GetStepFactor() * f.Context.ShadowStep))
-                                                    : 0.0f);
-      },
-      nullptr },
   };
 }
 
@@ -401,6 +309,7 @@ const std::vector<VolumeFeature>& VolumeFeatures()
 ComposedFeatures ComposeVolumeFeatures(const RayCastFrame& frame)
 {
   ComposedFeatures composed;
+  ComposeSamplingFeatures(Sampling(frame), composed);
   for (const VolumeFeature& feature : VolumeFeatures())
   {
     if (!feature.Enabled(frame))
@@ -421,6 +330,7 @@ ComposedFeatures ComposeVolumeFeatures(const RayCastFrame& frame)
 
 void BindVolumeFeatures(const RayCastFrame& frame, UniformSink& sink)
 {
+  BindSamplingFeatures(Sampling(frame), sink);
   for (const VolumeFeature& feature : VolumeFeatures())
   {
     if (feature.Bind && feature.Enabled(frame))
@@ -439,6 +349,7 @@ void UnbindVolumeFeatures(const RayCastFrame& frame)
       feature.Unbind(frame);
     }
   }
+  UnbindSamplingFeatures(Sampling(frame));
 }
 
 }

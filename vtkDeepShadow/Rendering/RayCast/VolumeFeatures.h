@@ -1,30 +1,20 @@
 // Internal: the ray caster's features, one component each, registered in one list
 // (VolumeFeatures.cxx), as Inviwo's raycaster components are. A component names its GLSL
 // (Shaders/Features/<Name>.glsl, embedded by the module's CMake without a list), says from the
-// frame's state when it is on, and binds and unbinds its uniforms and textures. Adding a
-// feature: its .glsl file, its tag in the template, and one entry in the list.
+// frame's state when it is on, and binds and unbinds its uniforms and textures. The volume's
+// data features (Sampling/SamplingFeatures.h) come first; these are what the view adds. Adding
+// a feature: its .glsl file, its tag in the template, and one entry in the list.
 #ifndef vtkDeepShadowVolumeFeatures_h
 #define vtkDeepShadowVolumeFeatures_h
 
 #include "ShaderComposer.h"
 
-#include <map>
-#include <set>
-#include <string>
 #include <vector>
 
 namespace deepshadow
 {
 struct RayCastFrame;
 class UniformSink;
-
-/** The features a shader is composed of. */
-struct ComposedFeatures
-{
-  std::set<std::string> Enabled;                // embedded features, by name
-  std::map<std::string, ShaderFeature> Runtime; // built for this frame (they count as enabled)
-  std::vector<std::string> Labels;              // reported after Enabled (e.g. "Shadow:DSM")
-};
 
 struct VolumeFeature
 {
@@ -40,10 +30,10 @@ struct VolumeFeature
   void (*Unbind)(const RayCastFrame& frame);
 };
 
-/** Every feature of the ray caster, in the order they are bound. */
+/** The view's features of the ray caster, in the order they are bound (after the data's). */
 const std::vector<VolumeFeature>& VolumeFeatures();
 
-/** The enabled features' GLSL. */
+/** The enabled features' GLSL, the data's and the view's. */
 ComposedFeatures ComposeVolumeFeatures(const RayCastFrame& frame);
 /** Binds, then unbinds, every enabled feature. */
 void BindVolumeFeatures(const RayCastFrame& frame, UniformSink& sink);

@@ -1,6 +1,7 @@
 #include "OtherVolumeShadows.h"
 
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "vtkOpenGLRenderWindow.h"

@@ -3,7 +3,7 @@
 #include "GL/GLObjects.h"
 #include "GL/UniformSink.h"
 #include "ShaderComposer.h"
-#include "Volume/ShadowContext.h"
+#include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowLightSpaceCS.h"
 #include "vtkDeepShadowPageRequestsCS.h"
 #include "vtkDeepShadowShadowMapBuild.h"

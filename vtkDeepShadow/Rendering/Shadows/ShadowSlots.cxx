@@ -1,6 +1,6 @@
 #include "ShadowSlots.h"
 
-#include "Volume/ShadowContext.h"
+#include "Sampling/ShadowContext.h"
 
 namespace deepshadow
 {

@@ -1,7 +1,8 @@
 #include "vtkDeepShadowDeepShadowMapTechnique.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 #include "Core/Shadows.h"
 #include "Core/Shadows/NodeChunks.h"
 #include "NodePool.h"

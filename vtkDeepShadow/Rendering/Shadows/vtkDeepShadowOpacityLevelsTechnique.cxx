@@ -1,7 +1,8 @@
 #include "vtkDeepShadowOpacityLevelsTechnique.h"
 #include "vtkDeepShadowTechniqueInternals.h"
 
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 #include "Core/Shadows.h"
 #include "vtkDeepShadowOpacityLevels.h"
 #include "vtkDeepShadowOpacityLevelsBuild.h"

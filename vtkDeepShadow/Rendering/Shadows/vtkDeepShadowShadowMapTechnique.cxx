@@ -2,7 +2,8 @@
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "ShaderComposer.h"
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 #include "Core/Shadows/ShadowMap.h"
 #include "vtkDeepShadowShadowMap.h"
 #include "vtkDeepShadowShadowMapBuild.h"

@@ -1,7 +1,9 @@
 #include "vtkDeepShadowTechniqueInternals.h"
 
 #include "Core/OpticalModel.h"
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/SamplingFeatures.h"
+#include "Sampling/ShadowContext.h"
 #include "Volume/TransferTableTexture.h"
 #include "ShadowSlots.h"
 #include "Core/Shadows/ShadowGrid.h"
@@ -570,28 +572,29 @@ bool Internals::BeginBuildPass(vtkDeepShadowTechnique* self, deepshadow::Compute
   const std::string& shaderTemplate, const deepshadow::ShadowContext& context,
   const std::string& runtimeName, const std::string& runtimeSource)
 {
-  std::set<std::string> features{ "Feeler" };
-  std::map<std::string, deepshadow::ShaderFeature> runtime;
-  context.AddVolumeFeatures(features, runtime, true);
+  // Builds march through the casting surfaces too.
+  const deepshadow::SamplingUse use{ context, true };
+  deepshadow::ComposedFeatures features;
+  features.Enabled.insert("Feeler");
+  deepshadow::ComposeSamplingFeatures(use, features);
   for (const std::string& feature : self->GetBuildFeatures())
   {
-    features.insert(feature);
+    features.Enabled.insert(feature);
   }
   if (!runtimeName.empty())
   {
-    runtime[runtimeName] = deepshadow::ShaderFeature(runtimeName, runtimeSource);
+    features.Runtime[runtimeName] = deepshadow::ShaderFeature(runtimeName, runtimeSource);
   }
-  if (!program.Build(deepshadow::ComposeShader(shaderTemplate, features, runtime)))
+  if (!program.Build(deepshadow::ComposeShader(shaderTemplate, features.Enabled, features.Runtime)))
   {
     self->LastError = program.Error();
     return false;
   }
   self->Impl->PassStart = NowMilliseconds();
-  context.ActivateVolumeTextures();
   self->ActivateFeelerTable();
   program.Use();
   deepshadow::UniformSink sink(&program);
-  context.SetVolumeUniforms(sink);
+  deepshadow::BindSamplingFeatures(use, sink);
   SetFeelerUniforms(self, sink, context);
   return true;
 }
@@ -600,7 +603,7 @@ void Internals::EndBuildPass(vtkDeepShadowTechnique* self, const deepshadow::Sha
 {
   glFinish(); // the build time includes the GPU's work
   self->DeactivateFeelerTable();
-  context.DeactivateVolumeTextures();
+  deepshadow::UnbindSamplingFeatures({ context, true });
   // VTK tracks the bound program; ours replaced it.
   context.Window->GetShaderCache()->ReleaseCurrentShader();
   self->Impl->PassMilliseconds += NowMilliseconds() - self->Impl->PassStart;

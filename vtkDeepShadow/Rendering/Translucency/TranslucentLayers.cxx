@@ -1,6 +1,7 @@
 #include "TranslucentLayers.h"
 
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowLayersFS.h"
 
 #include "vtkOpenGLFramebufferObject.h"

@@ -1,7 +1,8 @@
 #include "VolumeSegments.h"
 
 #include "GL/FramebufferCopy.h"
-#include "Volume/ShadowContext.h"
+#include "GL/UniformSink.h"
+#include "Sampling/ShadowContext.h"
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"

@@ -1,13 +1,11 @@
-// Internal: the GPU view of a volume: what vtkDeepShadowVolumeMapper's holders (this folder)
-// hold for one frame, handed to the ray caster's features, the shadow techniques and the mesh
-// receivers.
+// Internal: the GPU view of a volume: what vtkDeepShadowVolumeMapper's holders (Volume/) hold
+// for one frame, as plain data, handed to the ray caster, the shadow techniques and the mesh
+// receivers. The features that read it compose and bind themselves (SamplingFeatures.h).
 #ifndef vtkDeepShadowShadowContext_h
 #define vtkDeepShadowShadowContext_h
 
-#include "GL/UniformSink.h"
 #include "Core/Light.h"
 #include "Core/VolumeShading.h"
-#include "ShaderComposer.h"
 #include "Volume/TriangleHierarchy.h"
 #include "Core/Camera.h"
 #include "Core/Components.h"
@@ -23,8 +21,6 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include <map>
-#include <set>
 #include <string>
 #include <optional>
 #include <vector>
@@ -159,31 +155,6 @@ struct ShadowContext
    * and the mask's version, to compare builds by.
    */
   std::vector<double> TransferKey(bool colors) const;
-
-  /**
-   * The features that read the volume as this context holds it: VolumeSampling, Isosurface
-   * (under isosurface blending), GradientOpacity (if it changes anything), Mask, EmptySpace (if
-   * blocks are empty), Bound (runtime) and TriangleHierarchy (if bounded), and Surfaces when
-   * `surfaces` and surfaces cast shadows.
-   */
-  void AddVolumeFeatures(std::set<std::string>& enabled,
-    std::map<std::string, ShaderFeature>& runtime, bool surfaces) const;
-  /** Uniforms of the VolumeSampling, EmptySpace, Bound and Surfaces features. */
-  void SetVolumeUniforms(UniformSink& sink) const;
-  /** One of those features' uniforms (its textures active), for the ray caster's features. */
-  void SetSamplingUniforms(UniformSink& sink) const;
-  void SetEmptySpaceUniforms(UniformSink& sink) const;
-  void SetGradientOpacityUniforms(UniformSink& sink) const;
-  void SetMaskUniforms(UniformSink& sink) const;
-  /** Feature Transfer2D's uniforms (the image, its maps, the gradient's measure). */
-  void SetTransfer2DUniforms(UniformSink& sink) const;
-  /** Feature Components' volume uniforms (textures, maps, ranges, weights). */
-  void SetComponentUniforms(UniformSink& sink) const;
-  void SetBoundUniforms(UniformSink& sink) const;
-  void SetSurfacesUniforms(UniformSink& sink) const;
-  /** Binds (releases) the textures those features read. */
-  void ActivateVolumeTextures() const;
-  void DeactivateVolumeTextures() const;
 };
 
 }
