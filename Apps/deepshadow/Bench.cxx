@@ -296,6 +296,7 @@ int RunBench(const Options& options)
       .Set("height", options.Height)
       .Set("frames", options.Frames)
       .Set("backend", window->GetBackendAsString())
+      .Set("gl_renderer", RendererString(window))
       .Set("rows", rows);
     Outputs outputs;
     outputs.Write(options.Json, all.FileText());

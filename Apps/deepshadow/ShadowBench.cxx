@@ -57,9 +57,11 @@ int RunShadowBench(const Options& options)
   std::printf("%-8s %-24s %9s %8s %8s %9s %11s %9s %8s %s\n", "scene", "technique", "frame_ms",
     "camera", "light", "build_ms", "bytes", "rmse", "max", "nodes avg/max");
   std::vector<Json> rows;
+  std::string renderer;
   for (const std::string& name : scenes)
   {
     SceneBench bench(options, name);
+    renderer = RendererString(bench.Setup().Window);
     const Measurement none = bench.Measure(nullptr, false);
     const double baseline = none.CameraMs;
     const GroundTruth& truth = bench.Truth(false);
@@ -116,6 +118,7 @@ int RunShadowBench(const Options& options)
       .Set("error_width", options.ErrorWidth)
       .Set("error_height", options.ErrorHeight)
       .Set("frames", options.Frames)
+      .Set("gl_renderer", renderer)
       .Set("rows", rows);
     Outputs outputs;
     outputs.Write(options.Json, all.FileText());

@@ -1,0 +1,199 @@
+#!/usr/bin/env python3
+"""Measures one of the documentation's tables and writes it, stamped, as a page of its own.
+
+    scripts/measured-tables.py TABLE [--tool build/bin/deepshadow] [--out Documentation/Measured]
+    scripts/measured-tables.py --check FILE...
+
+TABLE is one of the names below. The page says what measured it (the command), where (commit,
+machine, GL renderer) and when, and ends with a digest of its text: --check recomputes the
+digest and fails on a page edited by hand (Documentation.MeasuredTables runs it over every
+page). --quick measures a tiny case instead, to test the script itself; its pages are marked
+so and --check refuses them in the documentation.
+"""
+import argparse
+import hashlib
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+from datetime import datetime, timezone
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DIGEST = "<!-- measured-tables digest: "
+
+
+def number(value, digits):
+    return "-" if value is None else f"{value:.{digits}f}"
+
+
+def vtk_mapper_rows(data):
+    header = ["scene", "dims", "shaded", "blend", "ours ms", "ours, no skipping", "VTK ms", "ratio",
+              "ratio, no skipping", "empty blocks"]
+    rows = []
+    for r in data["rows"]:
+        rows.append([r["scene"], r["dims"], "yes" if r["shade"] else "no", r["blend"],
+                     number(r["ours_ms"], 1), number(r["ours_no_skipping_ms"], 1), number(r["vtk_ms"], 1),
+                     number(r["ratio"], 2), number(r["ratio_no_skipping"], 2),
+                     f"{100 * r['empty_block_fraction']:.0f} %"])
+    return header, rows
+
+
+def shadow_technique_rows(data):
+    header = ["scene", "technique", "frame ms", "camera moves", "light moves", "build ms", "MiB",
+              "RMSE", "max", "unshadowed RMSE", "nodes avg/max"]
+    rows = []
+    for r in data["rows"]:
+        nodes = ""
+        if r.get("dsm_nodes_max"):
+            nodes = f"{r['dsm_nodes_avg']:.2f}/{r['dsm_nodes_max']:.0f}"
+        build = r["build_ms"]
+        rows.append([r["scene"], r["technique"], number(r["camera_ms"], 1), number(r["camera_ratio"], 2),
+                     number(r["light_ratio"], 2), number(build, 0) if build > 0 else "-",
+                     number(r["shadow_bytes"] / 2**20, 1), number(r["rmse"], 5), number(r["max_abs"], 3),
+                     number(r["unshadowed_rmse"], 5), nodes])
+    return header, rows
+
+
+TABLES = {
+    "vtk-mapper": {
+        "title": "Ours against VTK's vtkGPUVolumeRayCastMapper",
+        "about": "Same scenes, views, key light and sample distance in one run; median frame time "
+                 "of a slow orbit after warm-up frames. \"No skipping\" takes every sample, as VTK's "
+                 "mapper does; \"empty blocks\" is the fraction empty-space skipping jumps over.",
+        "args": ["bench", "--size", "512x512", "--frames", "5", "--bench-sizes", "128,256"],
+        "quick": ["bench", "--size", "64x64", "--frames", "1", "--bench-sizes", "32"],
+        "rows": vtk_mapper_rows,
+    },
+    "shadow-techniques": {
+        "title": "Shadow techniques: run time and error",
+        "about": "Per standard scene and technique (each at its defaults, cached where the "
+                 "registry's quick sweep caches it): the frame time while only the camera orbits, "
+                 "its ratio to the unshadowed frame of the same run and the ratio while the key "
+                 "light turns (a rebuild every frame), the build time, the shadow memory, and the "
+                 "error against the ground truth (CPU, translucent shadow rays at a quarter step, "
+                 "coloured for coloured techniques) at the error size.",
+        "args": ["shadow-bench", "--size", "512x512", "--error-size", "256x256", "--frames", "5"],
+        "quick": ["shadow-bench", "--scenes", "box", "--techniques", "shadowmap,dsm", "--size", "64x64",
+                  "--error-size", "32x32", "--frames", "1"],
+        "rows": shadow_technique_rows,
+    },
+}
+
+
+def git(*args):
+    try:
+        return subprocess.run(["git", "-C", ROOT, *args], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def machine():
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    memory = ""
+    try:
+        pages = os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+        memory = f", {pages / 2**30:.0f} GiB"
+    except (ValueError, OSError):
+        pass
+    distribution = ""
+    try:
+        with open("/etc/os-release") as f:
+            fields = dict(line.rstrip("\n").split("=", 1) for line in f if "=" in line)
+        distribution = fields.get("PRETTY_NAME", "").strip('"') + ", "
+    except OSError:
+        pass
+    return f"{distribution}{cpu}, {os.cpu_count()} cores{memory}"
+
+
+def digest(text):
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def page(name, spec, data, command, quick):
+    header, rows = spec["rows"](data)
+    commit = git("rev-parse", "--short", "HEAD") or "unknown"
+    if git("status", "--porcelain", "--untracked-files=no"):
+        commit += " with uncommitted changes"
+    stamp = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    lines = [
+        f"# {spec['title']}" + (" (quick test run, not a measurement)" if quick else ""),
+        "",
+        f"Written by `scripts/measured-tables.py {name}`: do not edit by hand, run it again.",
+        f"Measured at commit {commit}, {stamp}, on {machine()}; GL: {data.get('gl_renderer', 'unknown')}.",
+        f"Command: `{command}`.",
+        "",
+        spec["about"],
+        "",
+        "| " + " | ".join(header) + " |",
+        "|" + "---|" * len(header),
+    ]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    text = "\n".join(lines) + "\n"
+    return text + DIGEST + digest(text) + (" quick" if quick else "") + " -->\n"
+
+
+def check(paths, allow_quick):
+    bad = 0
+    for path in paths:
+        with open(path) as f:
+            text = f.read()
+        at = text.rfind(DIGEST)
+        if at < 0:
+            print(f"{path}: no digest line (not written by scripts/measured-tables.py)")
+            bad += 1
+            continue
+        fields = text[at + len(DIGEST):].split()
+        if fields[0] != digest(text[:at]):
+            print(f"{path}: edited by hand since it was measured (run scripts/measured-tables.py again)")
+            bad += 1
+        elif "quick" in fields[1:2] and not allow_quick:
+            print(f"{path}: a quick test run, not a measurement")
+            bad += 1
+    return 1 if bad else 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("table", nargs="?", choices=sorted(TABLES))
+    parser.add_argument("--tool", default=os.path.join(ROOT, "build", "bin", "deepshadow"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "Documentation", "Measured"))
+    parser.add_argument("--quick", action="store_true", help="a tiny case, to test this script")
+    parser.add_argument("--check", nargs="+", metavar="FILE", help="check pages' digests")
+    parser.add_argument("--allow-quick", action="store_true", help="with --check: accept quick pages")
+    options = parser.parse_args()
+    if options.check:
+        return check(options.check, options.allow_quick)
+    if not options.table:
+        parser.error("give a table or --check")
+    spec = TABLES[options.table]
+    args = spec["quick"] if options.quick else spec["args"]
+    with tempfile.TemporaryDirectory() as work:
+        result = os.path.join(work, "result.json")
+        # The tool prints its rows as it goes: progress on a long run.
+        if subprocess.run([options.tool, *args, "--json", result], stdout=sys.stderr).returncode != 0:
+            print(f"measured-tables: {options.tool} {' '.join(args)} failed", file=sys.stderr)
+            return 1
+        with open(result) as f:
+            data = json.load(f)
+    command = "deepshadow " + " ".join(args)
+    os.makedirs(options.out, exist_ok=True)
+    path = os.path.join(options.out, options.table + ".md")
+    with open(path, "w") as f:
+        f.write(page(options.table, spec, data, command, options.quick))
+    print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
