@@ -74,7 +74,7 @@ TABLES = {
                  "light turns (a rebuild every frame), the build time, the shadow memory, and the "
                  "error against the ground truth (CPU, translucent shadow rays at a quarter step, "
                  "coloured for coloured techniques) at the error size.",
-        "args": ["shadow-bench", "--size", "512x512", "--error-size", "256x256", "--frames", "5"],
+        "args": ["shadow-bench", "--size", "256x256", "--error-size", "256x256", "--frames", "5"],
         "quick": ["shadow-bench", "--scenes", "box", "--techniques", "shadowmap,dsm", "--size", "64x64",
                   "--error-size", "32x32", "--frames", "1"],
         "rows": shadow_technique_rows,
@@ -123,8 +123,9 @@ def digest(text):
 def page(name, spec, data, command, quick):
     header, rows = spec["rows"](data)
     commit = git("rev-parse", "--short", "HEAD") or "unknown"
-    if git("status", "--porcelain", "--untracked-files=no"):
-        commit += " with uncommitted changes"
+    changed = git("diff", "--name-only", "HEAD").splitlines()
+    if changed:
+        commit += " with uncommitted changes to " + ", ".join(changed[:5]) + (", ..." if len(changed) > 5 else "")
     stamp = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     lines = [
         f"# {spec['title']}" + (" (quick test run, not a measurement)" if quick else ""),
