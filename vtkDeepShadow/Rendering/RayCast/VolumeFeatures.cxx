@@ -195,7 +195,7 @@ void ComposeShadow(const Frame& f, ComposedFeatures& features)
 namespace
 {
 // What the view adds to the volume's data features.
-std::vector<VolumeFeature> DataFeatures()
+std::vector<VolumeFeature> ViewPartsOfDataFeatures()
 {
   return {
     { "VolumeSampling", [](const Frame&) { return true; }, ComposedBySampling, BindViewRay,
@@ -297,7 +297,7 @@ const std::vector<VolumeFeature>& VolumeFeatures()
   // In this order: composition and binding follow it.
   static const std::vector<VolumeFeature> features = [] {
     std::vector<VolumeFeature> all;
-    for (auto group : { DataFeatures(), ShadingFeatures(), ShadowAndMergeFeatures() })
+    for (auto group : { ViewPartsOfDataFeatures(), ShadingFeatures(), ShadowAndMergeFeatures() })
     {
       all.insert(all.end(), group.begin(), group.end());
     }
