@@ -6,6 +6,8 @@
 #include "Core/Shadows.h"
 #include "vtkDeepShadowOpacityLevels.h"
 #include "vtkDeepShadowOpacityLevelsBuild.h"
+#include "vtkDeepShadowSurfaceSteps.h"
+#include "vtkDeepShadowSurfaceStepsBuild.h"
 
 #include "Core/ShadowTechniques.h"
 #include "vtkDeepShadowTechniqueFactory.h"
@@ -101,12 +103,12 @@ unsigned int vtkDeepShadowOpacityLevelsTechnique::GetTexelFormat() const
 
 std::string vtkDeepShadowOpacityLevelsTechnique::GetBuildSource() const
 {
-  return vtkDeepShadowOpacityLevelsBuild;
+  return std::string(vtkDeepShadowSurfaceStepsBuild) + vtkDeepShadowOpacityLevelsBuild;
 }
 
 std::string vtkDeepShadowOpacityLevelsTechnique::GetMapLookupSource() const
 {
-  return vtkDeepShadowOpacityLevels;
+  return std::string(vtkDeepShadowSurfaceSteps) + vtkDeepShadowOpacityLevels;
 }
 
 void vtkDeepShadowOpacityLevelsTechnique::PrintSelf(ostream& os, vtkIndent indent)

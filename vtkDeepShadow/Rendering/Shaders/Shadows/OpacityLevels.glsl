@@ -30,8 +30,7 @@ float levelsVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 s
   float visibility = 1.0 - min(opacity, t.w);
   if (u_shadowLayersPerFace > 1)
   {
-    vec4 steps = lightSpaceTexel(texel, layer + 1);
-    visibility *= depth < steps.x ? 1.0 : depth < steps.z ? steps.y : steps.w;
+    visibility *= surfaceStepsVisibility(lightSpaceTexel(texel, layer + 1), depth);
   }
   return visibility;
 }

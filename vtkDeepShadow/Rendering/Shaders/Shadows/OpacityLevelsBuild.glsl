@@ -1,6 +1,6 @@
 // Build of "dsm3": the depths where the volume's accumulated opacity crosses u_levels and its
 // maximum opacity, one RGBA texel; with casting meshes (two layers a face) their crossings
-// as at most two steps in a second texel (BuildOpacityLevels, SurfaceStepsBuilder and
+// as at most two steps in a second texel (SurfaceStepsBuild.glsl; BuildOpacityLevels and
 // OpacityLevelsShadow in Core/Shadows/OpacityLevels.cxx are the CPU twins): a crossing
 // between two points is placed by the paper's smoothstep; rays stop below 1/512 of what the
 // volume and the meshes let through together, like feelers.
@@ -34,43 +34,9 @@ void levelsPoint(float depth)
   g_previousOpacity = opacity;
 }
 
-// The meshes' steps (deepshadow::SurfaceStepsBuilder): depth and own transmission of up to
-// three; a third folds the more transparent of the last two into the one before it.
-vec3 g_stepDepth;
-vec3 g_stepOwn;
-int g_steps;
-
-void addStep(float depth, float transmission)
-{
-  g_stepDepth[g_steps] = depth;
-  g_stepOwn[g_steps] = transmission;
-  if (++g_steps < 3)
-  {
-    return;
-  }
-  int folded = g_stepOwn[1] > g_stepOwn[2] ? 1 : 2;
-  g_stepOwn[folded - 1] *= g_stepOwn[folded];
-  if (folded == 1)
-  {
-    g_stepDepth[1] = g_stepDepth[2];
-    g_stepOwn[1] = g_stepOwn[2];
-  }
-  g_steps = 2;
-}
-
-float stepsTransmittance()
-{
-  float t = 1.0;
-  for (int k = 0; k < g_steps; ++k)
-  {
-    t *= g_stepOwn[k];
-  }
-  return t;
-}
-
 bool levelsMore()
 {
-  return g_transmittance * stepsTransmittance() > 1.0 / 512.0;
+  return g_transmittance * surfaceStepsTransmittance() > 1.0 / 512.0;
 }
 
 // The volume's visibility starts at its first sample's start.
@@ -101,7 +67,7 @@ bool visitSkipped(int j, float t)
 //@Surface
 bool visitSurface(float t, int surface)
 {
-  addStep(t, u_surfaceTransmission[surface].a);
+  addSurfaceStep(t, u_surfaceTransmission[surface].a);
   return levelsMore();
 }
 //@Texel
@@ -112,7 +78,7 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   g_levelDepth = vec3(NoHit);
   g_maxOpacity = 0.0;
   g_previousOpacity = 0.0;
-  g_steps = 0;
+  resetSurfaceSteps();
   marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   if (g_maxOpacity > 0.0)
   {
@@ -121,14 +87,6 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   imageStore(u_output, ivec3(g_texel, u_layer), vec4(g_levelDepth, g_maxOpacity));
   if (u_layersPerFace > 1)
   {
-    vec4 steps = vec4(NoHit, 1.0, NoHit, 1.0); // depth, transmittance from there; twice
-    float t = 1.0;
-    for (int k = 0; k < g_steps; ++k)
-    {
-      t *= g_stepOwn[k];
-      steps[2 * k] = g_stepDepth[k];
-      steps[2 * k + 1] = t;
-    }
-    imageStore(u_output, ivec3(g_texel, u_layer + 1), steps);
+    imageStore(u_output, ivec3(g_texel, u_layer + 1), surfaceStepsTexel());
   }
 }
