@@ -4,7 +4,7 @@
 // one answer against the closed form within what the technique is allowed, each term with its
 // reason: the march's sampling (a path covers whole samples), where the grid puts the body's
 // surface (trilinear interpolation of its field), feeler termination (1/512), the
-// technique's own bound (epsilon for deep shadow maps, the representation of three opacity
+// technique's own bound (the registry's StatedError: epsilon for deep shadow maps, three opacity
 // levels, 4 standard errors of CSSM's estimate), and the resolution of its lookup (the closed
 // form's own variation over the texels or cache nodes the lookup reads). Binary techniques are
 // judged where the closed form is clearly on one side of their threshold.
@@ -243,22 +243,10 @@ inline double DarkTolerance(const ShadowParameters& p)
 inline double LookupRadius(const ShadowParameters& parameters, const std::vector<ShadowMapFace>& faces,
   const glm::dvec3& p)
 {
-  double texels = 0.0;
-  switch (parameters.Kind)
+  const double texels = ShadowTechniqueOf(parameters).LookupTexels;
+  if (texels == 0.0)
   {
-    case ShadowKind::DeepShadowMap:
-    case ShadowKind::OpacityLevels:
-      texels = 1.5; // bilinear
-      break;
-    case ShadowKind::ShadowMap:
-    case ShadowKind::ResolutionMatched:
-      texels = 2.5; // PCF 3x3 around the nearest texel
-      break;
-    case ShadowKind::Stochastic:
-      texels = 7.5; // the farthest of the 13 offsets, and the nearest texel
-      break;
-    default:
-      return 0.0;
+    return 0.0;
   }
   // Resolution-matched maps without a camera hold their base level alone (4 x 4 pages).
   const PageLayout layout = PageLayout::Of(parameters);
@@ -346,27 +334,9 @@ inline Verdict Judge(const Body& body, const ShadowParameters& parameters, const
     const double color = colored ? body.Color[c] : 0.0;
     double tolerance = SamplingError(exact[c], sigma * (1.0 - color), step) +
       ColoredStepError(sigma, step, color, length) + ShadowTerminationTransmittance + surface[c] + 1e-9;
-    switch (parameters.Kind)
-    {
-      case ShadowKind::DeepShadowMap:
-        // |V' - V| <= epsilon at every sample depth, per map; clustered maps multiply up to
-        // one lookup per cluster along the ray, each within epsilon of its factor.
-        tolerance += parameters.Epsilon * std::max(1, parameters.Clusters);
-        break;
-      case ShadowKind::OpacityLevels:
-        // Three levels joined by smoothsteps (paper 001) approximate an exponential opacity
-        // inside a medium within 0.1 (before 10 %, and between 50 and 90 %); past the
-        // medium (none of it beyond the point, away from the light) the maximum is exact.
-        tolerance += body.Path(at, -toLight, std::numeric_limits<double>::infinity(), 0.0) > 0.0 ? 0.1 : 0.0;
-        break;
-      case ShadowKind::Stochastic:
-        // Unbiased: 4 standard errors of the mean of offsets x photons Bernoulli tests.
-        tolerance += 4.0 * std::sqrt(exact[c] * (1.0 - exact[c]) /
-                             (StochasticOffsets(parameters.Offsets).size() * parameters.Photons));
-        break;
-      default:
-        break;
-    }
+    // The technique's own representation (the registry's StatedError).
+    const bool mediumBehind = body.Path(at, -toLight, std::numeric_limits<double>::infinity(), 0.0) > 0.0;
+    tolerance += ShadowTechniqueOf(parameters).StatedError(parameters, StatedErrorCase{ exact[c], mediumBehind });
     if (IsBinary(parameters))
     {
       // 0 where the accumulated opacity exceeds the threshold, 1 where it does not; only

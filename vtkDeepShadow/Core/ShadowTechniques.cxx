@@ -214,6 +214,7 @@ ShadowTechniqueInfo Technique(const char* name, const char* summary, ShadowKind 
   info.Sweep = std::move(sweep);
   info.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 0; };
   info.FixedBytes = [](const ShadowParameters&, int) -> std::uint64_t { return 0; };
+  info.StatedError = [](const ShadowParameters&, const StatedErrorCase&) { return 0.0; };
   return info;
 }
 
@@ -231,7 +232,15 @@ ShadowTechniqueInfo LightSpaceMap(ShadowTechniqueInfo info)
 {
   info.Keys.insert(info.Keys.begin(), "shadow-map-size");
   info.Defaults = MapDefaults;
+  info.LookupTexels = 1.5; // bilinear
   return info;
+}
+
+// |V' - V| <= epsilon at every sample depth, per map; clustered maps multiply up to one
+// lookup per cluster along the ray, each within epsilon of its factor.
+double DeepShadowMapError(const ShadowParameters& p, const StatedErrorCase&)
+{
+  return p.Epsilon * std::max(1, p.Clusters);
 }
 
 // The techniques, in the order the tool lists them. A technique is one entry here (and its
@@ -254,6 +263,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
       { ":shadow-map-size=2048" }, { ":pcf=none" }, { ":pcf=2x2" }, { ":pcf=poisson" },
       { "-cached" } }));
   map.Binary = true;
+  map.LookupTexels = 2.5; // PCF 3x3 around the nearest texel
   map.MakeShadow = MakeTwin<ShadowMapShadow>;
   map.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 4; };
   list.push_back(map);
@@ -270,6 +280,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
                   { ":shadow-map-size=1024" }, { ":shadow-step-factor=2" }, { "-cached", true },
                   { "-cached:shadow-volume-size=128" } }));
     dsm.Colored = colored;
+    dsm.StatedError = DeepShadowMapError;
     dsm.MakeShadow = MakeTwin<DeepShadowMap>;
     dsm.TexelBytes = [colored](const ShadowParameters& p) -> std::uint64_t {
       // Chunked: a start entry, and at most the pool the layers would take (automatic).
@@ -284,6 +295,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     { { "", true }, { ":clusters=2" }, { ":clusters=8", true }, { ":cluster-distance=0.1" },
       { ":cluster-distance=0.5" }, { ":shadow-map-size=512" } }));
   clustered.Clustered = true;
+  clustered.StatedError = DeepShadowMapError;
   clustered.Defaults = [](ShadowParameters& p) {
     MapDefaults(p);
     p.Clusters = 4;
@@ -297,6 +309,12 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
 
   auto levels = LightSpaceMap(Technique("dsm3", "opacity levels", ShadowKind::OpacityLevels,
     { "opacity-levels" }, { { "", true }, { ":shadow-map-size=256" }, { "-cached" } }));
+  // Three levels joined by smoothsteps (paper 001) approximate an exponential opacity inside
+  // a medium within 0.1 (before 10 %, and between 50 and 90 %); past the medium (none of it
+  // behind the point) the maximum is exact.
+  levels.StatedError = [](const ShadowParameters&, const StatedErrorCase& at) {
+    return at.MediumBehind ? 0.1 : 0.0;
+  };
   levels.MakeShadow = MakeTwin<OpacityLevelsShadow>;
   levels.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 16; };
   list.push_back(levels);
@@ -305,6 +323,13 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     ShadowKind::Stochastic, { "cssm-offsets", "cssm-seed", "cssm-photons" },
     { { "", true }, { ":cssm-offsets=7" }, { ":cssm-offsets=21" }, { ":cssm-photons=4" },
       { "-cached", true } }));
+  // Unbiased: 4 standard errors of the mean of offsets x photons Bernoulli tests; its
+  // offsets reach 7 texels (the farthest of 13) around the nearest one.
+  cssm.StatedError = [](const ShadowParameters& p, const StatedErrorCase& at) {
+    const double tests = static_cast<double>(StochasticOffsets(p.Offsets).size()) * p.Photons;
+    return 4.0 * std::sqrt(at.Visibility * (1.0 - at.Visibility) / tests);
+  };
+  cssm.LookupTexels = 7.5;
   cssm.MakeShadow = MakeTwin<StochasticShadowMap>;
   cssm.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 16 * static_cast<std::uint64_t>(p.Photons);
@@ -319,6 +344,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   rmsm.Binary = true;
   rmsm.FollowsView = true;
   rmsm.Defaults = MapDefaults;
+  rmsm.LookupTexels = 2.5; // PCF 3x3 around the nearest texel
   rmsm.MakeShadow = MakeTwin<ResolutionMatchedShadow>;
   rmsm.FixedBytes = [](const ShadowParameters& p, int faces) -> std::uint64_t {
     // The atlas, shared by every light, and a page table per face (a 32-bit entry per cell).

@@ -59,6 +59,17 @@ struct ShadowSweepEntry
   bool Quick = false; // also in the short sweep (report --quick)
 };
 
+/**
+ * Where a lookup is judged against a closed-form answer (a homogeneous body lit by one
+ * light): the true visibility there and whether more of the medium lies behind the point,
+ * away from the light (it is inside the body or in front of more of it).
+ */
+struct StatedErrorCase
+{
+  double Visibility = 1.0;
+  bool MediumBehind = false;
+};
+
 /** One shadow technique. Its "-cached" variant is the same technique with Cached set. */
 struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
 {
@@ -88,6 +99,15 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
    */
   std::function<std::uint64_t(const ShadowParameters&, int faces)> FixedBytes;
   std::vector<ShadowSweepEntry> Sweep;
+  /**
+   * What its representation may be off by, beyond what every technique shares (the march's
+   * sampling, feeler termination, the lookup's footprint): deep shadow maps their epsilon,
+   * CSSM four standard errors of its estimate; 0 by default. The closed-form suites add it to
+   * their tolerance, and the documentation states it.
+   */
+  std::function<double(const ShadowParameters&, const StatedErrorCase&)> StatedError;
+  /** Radius, in texels, of what a lookup reads around its point (bilinear 1.5, PCF 3x3 2.5). */
+  double LookupTexels = 0.0;
 
   /** Whether it reads `key` (its own keys or a shared one). */
   bool Reads(const std::string& key) const;
