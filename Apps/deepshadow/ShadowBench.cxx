@@ -74,6 +74,10 @@ int RunShadowBench(const Options& options)
     for (const std::string& technique : techniques)
     {
       auto shadow = MakeTechnique(WithTechniqueSpec(bench.GetOptions(), technique));
+      if (!shadow)
+      {
+        continue; // "none": the baseline, measured and printed above
+      }
       const bool colored = shadow->GetParameters().IsColored();
       const Measurement m = bench.Measure(shadow, false);
       const ImageDifference error = Compare(m.Picture, bench.Truth(colored).Picture);

@@ -262,8 +262,10 @@ for t in dsm-color dsm3 cssm cssm-cached; do
   rmse_at_least $t.png unshadowed.png 0.01 "$t: shadowed"
 done
 expect 0 "shadow-bench with technique specs" -- "$tool" shadow-bench --scenes bucky --scale 0.5 \
-  --size 64x64 --error-size 16x16 --frames 1 --techniques dsm:layers=2:epsilon=0.1,cssm:cssm-photons=2
+  --size 64x64 --error-size 16x16 --frames 1 --techniques none,dsm:layers=2:epsilon=0.1,cssm:cssm-photons=2
 grep -q "dsm:layers=2:epsilon=0.1" out.txt || fail "shadow-bench row for the spec"
+# "none" among the techniques is the baseline row, once (it crashed the tool).
+[ "$(grep -c '^bucky  *none ' out.txt)" = 1 ] || fail "shadow-bench's none row"
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || fail "reference.json lacks render_ms"
 # The CPU reference of the unshadowed view is the GPU's picture within its error (0.0013 here).
