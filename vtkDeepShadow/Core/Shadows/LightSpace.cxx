@@ -219,6 +219,26 @@ int ShadowMapFaceFor(const std::vector<ShadowMapFace>& faces, const glm::dvec3& 
   return fromLight.z >= 0.0 ? 4 : 5;
 }
 
+bool TexelRaySpan(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
+  double& t0, double& tExit)
+{
+  const VolumeGrid& grid = *caster.Grid;
+  glm::dvec3 lo(0.0), hi(grid.GetDims() - 1);
+  if (caster.Clip)
+  {
+    lo = glm::max(lo, caster.Clip->Lo);
+    hi = glm::min(hi, caster.Clip->Hi);
+  }
+  double tEnter = 0.0;
+  if (glm::any(glm::greaterThan(lo, hi)) ||
+    !IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), lo, hi, tEnter, tExit))
+  {
+    return false;
+  }
+  t0 = std::max(tEnter, 0.0);
+  return true;
+}
+
 void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
   double step, const EmptySpaceMap* empty,
   const std::function<bool(long j, double t, const CastSample& sample, bool skipped)>& visit,
@@ -245,20 +265,12 @@ void MarchTexelRay(const ShadowCaster& caster, const glm::dvec3& origin, const g
     return true;
   };
   const VolumeGrid& grid = *caster.Grid;
-  glm::dvec3 lo(0.0), hi(grid.GetDims() - 1);
-  if (caster.Clip)
-  {
-    lo = glm::max(lo, caster.Clip->Lo);
-    hi = glm::min(hi, caster.Clip->Hi);
-  }
-  double tEnter = 0.0, tExit = 0.0;
-  if (glm::any(glm::greaterThan(lo, hi)) ||
-    !IntersectBox(Ray{ origin, direction }, grid.GetWorldToIndex(), lo, hi, tEnter, tExit))
+  double t0 = 0.0, tExit = 0.0;
+  if (!TexelRaySpan(caster, origin, direction, t0, tExit))
   {
     surfacesUpTo(std::numeric_limits<double>::infinity());
     return;
   }
-  const double t0 = std::max(tEnter, 0.0);
   auto depthOf = [&](long j) { return t0 + (static_cast<double>(j) + 0.5) * step; };
   const glm::dvec3 indexOrigin = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(origin, 1.0));
   const glm::dvec3 indexDirection = glm::dvec3(grid.GetWorldToIndex() * glm::dvec4(direction, 0.0));

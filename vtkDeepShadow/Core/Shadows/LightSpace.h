@@ -99,6 +99,13 @@ VTKDEEPSHADOWCORE_EXPORT CasterBounds CasterBoundsOf(
   const glm::dmat4& indexToWorld, const glm::ivec3& dims, const SurfaceSet* surfaces);
 
 /**
+ * The span of a texel's ray that MarchTexelRay marches: from t0 (its entry into the
+ * volume's box, or its cluster's, clamped to 0) to tExit; false where it misses the box.
+ */
+VTKDEEPSHADOWCORE_EXPORT bool TexelRaySpan(const ShadowCaster& caster, const glm::dvec3& origin,
+  const glm::dvec3& direction, double& t0, double& tExit);
+
+/**
  * Visits the samples of a texel's ray through the volume's box: sample j at depth
  * t = entry + (j + 0.5) * step (entry clamped to 0), with what the light reads there
  * (ShadowCaster::Read). The visitor returns false to stop. With `empty`, a run of samples in
