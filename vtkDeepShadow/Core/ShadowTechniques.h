@@ -81,6 +81,11 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
   bool Clustered = false; // its maps are clustered (ShadowParameters::Clusters > 0)
   /** A hard shadow (lit or not, by the threshold), not a translucent one. */
   bool Binary = false;
+  /**
+   * Its visibility never increases away from the light along a light ray. A truncated
+   * Fourier series ripples (fom): false, and the ripples stay within its StatedError.
+   */
+  bool Monotone = true;
   /** Its structures follow the camera (rmsm's pages): a moved camera may build some. */
   bool FollowsView = false;
   /** Parameter keys it reads besides the shared ones (SharedShadowParameterKeys()). */
