@@ -1,6 +1,7 @@
 #include "Core/ShadowTechniques.h"
 
 #include "Core/Shadows/DeepShadowMap.h"
+#include "Core/Shadows/FourierOpacityMap.h"
 #include "Core/Shadows/OpacityLevels.h"
 #include "Core/Shadows/ResolutionMatched.h"
 #include "Core/Shadows/ShadowMap.h"
@@ -175,6 +176,12 @@ std::vector<ShadowParameterInfo> MakeParameters()
   list.push_back(Field(Numeric("keep-pages", Type::Integer, 0, 1, "0|1",
                          "rmsm: keep pages across frames while the light and casters stay"),
     &ShadowParameters::KeepPages));
+  auto fourierTerms = Numeric("fom-terms", Type::Integer, 1, 15, "N",
+    "cosine-sine pairs per texel (1, 3, 7, 15: 128, 256, 512, 1024 bits with the ray's end and "
+    "optical depth)");
+  fourierTerms.Allowed = { 1, 3, 7, 15 };
+  fourierTerms.ExtraDefault = { 7 };
+  list.push_back(fourierTerms);
   // Keys without a field of their own live in ShadowParameters::Extra.
   for (ShadowParameterInfo& info : list)
   {
@@ -318,6 +325,21 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   levels.MakeShadow = MakeTwin<OpacityLevelsShadow>;
   levels.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 16; };
   list.push_back(levels);
+
+  // Fourier opacity maps (Jansen and Bavoil 2010), a rival at a fixed number of bits per texel.
+  auto fourier = LightSpaceMap(Technique("fom", "Fourier opacity map", FourierOpacityKind, { "fom-terms" },
+    { { "", true }, { ":fom-terms=1" }, { ":fom-terms=3", true }, { ":fom-terms=15" }, { "-cached" } }));
+  // A series cut after N pairs rings around the medium's fronts. Not a bound: what the
+  // closed-form bodies show, with room (N = 1, 3, 7: 0.13, 0.041, 0.013 with sampling).
+  fourier.StatedError = [](const ShadowParameters& p, const StatedErrorCase&) {
+    return 0.3 / (FourierTerms(p) + 1);
+  };
+  fourier.Monotone = false;
+  fourier.MakeShadow = MakeTwin<FourierOpacityMap>;
+  fourier.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
+    return 16 * static_cast<std::uint64_t>(FourierLayers(FourierTerms(p)));
+  };
+  list.push_back(fourier);
 
   auto cssm = LightSpaceMap(Technique("cssm", "coloured stochastic shadow map",
     ShadowKind::Stochastic, { "cssm-offsets", "cssm-seed", "cssm-photons" },
