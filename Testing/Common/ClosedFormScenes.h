@@ -223,8 +223,10 @@ inline bool IsBinary(const ShadowParameters& p)
 
 /**
  * What a technique may leave of the light where the true visibility is (nearly) 0: binary
- * and stochastic ones nothing, translucent feelers and opacity levels the transmittance at
- * which they stop, deep shadow maps their bound (the stiff suites, CPU and GPU).
+ * and stochastic ones nothing, deep shadow maps their bound, the other translucent ones the
+ * transmittance at which they stop and what they state behind a medium (opacity levels
+ * nothing, the maximum is exact; a truncated series its ringing) (the stiff suites, CPU and
+ * GPU).
  */
 inline double DarkTolerance(const ShadowParameters& p)
 {
@@ -232,8 +234,12 @@ inline double DarkTolerance(const ShadowParameters& p)
   {
     return p.Epsilon;
   }
-  return IsBinary(p) || p.Kind == ShadowKind::Stochastic || !p.EarlyTermination ? 0.0
-                                                                                : ShadowTerminationTransmittance;
+  if (IsBinary(p) || p.Kind == ShadowKind::Stochastic)
+  {
+    return 0.0;
+  }
+  return (p.EarlyTermination ? ShadowTerminationTransmittance : 0.0) +
+    ShadowTechniqueOf(p).StatedError(p, StatedErrorCase{ 0.0, false });
 }
 
 /**
