@@ -82,8 +82,9 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
   /** A hard shadow (lit or not, by the threshold), not a translucent one. */
   bool Binary = false;
   /**
-   * Its visibility never increases away from the light along a light ray. A truncated
-   * Fourier series ripples (fom): false, and the ripples stay within its StatedError.
+   * Its visibility never increases away from the light along a light ray. False for a
+   * truncated Fourier series, which ripples (fom), and for fixed nodes that differ between
+   * neighbouring texels (avsm); the rise stays within its StatedError.
    */
   bool Monotone = true;
   /** Its structures follow the camera (rmsm's pages): a moved camera may build some. */
