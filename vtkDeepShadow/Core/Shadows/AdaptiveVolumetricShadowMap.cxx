@@ -108,25 +108,17 @@ AdaptiveVolumetricShadowMap::AdaptiveVolumetricShadowMap(const ShadowParameters&
   }
   this->ForEachTexel(threads, [&](int f, int x, int y, const glm::dvec3& origin, const glm::dvec3& direction) {
     AdaptiveNodesBuilder nodes(this->Count);
-    double volume = 1.0;
     SurfaceStepsBuilder steps;
-    auto more = [&] { return volume * steps.Transmittance() > ShadowTerminationTransmittance; };
-    MarchTexelRay(
-      this->FaceCaster(f), origin, direction, step, this->FaceCaster(f).Empty,
-      [&](long, double t, const CastSample& scalar, bool skipped) {
+    MarchBesideSurfaceSteps(this->FaceCaster(f), caster, origin, direction, step, steps,
+      [&](double t, double opacity, bool skipped, double) {
         if (skipped)
         {
           nodes.AddClear();
-          return true;
         }
-        const double transmission = 1.0 - caster.Sample(scalar, step).a;
-        volume *= transmission;
-        nodes.Add(t - 0.5 * step, t + 0.5 * step, transmission);
-        return more();
-      },
-      [&](double t, int surface) {
-        steps.Add(t, SurfaceTransmission(caster.Surfaces->GetSurface(surface).Material, false).r);
-        return more();
+        else
+        {
+          nodes.Add(t - 0.5 * step, t + 0.5 * step, 1.0 - opacity);
+        }
       });
     const size_t texel = this->Texel(f, x, y);
     const std::vector<float> stored = nodes.Finish();

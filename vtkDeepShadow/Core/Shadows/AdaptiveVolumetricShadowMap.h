@@ -19,7 +19,7 @@
 #define deepshadow_AdaptiveVolumetricShadowMap_h
 
 #include "Core/Shadows/LightSpace.h"
-#include "Core/Shadows/OpacityLevels.h"
+#include "Core/Shadows/SurfaceSteps.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <vector>

@@ -145,23 +145,13 @@ FourierOpacityMap::FourierOpacityMap(const ShadowParameters& parameters, const S
     // No box: an empty series (End 1, Total 0) that lets everything through.
     const double end = FourierEnd(TexelRaySpan(faceCaster, origin, direction, t0, tExit) ? tExit + step : 1.0);
     FourierSeriesBuilder series(this->Terms, end, step);
-    double volume = 1.0;
     SurfaceStepsBuilder steps;
-    auto more = [&] { return volume * steps.Transmittance() > ShadowTerminationTransmittance; };
-    MarchTexelRay(
-      faceCaster, origin, direction, step, faceCaster.Empty,
-      [&](long, double t, const CastSample& scalar, bool skipped) {
+    MarchBesideSurfaceSteps(faceCaster, caster, origin, direction, step, steps,
+      [&](double t, double opacity, bool skipped, double) {
         if (!skipped)
         {
-          const double opacity = caster.Sample(scalar, step).a;
-          volume *= 1.0 - opacity;
           series.Add(t, OpticalDepth(opacity));
         }
-        return more();
-      },
-      [&](double t, int surface) {
-        steps.Add(t, SurfaceTransmission(caster.Surfaces->GetSurface(surface).Material, false).r);
-        return more();
       });
     const size_t texel = this->Texel(f, x, y);
     const std::vector<float> stored = series.Finish();

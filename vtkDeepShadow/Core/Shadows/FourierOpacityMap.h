@@ -26,7 +26,7 @@
 #define deepshadow_FourierOpacityMap_h
 
 #include "Core/Shadows/LightSpace.h"
-#include "Core/Shadows/OpacityLevels.h"
+#include "Core/Shadows/SurfaceSteps.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <vector>

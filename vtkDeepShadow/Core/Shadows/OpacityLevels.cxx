@@ -85,55 +85,6 @@ double EvaluateOpacityLevels(
   return std::min(opacity, static_cast<double>(texel.MaxOpacity));
 }
 
-void SurfaceStepsBuilder::Add(double depth, double transmission)
-{
-  this->Depth[this->Count] = depth;
-  this->Own[this->Count] = transmission;
-  if (++this->Count < 3)
-  {
-    return;
-  }
-  // Fold the more transparent of the last two into the one before it (ties: the later).
-  const int folded = this->Own[1] > this->Own[2] ? 1 : 2;
-  this->Own[folded - 1] *= this->Own[folded];
-  if (folded == 1)
-  {
-    this->Depth[1] = this->Depth[2];
-    this->Own[1] = this->Own[2];
-  }
-  this->Count = 2;
-}
-
-double SurfaceStepsBuilder::Transmittance() const
-{
-  double t = 1.0;
-  for (int k = 0; k < this->Count; ++k)
-  {
-    t *= this->Own[k];
-  }
-  return t;
-}
-
-SurfaceSteps SurfaceStepsBuilder::Finish() const
-{
-  SurfaceSteps steps;
-  double t = 1.0;
-  for (int k = 0; k < this->Count; ++k)
-  {
-    t *= this->Own[k];
-    steps.Depths[k] = static_cast<float>(this->Depth[k]);
-    steps.Transmittance[k] = static_cast<float>(t);
-  }
-  return steps;
-}
-
-double EvaluateSurfaceSteps(const SurfaceSteps& steps, double depth)
-{
-  return depth < steps.Depths[0] ? 1.0
-    : depth < steps.Depths[1]    ? static_cast<double>(steps.Transmittance[0])
-                                 : static_cast<double>(steps.Transmittance[1]);
-}
-
 OpacityLevelsShadow::OpacityLevelsShadow(const ShadowParameters& parameters,
   const ShadowCaster& caster, const Light& light, double step, int threads)
   : LightSpaceShadow(parameters, caster, light, step)
@@ -148,29 +99,16 @@ OpacityLevelsShadow::OpacityLevelsShadow(const ShadowParameters& parameters,
     // The volume's visibility: its entry, then the end of every sample (SampleVisibility
     // without the meshes, which go into the steps).
     VisibilitySamples samples;
-    double volume = 1.0;
     SurfaceStepsBuilder steps;
-    // Like feelers, stop below 1/512 of what volume and meshes let through together.
-    auto more = [&] { return volume * steps.Transmittance() > ShadowTerminationTransmittance; };
-    MarchTexelRay(
-      this->FaceCaster(f), origin, direction, step, this->FaceCaster(f).Empty,
-      [&](long, double t, const CastSample& scalar, bool skipped) {
+    MarchBesideSurfaceSteps(this->FaceCaster(f), caster, origin, direction, step, steps,
+      [&](double t, double, bool, double volume) {
         if (samples.Depths.empty())
         {
           samples.Depths.push_back(t - 0.5 * step);
           samples.Values.emplace_back(1.0);
         }
-        if (!skipped)
-        {
-          volume *= 1.0 - caster.Sample(scalar, step).a;
-        }
         samples.Depths.push_back(t + 0.5 * step);
         samples.Values.emplace_back(volume);
-        return more();
-      },
-      [&](double t, int surface) {
-        steps.Add(t, SurfaceTransmission(caster.Surfaces->GetSurface(surface).Material, false).r);
-        return more();
       });
     const size_t texel = this->Texel(f, x, y);
     this->Texels[texel] = BuildOpacityLevels(samples, parameters.Levels);

@@ -11,14 +11,13 @@
 // Casting meshes are not volumes: each crossing is a step, which the smooth interpolation
 // between levels would spread from the volume to the mesh (a ground under a ball read the
 // last level). The levels hold the volume's opacity only; the meshes' crossings go into a
-// second texel (SurfaceSteps): the visibility is the product of both (transmittances
-// multiply in any order), exact behind the volume and at every mesh that is one of at most
-// two steps. Rays stop below 1/512 of their combined transmittance, like feelers.
+// second texel (Core/Shadows/SurfaceSteps.h).
 // GLSL twins: Shaders/Shadows/OpacityLevelsBuild.glsl and Shaders/Shadows/OpacityLevels.glsl.
 #ifndef deepshadow_OpacityLevels_h
 #define deepshadow_OpacityLevels_h
 
 #include "Core/Shadows/DeepShadowMap.h"
+#include "Core/Shadows/SurfaceSteps.h"
 #include "vtkDeepShadowCoreModule.h"
 
 #include <array>
@@ -32,39 +31,6 @@ struct OpacityLevelsTexel
   std::array<float, 3> Depths{ { NoHit, NoHit, NoHit } };
   float MaxOpacity = 0.0f;
 };
-
-/**
- * The casting meshes along a texel's ray as at most two steps: the visibility is 1 before
- * Depths[0], Transmittance[0] from there, Transmittance[1] from Depths[1] on (NoHit: no
- * step). Crossings are added in depth order; when a third step comes, the most transparent
- * of the last two is folded into the step before it (its transmission then counts from that
- * earlier depth): a glass's back face into its front, a glass into the one before it, never
- * an opaque ground (the most opaque step stays where it is).
- */
-struct SurfaceSteps
-{
-  std::array<float, 2> Depths{ { NoHit, NoHit } };
-  std::array<float, 2> Transmittance{ { 1.0f, 1.0f } };
-};
-
-/** Adds a crossing at `depth` that lets through `transmission` (see SurfaceSteps). */
-class VTKDEEPSHADOWCORE_EXPORT SurfaceStepsBuilder
-{
-public:
-  void Add(double depth, double transmission);
-  /** Everything the steps let through so far. */
-  double Transmittance() const;
-  SurfaceSteps Finish() const;
-
-private:
-  // Up to three steps: depth and what each lets through on its own.
-  std::array<double, 3> Depth{ {} };
-  std::array<double, 3> Own{ {} };
-  int Count = 0;
-};
-
-/** The steps' visibility at `depth`. */
-VTKDEEPSHADOWCORE_EXPORT double EvaluateSurfaceSteps(const SurfaceSteps& steps, double depth);
 
 /** The texel of sampled (grey) visibility. */
 VTKDEEPSHADOWCORE_EXPORT OpacityLevelsTexel BuildOpacityLevels(

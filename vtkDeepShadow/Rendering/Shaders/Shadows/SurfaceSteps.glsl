@@ -1,5 +1,5 @@
 // Lookup of the casting meshes' steps that SurfaceStepsBuild.glsl stores (EvaluateSurfaceSteps
-// in Core/Shadows/OpacityLevels.cxx is the CPU twin): 1 before the first step's depth, each
+// in Core/Shadows/SurfaceSteps.cxx is the CPU twin): 1 before the first step's depth, each
 // step's transmittance from its depth on.
 //@Dec
 float surfaceStepsVisibility(vec4 steps, float depth)

@@ -1,7 +1,7 @@
 // The casting meshes of a light-space build as at most two steps in one RGBA texel, for
 // the techniques whose volume representation would smear a mesh's sharp crossing (opacity
 // levels, Fourier opacity maps): deepshadow::SurfaceStepsBuilder in
-// Core/Shadows/OpacityLevels.cxx is the CPU twin. Depth and own transmission of up to three;
+// Core/Shadows/SurfaceSteps.cxx is the CPU twin. Depth and own transmission of up to three;
 // a third folds the more transparent of the last two into the one before it. A technique
 // prepends this to its build source, calls resetSurfaceSteps() per texel, addSurfaceStep()
 // per crossing and stores surfaceStepsTexel() in its last layer.
