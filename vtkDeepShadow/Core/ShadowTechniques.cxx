@@ -2,6 +2,7 @@
 
 #include "Core/Shadows/AdaptiveVolumetricShadowMap.h"
 #include "Core/Shadows/DeepShadowMap.h"
+#include "Core/Shadows/FixedBudgetDeepShadowMap.h"
 #include "Core/Shadows/FourierOpacityMap.h"
 #include "Core/Shadows/OpacityLevels.h"
 #include "Core/Shadows/ResolutionMatched.h"
@@ -187,6 +188,11 @@ std::vector<ShadowParameterInfo> MakeParameters()
   adaptiveNodes.Allowed = { 2, 4, 8, 16 };
   adaptiveNodes.ExtraDefault = { 8 };
   list.push_back(adaptiveNodes);
+  auto fixedBits = Numeric("dsm-bits", Type::Integer, 64, 512, "B",
+    "dsm-fixed: bits per texel, 32 per node (16-bit depth and visibility)");
+  fixedBits.Allowed = { 64, 128, 256, 512 };
+  fixedBits.ExtraDefault = { 256 };
+  list.push_back(fixedBits);
   // Keys without a field of their own live in ShadowParameters::Extra.
   for (ShadowParameterInfo& info : list)
   {
@@ -318,6 +324,22 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     return 8 * static_cast<std::uint64_t>(p.Layers) * static_cast<std::uint64_t>(std::max(1, p.Clusters));
   };
   list.push_back(clustered);
+
+  // Deep shadow maps at a fixed memory budget: per texel the smallest bound whose nodes fit.
+  auto fixed = LightSpaceMap(Technique("dsm-fixed", "deep shadow map, fixed budget", FixedBudgetKind,
+    { "dsm-bits" }, { { "", true }, { ":dsm-bits=64" }, { ":dsm-bits=128", true }, { ":dsm-bits=512" }, { "-cached" } }));
+  // N nodes fit an exponential within about 1 / (2 N^2) (linear segments through a convex
+  // curve), and each texel's bound is the smallest that fits; not a bound stated in
+  // advance. What the closed-form bodies show, with room.
+  fixed.StatedError = [](const ShadowParameters& p, const StatedErrorCase&) {
+    const double nodes = FixedBudgetNodes(p);
+    return 0.8 / (nodes * nodes);
+  };
+  fixed.MakeShadow = MakeTwin<FixedBudgetDeepShadowMap>;
+  fixed.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
+    return static_cast<std::uint64_t>(FixedBudgetBits(p)) / 8;
+  };
+  list.push_back(fixed);
 
   auto levels = LightSpaceMap(Technique("dsm3", "opacity levels", ShadowKind::OpacityLevels,
     { "opacity-levels" }, { { "", true }, { ":shadow-map-size=256" }, { "-cached" } }));

@@ -80,12 +80,35 @@ float FloatInside(double low, double high, double preferred)
   }
   return f;
 }
+
+// The grid point nearest `preferred` inside [low, high], or nearest it if none is.
+double GridInside(double low, double high, double preferred, double step)
+{
+  const double target = std::clamp(preferred, low, high);
+  double stored = std::round(target / step) * step;
+  if (stored < low && stored + step <= high)
+  {
+    stored += step;
+  }
+  else if (stored > high && stored - step >= low)
+  {
+    stored -= step;
+  }
+  return stored;
+}
 }
 
-VisibilityCompressor::VisibilityCompressor(double epsilon, int channels)
+VisibilityCompressor::VisibilityCompressor(double epsilon, int channels, NodeGrid grid)
   : Epsilon(epsilon)
   , Channels(channels == 3 ? 3 : 1)
+  , Grid(grid)
 {
+}
+
+float VisibilityCompressor::StoredValue(double low, double high, double preferred) const
+{
+  return this->Grid.Value > 0.0 ? static_cast<float>(GridInside(low, high, preferred, this->Grid.Value))
+                                : FloatInside(low, high, preferred);
 }
 
 void VisibilityCompressor::Add(double depth, const glm::dvec3& value)
@@ -100,20 +123,29 @@ void VisibilityCompressor::AddBounded(
   // from what it shadows). The band always keeps the sample's own value.
   const glm::dvec3 low = glm::max(lowBound, glm::dvec3(0.0));
   const glm::dvec3 high = glm::min(highBound, glm::dvec3(1.0));
-  // Depths are stored as floats: work with the stored depth, strictly increasing.
-  float stored = static_cast<float>(depth);
-  if (this->Started && !(static_cast<double>(stored) > this->LastDepth))
+  // Work with the stored depth (a float, or a grid point), strictly increasing.
+  if (this->Grid.Depth > 0.0)
   {
-    stored = std::nextafter(static_cast<float>(this->LastDepth), std::numeric_limits<float>::infinity());
+    const double stored = std::round(depth / this->Grid.Depth) * this->Grid.Depth;
+    depth = this->Started && !(stored > this->LastDepth) ? this->LastDepth + this->Grid.Depth : stored;
   }
-  depth = stored;
+  else
+  {
+    float stored = static_cast<float>(depth);
+    if (this->Started && !(static_cast<double>(stored) > this->LastDepth))
+    {
+      stored = std::nextafter(static_cast<float>(this->LastDepth), std::numeric_limits<float>::infinity());
+    }
+    depth = stored;
+  }
+  const float stored = static_cast<float>(depth);
   if (!this->Started)
   {
     VisibilityNode node{ stored, {} };
     for (int c = 0; c < 3; ++c)
     {
       const int channel = c < this->Channels ? c : 0;
-      node.Value[c] = FloatInside(low[channel], high[channel], preferred[channel]);
+      node.Value[c] = this->StoredValue(low[channel], high[channel], preferred[channel]);
       this->StartValue[c] = node.Value[c];
     }
     this->Nodes.push_back(node);
@@ -155,7 +187,7 @@ void VisibilityCompressor::EndSegment()
   for (int c = 0; c < 3; ++c)
   {
     const int channel = c < this->Channels ? c : 0;
-    node.Value[c] = FloatInside(this->StartValue[channel] + this->SlopeLow[channel] * dz,
+    node.Value[c] = this->StoredValue(this->StartValue[channel] + this->SlopeLow[channel] * dz,
       this->StartValue[channel] + this->SlopeHigh[channel] * dz, this->LastPreferred[channel]);
   }
   this->Nodes.push_back(node);

@@ -63,18 +63,31 @@ VTKDEEPSHADOWCORE_EXPORT VisibilitySamples SampleVisibility(const ShadowCaster& 
   const glm::dvec3& origin, const glm::dvec3& direction, double step, bool colored, double stopAt);
 
 /**
+ * Where nodes are stored, when not as 32-bit floats: depths on a grid of `Depth` (a world
+ * step: the light's depth range over 65535 for 16-bit unorm depths) and values on one of
+ * `Value` (1/65535 for 16-bit unorm); 0 keeps floats.
+ */
+struct NodeGrid
+{
+  double Depth = 0.0;
+  double Value = 0.0;
+};
+
+/**
  * Greedy compression into linear segments (Lokovic and Veach): a segment from its start node
  * is extended sample by sample while some line from that node stays within every sample's
  * bounds (the feasible slopes form an interval per channel); when the next sample would empty
  * it, the segment ends at the previous sample, at the feasible value nearest that sample's
  * value. Node depths and values are 32-bit floats chosen inside the feasible intervals, so the
  * bound holds for the nodes as stored, not just before rounding (unless epsilon is so small
- * that an interval holds no float: then within half a float ulp).
+ * that an interval holds no float: then within half a float ulp). With a NodeGrid, depths
+ * and values are grid points instead (samples at the stored depth, values inside the
+ * intervals where the grid has a point there, else within half a grid step).
  */
 class VTKDEEPSHADOWCORE_EXPORT VisibilityCompressor
 {
 public:
-  VisibilityCompressor(double epsilon, int channels);
+  VisibilityCompressor(double epsilon, int channels, NodeGrid grid = {});
   /** A sample of V: V' must stay within epsilon of `value` at `depth`. */
   void Add(double depth, const glm::dvec3& value);
   /** A sample known only to lie in [low, high] per channel; nodes prefer `preferred`. */
@@ -85,9 +98,12 @@ public:
 
 private:
   void EndSegment();
+  /** The stored value nearest `preferred` inside [low, high]. */
+  float StoredValue(double low, double high, double preferred) const;
 
   double Epsilon;
   int Channels;
+  NodeGrid Grid;
   bool Started = false;
   bool HasSegment = false; // a sample after the start node
   double StartDepth = 0.0;

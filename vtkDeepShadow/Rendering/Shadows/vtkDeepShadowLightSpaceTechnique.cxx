@@ -31,6 +31,7 @@ public:
   int Slabs = 0;
   int FacesPerLight = 1; // 6 once some light needs a cube of faces
   int LayersPerFace = 1;
+  double CasterRadius = 0.0; // the casters' bounding sphere, as the faces see it
   int Unit = -1;
   vtkOpenGLRenderWindow* Window = nullptr;
   std::vector<std::vector<deepshadow::ShadowMapFace>> Faces; // per slot
@@ -80,6 +81,7 @@ int BytesPerTexel(unsigned int format)
     case GL_R32F:
       return 4;
     case GL_RG32F:
+    case GL_RGBA16:
       return 8;
     default:
       return 16;
@@ -153,6 +155,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
     vtkWarningWithObjectMacro(self, << "shadows are not shared between bricks: " << problem);
   }
   maps.BrickProblem = problem;
+  maps.CasterRadius = bounds.Radius;
   if (maps.Bricks.UnionChanged())
   {
     slots.Invalidate();
@@ -241,6 +244,11 @@ long long vtkDeepShadowLightSpaceTechnique::GetStructureBytes() const
   }
   return static_cast<long long>(maps.Size) * maps.Size * maps.Slabs * maps.FacesPerLight *
     maps.LayersPerFace * BytesPerTexel(maps.Format);
+}
+
+double vtkDeepShadowLightSpaceTechnique::GetCasterRadius() const
+{
+  return this->LightMaps->CasterRadius;
 }
 
 int vtkDeepShadowLightSpaceTechnique::GetFaceCount(int slot) const

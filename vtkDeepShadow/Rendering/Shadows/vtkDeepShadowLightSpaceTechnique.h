@@ -85,7 +85,7 @@ protected:
 
   // ---- What a light-space technique provides ----
 
-  /** GL internal format of its texels (GL_R32F, GL_RG32F or GL_RGBA32F). */
+  /** GL internal format of its texels (GL_R32F, GL_RG32F, GL_RGBA16 or GL_RGBA32F). */
   virtual unsigned int GetTexelFormat() const = 0;
   /** Its build: the parts Dec and Texel of vtkDeepShadowLightSpaceCS.glsl's runtime Build. */
   virtual std::string GetBuildSource() const = 0;
@@ -111,6 +111,12 @@ protected:
 #endif
   std::string GetLookupSource() const override;
   void UnbindLookup() override;
+
+  /**
+   * Radius of the casters' bounding sphere that the faces were fitted to in the last frame
+   * (with other bricks, their union's): every depth the faces see is below 2.06 of it.
+   */
+  double GetCasterRadius() const;
 
   /** Faces of shadowed light `slot` in the last frame (a cube: 6; clustered: one per cluster). */
   int GetFaceCount(int slot) const;

@@ -16,7 +16,7 @@ TEST(TechniqueRegistry, EveryNameRoundTripsThroughItsParameters)
   const std::vector<std::string> builtIn{ "none", "rays", "rays-cached", "rays-opaque",
     "rays-opaque-cached", "rays-color", "rays-color-cached", "shadowmap", "shadowmap-cached",
     "dsm", "dsm-cached", "dsm-color", "dsm-color-cached", "dsm-clustered", "dsm-clustered-cached",
-    "dsm3", "dsm3-cached", "cssm", "cssm-cached", "rmsm", "rmsm-cached" };
+    "dsm-fixed", "dsm-fixed-cached", "dsm3", "dsm3-cached", "cssm", "cssm-cached", "rmsm", "rmsm-cached" };
   const std::vector<std::string> names = ShadowTechniqueNames();
   auto at = names.begin();
   for (const std::string& name : builtIn)
