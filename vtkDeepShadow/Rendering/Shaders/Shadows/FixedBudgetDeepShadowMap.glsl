@@ -1,6 +1,7 @@
 // Lookup of "dsm-fixed" (EvaluateFixedNodes and FixedBudgetDeepShadowMap::MapVisibility in
-// Core/Shadows/FixedBudgetDeepShadowMap.cxx are the CPU twins): a fixed loop over the
-// FIXED_NODES nodes, no search,
+// Core/Shadows/FixedBudgetDeepShadowMap.cxx are the CPU twins): a loop over the FIXED_NODES
+// nodes in order, no search, that stops at the first node beyond the point (the terms after
+// it are 0),
 // V(z) = 1 + sum over i >= 1 of (v_i - v_{i-1}) clamp((z - z_{i-1}) / (z_i - z_{i-1}), 0, 1),
 // which is 1 before node 0, linear between nodes and the last value after them (unused nodes
 // lie at the range's end with it); bilinear across the four nearest texels. Depths are
@@ -11,18 +12,26 @@ uniform float u_fixedDepthRange;
 float fixedVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope) / u_fixedDepthRange;
-  vec4 pair = lightSpaceTexel(texel, layer);
-  vec2 previous = pair.xy;
   float visibility = 1.0;
-  for (int i = 1; i < FIXED_NODES; ++i)
+  vec2 previous = vec2(0.0, 1.0);
+  for (int l = 0; l < FIXED_NODES / 2; ++l)
   {
-    if (i % 2 == 0)
+    vec4 pair = lightSpaceTexel(texel, layer + l);
+    if (l > 0)
     {
-      pair = lightSpaceTexel(texel, layer + i / 2);
+      visibility += (pair.y - previous.y) * clamp((depth - previous.x) / max(pair.x - previous.x, 1.0e-9), 0.0, 1.0);
     }
-    vec2 node = i % 2 == 0 ? pair.xy : pair.zw;
-    visibility += (node.y - previous.y) * clamp((depth - previous.x) / max(node.x - previous.x, 1.0e-9), 0.0, 1.0);
-    previous = node;
+    // Nodes beyond the point add nothing: the loop stops at the first of them.
+    if (depth < pair.x)
+    {
+      break;
+    }
+    visibility += (pair.w - pair.y) * clamp((depth - pair.x) / max(pair.z - pair.x, 1.0e-9), 0.0, 1.0);
+    if (depth < pair.z)
+    {
+      break;
+    }
+    previous = pair.zw;
   }
   return visibility;
 }
