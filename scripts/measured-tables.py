@@ -59,11 +59,22 @@ def shadow_technique_rows(data):
 # Issue 42's comparison at equal memory: each technique spec at its bits per light-space
 # texel (the registry's TexelBytes times 8; without casting meshes).
 BUDGETS = [
-    (64, ["dsm:layers=1"]),
-    (128, ["dsm:layers=2", "dsm:layers=2:epsilon=0.005", "dsm3", "avsm:avsm-nodes=2", "fom:fom-terms=1"]),
-    (256, ["dsm:layers=4", "dsm:layers=4:epsilon=0.005", "avsm:avsm-nodes=4", "fom:fom-terms=3"]),
-    (512, ["dsm", "dsm:epsilon=0.005", "avsm", "fom"]),
+    (64, ["dsm:layers=1", "dsm-fixed:dsm-bits=64"]),
+    (128, ["dsm:layers=2", "dsm:layers=2:epsilon=0.005", "dsm-fixed:dsm-bits=128", "dsm3",
+           "avsm:avsm-nodes=2", "fom:fom-terms=1"]),
+    (256, ["dsm:layers=4", "dsm:layers=4:epsilon=0.005", "dsm-fixed", "avsm:avsm-nodes=4", "fom:fom-terms=3"]),
+    (512, ["dsm", "dsm:epsilon=0.005", "dsm-fixed:dsm-bits=512", "avsm", "fom"]),
 ]
+BUDGET_SPECS = ",".join(spec for _, specs in BUDGETS for spec in specs)
+BUDGET_ABOUT = ("The deep shadow map, at its error bound (dsm) and at a fixed budget (dsm-fixed), "
+                "against its rivals, adaptive volumetric shadow maps (avsm) and Fourier opacity maps "
+                "(fom), and opacity levels (dsm3), at 64, 128, 256 and 512 bits per light-space texel, "
+                "sorted by error within each budget: the error against the ground truth (CPU, "
+                "translucent shadow rays at a quarter step), the frame time ratios to the unshadowed "
+                "frame (camera orbiting; key light turning, a rebuild every frame) and the build "
+                "time. dsm keeps at most its layers, as few as its epsilon (0.02 by default) needs; at "
+                "0.005 it uses more of them. dsm-fixed spends its bits on each texel's smallest bound "
+                "that fits.")
 
 
 def budget_rows(data):
@@ -104,18 +115,22 @@ TABLES = {
     },
     "shadow-budgets": {
         "title": "Shadow representations at equal memory",
-        "about": "The deep shadow map against its rivals, adaptive volumetric shadow maps (avsm) and "
-                 "Fourier opacity maps (fom), and opacity levels (dsm3), at 64, 128, 256 and 512 "
-                 "bits per light-space texel, sorted by error within each budget: the error against "
-                 "the ground truth (CPU, translucent shadow rays at a quarter step), the frame time "
-                 "ratios to the unshadowed frame (camera orbiting; key light turning, a rebuild "
-                 "every frame) and the build time. dsm keeps at most its layers, as few as its "
-                 "epsilon (0.02 by default) needs; at 0.005 it uses more of them.",
+        "about": BUDGET_ABOUT,
         "args": ["shadow-bench", "--scenes", "head,clouds,hybrid-ground", "--size", "256x256",
-                 "--error-size", "128x128", "--frames", "3", "--techniques",
-                 ",".join(spec for _, specs in BUDGETS for spec in specs)],
+                 "--error-size", "128x128", "--frames", "3", "--techniques", BUDGET_SPECS],
         "quick": ["shadow-bench", "--scenes", "box", "--techniques", "dsm:layers=1,avsm:avsm-nodes=2",
                   "--size", "32x32", "--error-size", "16x16", "--frames", "1"],
+        "rows": budget_rows,
+    },
+    "shadow-budgets-mr": {
+        "title": "Shadow representations at equal memory: a real MR",
+        "about": "As the standard scenes' page, on the Colin27 brain MRI (Debian's mricron-data, "
+                 "181x217x181, the tool's default preset for the file) under a key light from the "
+                 "upper right front. " + BUDGET_ABOUT,
+        "args": ["shadow-bench", "--volume", "/usr/share/mricron/templates/ch2.nii.gz", "--size", "256x256",
+                 "--error-size", "128x128", "--frames", "3", "--techniques", BUDGET_SPECS],
+        "quick": ["shadow-bench", "--volume", "/usr/share/mricron/templates/ch2.nii.gz", "--techniques",
+                  "dsm-fixed:dsm-bits=64", "--size", "32x32", "--error-size", "16x16", "--frames", "1"],
         "rows": budget_rows,
     },
 }

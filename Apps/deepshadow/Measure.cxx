@@ -46,8 +46,19 @@ void SetStatistics(Json& json, const vtkDeepShadowTechnique::Statistics& statist
 SceneBench::SceneBench(const Options& options, const std::string& name)
   : Settings(options)
 {
-  this->Settings.Scene = name;
-  this->Settings.VolumeFile.clear();
+  if (!name.empty())
+  {
+    this->Settings.Scene = name;
+    this->Settings.VolumeFile.clear();
+  }
+  else if (this->Settings.Lights.empty())
+  {
+    // A file has no key light of its own (VTK's headlight casts nothing the camera sees):
+    // one from the upper right front, as the head scene's.
+    LightSpec key;
+    key.Vector = { { 1.0, 1.0, 1.0 } };
+    this->Settings.Lights.push_back(key);
+  }
   this->Settings.Technique = "none";
   this->Scene = SceneSetup::Build(this->Settings);
   this->StartCamera->DeepCopy(this->Scene.Renderer->GetActiveCamera());

@@ -67,7 +67,10 @@ struct GroundTruth
 class SceneBench
 {
 public:
-  /** Builds scene `name` with `options`' sizes (throws UsageError for an unknown scene). */
+  /**
+   * Builds scene `name` with `options`' sizes (throws UsageError for an unknown scene); an
+   * empty name builds what the options name (their --volume file).
+   */
   SceneBench(const Options& options, const std::string& name);
 
   /**

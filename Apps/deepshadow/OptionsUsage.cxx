@@ -158,6 +158,7 @@ std::string UsageCommands()
               a quarter step, coloured for coloured techniques) at --error-size (default
               256x256). --techniques takes technique specs, NAME[:OPTION=VALUE...] with any
               technique option below without its dashes, e.g. dsm:layers=2:epsilon=0.05.
+              With --volume and no --scenes, the file alone.
   report      Error against run time for every technique over a sweep of its parameters
               (step factors, cache and map sizes, PCF kernels, epsilon and layers, CSSM
               offsets and photons, cached and recomputed) on the standard scenes: writes

@@ -45,12 +45,22 @@ std::vector<std::string> DefaultTechniques()
   }
   return specs;
 }
+
+// A volume file's row label: its name without folders.
+std::string FileLabel(const std::string& path)
+{
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
 }
 
 int RunShadowBench(const Options& options)
 {
-  const std::vector<std::string> scenes =
-    options.BenchScenes.empty() ? vtkDeepShadowStandardScene::GetSceneNames() : options.BenchScenes;
+  // --volume without --scenes: that file alone (an empty name keeps it).
+  const bool file = !options.VolumeFile.empty() && options.BenchScenes.empty();
+  const std::vector<std::string> scenes = file ? std::vector<std::string>{ "" }
+    : options.BenchScenes.empty()              ? vtkDeepShadowStandardScene::GetSceneNames()
+                                               : options.BenchScenes;
   const std::vector<std::string> techniques =
     options.BenchTechniques.empty() ? DefaultTechniques() : options.BenchTechniques;
 
@@ -61,13 +71,14 @@ int RunShadowBench(const Options& options)
   for (const std::string& name : scenes)
   {
     SceneBench bench(options, name);
+    const std::string label = name.empty() ? FileLabel(options.VolumeFile) : name;
     renderer = RendererString(bench.Setup().Window);
     const Measurement none = bench.Measure(nullptr, false);
     const double baseline = none.CameraMs;
     const GroundTruth& truth = bench.Truth(false);
     const ImageDifference unshadowedError = Compare(none.Picture, truth.Picture);
     std::printf("%-8s %-24s %9.1f %8s %8s %9s %11s %9.5f %8.4f   (ground truth %.0f ms)\n",
-      name.c_str(), "none", baseline, "1.00", "1.00", "-", "0", unshadowedError.RMSE,
+      label.c_str(), "none", baseline, "1.00", "1.00", "-", "0", unshadowedError.RMSE,
       unshadowedError.MaxAbs, truth.Milliseconds);
     std::fflush(stdout);
 
@@ -89,13 +100,13 @@ int RunShadowBench(const Options& options)
         std::snprintf(nodes, sizeof(nodes), "%.2f/%.0f",
           vtkDeepShadowTechnique::FindStatistic(m.Statistics, "dsm_nodes_avg"), nodesMax);
       }
-      std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", name.c_str(),
+      std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", label.c_str(),
         technique.c_str(), m.CameraMs, m.CameraMs / baseline, m.LightMs / baseline, m.BuildMs,
         m.ShadowBytes, error.RMSE, error.MaxAbs, nodes,
         m.RebuiltForCamera && !ShadowTechniqueOf(shadow->GetParameters()).FollowsView ? "  (rebuilt when the camera moved!)" : "");
       std::fflush(stdout);
       Json row;
-      row.Set("scene", name)
+      row.Set("scene", label)
         .Set("technique", technique)
         .Set("unshadowed_ms", baseline)
         .Set("camera_ms", m.CameraMs)

@@ -266,6 +266,11 @@ expect 0 "shadow-bench with technique specs" -- "$tool" shadow-bench --scenes bu
 grep -q "dsm:layers=2:epsilon=0.1" out.txt || fail "shadow-bench row for the spec"
 # "none" among the techniques is the baseline row, once (it crashed the tool).
 [ "$(grep -c '^bucky  *none ' out.txt)" = 1 ] || fail "shadow-bench's none row"
+# --volume without --scenes: the file alone, under a key light of its own.
+expect 0 "shadow-bench of a volume file" -- "$tool" shadow-bench --volume int32.mhd --size 32x32 \
+  --error-size 16x16 --frames 1 --techniques none,dsm-fixed:dsm-bits=64
+grep -q '^int32.mhd  *dsm-fixed:dsm-bits=64 ' out.txt || fail "shadow-bench row of the file"
+[ "$(grep -c '^bucky\|^box' out.txt)" = 0 ] || fail "shadow-bench of a file ran standard scenes"
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || fail "reference.json lacks render_ms"
 # The CPU reference of the unshadowed view is the GPU's picture within its error (0.0013 here).
