@@ -87,6 +87,12 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
    * neighbouring texels (avsm); the rise stays within its StatedError.
    */
   bool Monotone = true;
+  /**
+   * Whether its depths resolve any layer: false for uniform opacity slices, whose depth
+   * resolution is a slice (the light's depth range over their count), so that a layer
+   * thinner than that shadows nothing within a slice behind it.
+   */
+  bool ResolvesThinLayers = true;
   /** Its structures follow the camera (rmsm's pages): a moved camera may build some. */
   bool FollowsView = false;
   /** Parameter keys it reads besides the shared ones (SharedShadowParameterKeys()). */

@@ -133,7 +133,7 @@ FixedBudgetDeepShadowMap::FixedBudgetDeepShadowMap(const ShadowParameters& param
   const ShadowCaster& caster, const Light& light, double step, int threads)
   : LightSpaceShadow(parameters, caster, light, step)
   , Count(FixedBudgetNodes(parameters))
-  , DepthRange(FixedDepthRange(
+  , DepthRange(LightDepthRange(
       CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces).Radius))
 {
   this->Nodes.assign(this->TexelCount() * 2 * this->Count, static_cast<std::uint16_t>(UnormMax));

@@ -12,7 +12,7 @@
 // make one line from the box's entry to the ground behind an empty box.)
 //
 // Storage: `dsm-bits` bits per texel (64, 128, 256, 512) are N = bits / 32 nodes of a 16-bit
-// unorm depth over the light's depth range (FixedDepthRange: every depth its faces see) and a
+// unorm depth over the light's depth range (LightDepthRange: every depth its faces see) and a
 // 16-bit unorm visibility, two nodes per RGBA16 layer; unused nodes lie at the range's end
 // with the last value. The lookup is a loop over the nodes in order, no search:
 // V(z) = 1 + sum over i >= 1 of (v_i - v_{i-1}) clamp((z - z_{i-1}) / (z_i - z_{i-1}), 0, 1),
@@ -43,16 +43,6 @@ inline int FixedBudgetNodes(const ShadowParameters& parameters)
   return FixedBudgetBits(parameters) / 32;
 }
 
-/**
- * The depth range the 16-bit depths span: 2.1 radii of the casters' bounding sphere. Every
- * face's depths lie within about 2.06 of them (LightSpace.h); a clustered face's sphere is
- * no larger than the whole one.
- */
-inline double FixedDepthRange(double casterRadius)
-{
-  return 2.1 * casterRadius;
-}
-
 /** The bisection: the finest bound tried first, and the steps of log2 epsilon after it. */
 constexpr int FixedBoundLog2Min = -14;
 constexpr int FixedBisectionSteps = 7;
@@ -67,7 +57,7 @@ struct FixedBudgetTexel
 
 /**
  * Fits one texel's ray into `nodes` nodes as described above; `depthRange` is
- * FixedDepthRange's.
+ * LightDepthRange's.
  */
 VTKDEEPSHADOWCORE_EXPORT FixedBudgetTexel FitFixedBudget(const ShadowCaster& caster,
   const glm::dvec3& origin, const glm::dvec3& direction, double step, int nodes, double depthRange);

@@ -48,6 +48,17 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowMapFace
   bool Project(const glm::dvec3& p, double& u, double& v, double& depth) const;
 };
 
+/**
+ * The light's depth range: 2.1 radii of the casters' bounding sphere. Every face's depths lie
+ * within about 2.06 of them (a clustered face's sphere is no larger than the whole one), so
+ * techniques that store depths as fractions (dsm-fixed's 16-bit nodes, opacity slices) use
+ * this; the GPU's light-space build and lookup get it as u_lightDepthRange.
+ */
+inline double LightDepthRange(double casterRadius)
+{
+  return 2.1 * casterRadius;
+}
+
 /** Beyond this many bounding radii a positional light's face is orthographic. */
 constexpr double FarLightRadii = 1000.0;
 

@@ -3,8 +3,6 @@
 
 #include "Core/ShadowTechniques.h"
 #include "Core/Shadows/FixedBudgetDeepShadowMap.h"
-#include "GL/UniformSink.h"
-#include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowFixedBudgetDeepShadowMap.h"
 #include "vtkDeepShadowFixedBudgetDeepShadowMapBuild.h"
 #include "vtkDeepShadowTechniqueFactory.h"
@@ -14,7 +12,7 @@
 
 vtkStandardNewMacro(vtkDeepShadowFixedBudgetDeepShadowMapTechnique);
 
-// The hooks with internal types: its layers per face, and the light's depth range.
+// The hooks with internal types: its layers per face.
 class vtkDeepShadowFixedBudgetDeepShadowMapTechnique::Hooks : public vtkDeepShadowLightSpaceTechnique::Hooks
 {
 public:
@@ -27,22 +25,7 @@ public:
   /** Two nodes a layer (RGBA16). */
   int GetLayersPerFace(const deepshadow::ShadowContext&) const override { return this->Technique->GetNodes() / 2; }
 
-  void SetBuildUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
-  {
-    sink.Set("u_depthRange", this->DepthRange());
-  }
-
-  void SetMapLookupUniforms(deepshadow::UniformSink& sink, const deepshadow::ShadowContext&) override
-  {
-    sink.Set("u_fixedDepthRange", this->DepthRange());
-  }
-
 private:
-  float DepthRange() const
-  {
-    return static_cast<float>(deepshadow::FixedDepthRange(this->Technique->GetCasterRadius()));
-  }
-
   vtkDeepShadowFixedBudgetDeepShadowMapTechnique* Technique;
 };
 

@@ -79,6 +79,7 @@ int BytesPerTexel(unsigned int format)
   switch (format)
   {
     case GL_R32F:
+    case GL_RGBA8:
       return 4;
     case GL_RG32F:
     case GL_RGBA16:
@@ -271,6 +272,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   deepshadow::UniformSink sink(&maps.Build);
   maps.Build.Set("u_size", self->MapSize);
   maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
+  maps.Build.Set("u_lightDepthRange", static_cast<float>(deepshadow::LightDepthRange(maps.CasterRadius)));
   this->SetBuildUniforms(sink, context);
   const bool defers = self->DefersTexels();
   if (defers)
@@ -467,6 +469,7 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   {
     maps.Bricks.BindLookup(sink, context.Window);
   }
+  sink.Set("u_lightDepthRange", static_cast<float>(deepshadow::LightDepthRange(maps.CasterRadius)));
   this->SetMapLookupUniforms(sink, context);
 }
 

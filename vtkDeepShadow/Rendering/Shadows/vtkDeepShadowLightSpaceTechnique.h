@@ -85,7 +85,7 @@ protected:
 
   // ---- What a light-space technique provides ----
 
-  /** GL internal format of its texels (GL_R32F, GL_RG32F, GL_RGBA16 or GL_RGBA32F). */
+  /** GL internal format of its texels (GL_R32F, GL_RGBA8, GL_RG32F, GL_RGBA16 or GL_RGBA32F). */
   virtual unsigned int GetTexelFormat() const = 0;
   /** Its build: the parts Dec and Texel of vtkDeepShadowLightSpaceCS.glsl's runtime Build. */
   virtual std::string GetBuildSource() const = 0;
@@ -114,7 +114,9 @@ protected:
 
   /**
    * Radius of the casters' bounding sphere that the faces were fitted to in the last frame
-   * (with other bricks, their union's): every depth the faces see is below 2.06 of it.
+   * (with other bricks, their union's): every depth the faces see is below 2.06 of it. The
+   * build and the lookup get deepshadow::LightDepthRange of it as u_lightDepthRange, for
+   * techniques that store depths as fractions of it (dsm-fixed, slices).
    */
   double GetCasterRadius() const;
 

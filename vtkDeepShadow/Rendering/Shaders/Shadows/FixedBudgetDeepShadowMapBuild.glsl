@@ -4,10 +4,10 @@
 // the first absorbing depth on, compressed as the deep shadow map compresses it, at the
 // finest bound that fits FIXED_NODES nodes (2^FIXED_BOUND_LOG2_MIN, else a bisection of
 // log2 epsilon in FIXED_BISECTION_STEPS steps; each attempt marches the ray again and stops
-// once it needs more nodes). Two nodes per RGBA16 layer: depth / u_depthRange, visibility.
+// once it needs more nodes). Two nodes per RGBA16 layer: depth / u_lightDepthRange, visibility.
 //@Dec
 layout(rgba16, binding = 0) uniform writeonly image2DArray u_output;
-uniform float u_depthRange; // world depth of unorm 1 (FixedDepthRange)
+uniform float u_lightDepthRange; // world depth of unorm 1 (LightDepthRange; set by the base class)
 const float UnormMax = 65535.0;
 
 // This attempt's nodes (depth in grid steps) and the last ones that fitted.
@@ -104,7 +104,7 @@ void addBounded(float depth, float low, float high, float preferred)
 void firstHit(float t)
 {
   g_hit = true;
-  startSegment(floor(t / u_depthRange * UnormMax), 1.0);
+  startSegment(floor(t / u_lightDepthRange * UnormMax), 1.0);
 }
 
 // A point of V at world depth t; false once V is at or below the bound (V beyond lies in
@@ -113,7 +113,7 @@ bool addPoint(float t)
 {
   float v = g_transmittance;
   bool beyond = v <= g_bound;
-  addBounded(floor(t / u_depthRange * UnormMax + 0.5), v - g_bound, beyond ? g_bound : v + g_bound, v);
+  addBounded(floor(t / u_lightDepthRange * UnormMax + 0.5), v - g_bound, beyond ? g_bound : v + g_bound, v);
   return !beyond && g_count <= FIXED_NODES;
 }
 
