@@ -59,16 +59,17 @@ def shadow_technique_rows(data):
 # Issue 42's comparison at equal memory: each technique spec at its bits per light-space
 # texel (the registry's TexelBytes times 8; without casting meshes).
 BUDGETS = [
-    (64, ["dsm:layers=1", "dsm-fixed:dsm-bits=64"]),
+    (64, ["dsm:layers=1", "dsm-fixed:dsm-bits=64", "slices:slices=8"]),
     (128, ["dsm:layers=2", "dsm:layers=2:epsilon=0.005", "dsm-fixed:dsm-bits=128", "dsm3",
-           "avsm:avsm-nodes=2", "fom:fom-terms=1"]),
-    (256, ["dsm:layers=4", "dsm:layers=4:epsilon=0.005", "dsm-fixed", "avsm:avsm-nodes=4", "fom:fom-terms=3"]),
-    (512, ["dsm", "dsm:epsilon=0.005", "dsm-fixed:dsm-bits=512", "avsm", "fom"]),
+           "avsm:avsm-nodes=2", "fom:fom-terms=1", "slices:slices=16"]),
+    (256, ["dsm:layers=4", "dsm:layers=4:epsilon=0.005", "dsm-fixed", "avsm:avsm-nodes=4", "fom:fom-terms=3",
+           "slices"]),
+    (512, ["dsm", "dsm:epsilon=0.005", "dsm-fixed:dsm-bits=512", "avsm", "fom", "slices:slices=64"]),
 ]
 BUDGET_SPECS = ",".join(spec for _, specs in BUDGETS for spec in specs)
 BUDGET_ABOUT = ("The deep shadow map, at its error bound (dsm) and at a fixed budget (dsm-fixed), "
-                "against its rivals, adaptive volumetric shadow maps (avsm) and Fourier opacity maps "
-                "(fom), and opacity levels (dsm3), at 64, 128, 256 and 512 bits per light-space texel, "
+                "against its rivals, adaptive volumetric shadow maps (avsm), Fourier opacity maps "
+                "(fom) and uniform opacity slices (slices), and opacity levels (dsm3), at 64, 128, 256 and 512 bits per light-space texel, "
                 "sorted by error within each budget: the error against the ground truth (CPU, "
                 "translucent shadow rays at a quarter step), the frame time ratios to the unshadowed "
                 "frame (camera orbiting; key light turning, a rebuild every frame) and the build "
