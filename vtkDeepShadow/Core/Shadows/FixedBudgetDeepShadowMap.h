@@ -16,8 +16,8 @@
 // 16-bit unorm visibility, two nodes per RGBA16 layer; unused nodes lie at the range's end
 // with the last value. The lookup is a loop over the nodes in order, no search:
 // V(z) = 1 + sum over i >= 1 of (v_i - v_{i-1}) clamp((z - z_{i-1}) / (z_i - z_{i-1}), 0, 1),
-// bilinear across the four nearest texels (the GLSL stops at the first node beyond z, whose
-// later terms are 0: in front of a medium one texel fetch). Casting meshes are steps among the nodes, as in
+// bilinear across the four nearest texels (on a CPU rasterizer the GLSL stops at the first
+// node beyond z, whose later terms are 0: in front of a medium one texel fetch). Casting meshes are steps among the nodes, as in
 // the deep shadow map. Grey only.
 // GLSL twins: Shaders/Shadows/FixedBudgetDeepShadowMapBuild.glsl and ...Map.glsl.
 #ifndef deepshadow_FixedBudgetDeepShadowMap_h

@@ -10,6 +10,8 @@
 #include "vtkObjectFactory.h"
 #include "vtk_glew.h"
 
+#include <cstring>
+
 vtkStandardNewMacro(vtkDeepShadowFixedBudgetDeepShadowMapTechnique);
 
 // The hooks with internal types: its layers per face.
@@ -93,7 +95,12 @@ std::string vtkDeepShadowFixedBudgetDeepShadowMapTechnique::GetBuildSource() con
 
 std::string vtkDeepShadowFixedBudgetDeepShadowMapTechnique::GetMapLookupSource() const
 {
-  return this->NodesDefine() + vtkDeepShadowFixedBudgetDeepShadowMap;
+  // A CPU rasterizer pays per fetch and a GPU for fetches that wait on each other: the loop
+  // stops early on the first only (the lookup's comment has the figures).
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
+  return this->NodesDefine() + (software ? "#define FIXED_LOOKUP_STOPS\n" : "") +
+    vtkDeepShadowFixedBudgetDeepShadowMap;
 }
 
 void vtkDeepShadowFixedBudgetDeepShadowMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

@@ -8,8 +8,8 @@
  * Bits / 32 nodes of a 16-bit depth (unorm over the light's depth range) and a 16-bit
  * visibility, the first of them exact where the ray first meets something absorbing; each
  * texel's bound is found by bisection (the finest that fits). 64, 128, 256 (default) or 512
- * bits are 2, 4, 8 or 16 nodes. Memory is known before the build; the lookup reads the nodes
- * in order up to the first beyond the point, no search. Casting meshes (vtkDeepShadowPass) are steps among the nodes.
+ * bits are 2, 4, 8 or 16 nodes. Memory is known before the build; the lookup is a loop over
+ * the nodes, no search (on a CPU rasterizer it stops at the first beyond the point). Casting meshes (vtkDeepShadowPass) are steps among the nodes.
  * Grey only.
  */
 #ifndef vtkDeepShadowFixedBudgetDeepShadowMapTechnique_h

@@ -1,9 +1,11 @@
 // Lookup of "dsm-fixed" (EvaluateFixedNodes and FixedBudgetDeepShadowMap::MapVisibility in
 // Core/Shadows/FixedBudgetDeepShadowMap.cxx are the CPU twins): a loop over the FIXED_NODES
-// nodes in order, no search, that stops at the first node beyond the point (the terms after
-// it are 0),
+// nodes in order, no search, of the same terms either way: on a GPU a fixed loop; with
+// FIXED_LOOKUP_STOPS (a CPU rasterizer) it stops at the first node beyond the point, whose
+// later terms are 0. Stopping made llvmpipe's frame on the head 1.34 times the unshadowed
+// one instead of 1.98, and an H200's 3.1 instead of 2.2 at 512 bits (its fetches serialize);
 // V(z) = 1 + sum over i >= 1 of (v_i - v_{i-1}) clamp((z - z_{i-1}) / (z_i - z_{i-1}), 0, 1),
-// which is 1 before node 0, linear between nodes and the last value after them (unused nodes
+// the sum is 1 before node 0, linear between nodes and the last value after them (unused nodes
 // lie at the range's end with it); bilinear across the four nearest texels. Depths are
 // unorms over u_lightDepthRange.
 //@Dec
@@ -21,16 +23,20 @@ float fixedVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 sl
     {
       visibility += (pair.y - previous.y) * clamp((depth - previous.x) / max(pair.x - previous.x, 1.0e-9), 0.0, 1.0);
     }
-    // Nodes beyond the point add nothing: the loop stops at the first of them.
+#ifdef FIXED_LOOKUP_STOPS
+    // Nodes beyond the point add nothing: stop at the first of them.
     if (depth < pair.x)
     {
       break;
     }
+#endif
     visibility += (pair.w - pair.y) * clamp((depth - pair.x) / max(pair.z - pair.x, 1.0e-9), 0.0, 1.0);
+#ifdef FIXED_LOOKUP_STOPS
     if (depth < pair.z)
     {
       break;
     }
+#endif
     previous = pair.zw;
   }
   return visibility;
