@@ -61,17 +61,21 @@ def shadow_technique_rows(data):
 BUDGETS = [
     (64, ["dsm:layers=1", "dsm-fixed:dsm-bits=64", "slices:slices=8"]),
     (128, ["dsm:layers=2", "dsm:layers=2:epsilon=0.005", "dsm-fixed:dsm-bits=128", "dsm3",
-           "avsm:avsm-nodes=2", "fom:fom-terms=1", "slices:slices=16"]),
+           "avsm:avsm-nodes=2", "fom:fom-terms=1", "slices:slices=16", "moments:moments=2"]),
     (256, ["dsm:layers=4", "dsm:layers=4:epsilon=0.005", "dsm-fixed", "avsm:avsm-nodes=4", "fom:fom-terms=3",
-           "slices"]),
+           "slices", "moments:moments=4", "moments"]),
     (512, ["dsm", "dsm:epsilon=0.005", "dsm-fixed:dsm-bits=512", "avsm", "fom", "slices:slices=64"]),
 ]
 BUDGET_SPECS = ",".join(spec for _, specs in BUDGETS for spec in specs)
 BUDGET_ABOUT = ("The deep shadow map, at its error bound (dsm) and at a fixed budget (dsm-fixed), "
                 "against its rivals, adaptive volumetric shadow maps (avsm), Fourier opacity maps "
-                "(fom) and uniform opacity slices (slices), and opacity levels (dsm3), at 64, 128, 256 and 512 bits per light-space texel, "
-                "sorted by error within each budget: the error against the ground truth (CPU, "
-                "translucent shadow rays at a quarter step), the frame time ratios to the unshadowed "
+                "(fom), uniform opacity slices (slices) and power moments (moments, MBOIT), and opacity "
+                "levels (dsm3), at 64, 128, 256 and 512 bits per light-space texel (moments: 2 at 128, "
+                "4 and 6 at 256, in 256 bits' layers), "
+                "sorted by error within each budget: the error of the image against the ground truth (CPU, "
+                "translucent shadow rays at a quarter step), the error of the shadow term alone at the "
+                "first receivers (where the view ray's opacity reaches one half: the technique's CPU "
+                "twin against the ground truth's shadows, same march), the frame time ratios to the unshadowed "
                 "frame (camera orbiting; key light turning, a rebuild every frame) and the build "
                 "time. dsm keeps at most its layers, as few as its epsilon (0.02 by default) needs; at "
                 "0.005 it uses more of them. dsm-fixed spends its bits on each texel's smallest bound "
@@ -79,14 +83,16 @@ BUDGET_ABOUT = ("The deep shadow map, at its error bound (dsm) and at a fixed bu
 
 
 def budget_rows(data):
-    header = ["scene", "bits / texel", "technique", "RMSE", "max", "unshadowed RMSE", "camera moves",
-              "light moves", "build ms", "nodes avg/max"]
+    header = ["scene", "bits / texel", "technique", "RMSE", "max", "receivers RMSE", "receivers max",
+              "unshadowed RMSE", "camera moves", "light moves", "build ms", "nodes avg/max"]
     bits = {spec: budget for budget, specs in BUDGETS for spec in specs}
     rows = []
     for r in sorted(data["rows"], key=lambda r: (r["scene"], bits[r["technique"]], r["rmse"])):
         nodes = f"{r['dsm_nodes_avg']:.2f}/{r['dsm_nodes_max']:.0f}" if r.get("dsm_nodes_max") else ""
         rows.append([r["scene"], str(bits[r["technique"]]), r["technique"], number(r["rmse"], 5),
-                     number(r["max_abs"], 3), number(r["unshadowed_rmse"], 5), number(r["camera_ratio"], 2),
+                     number(r["max_abs"], 3), number(r.get("receiver_rmse"), 5),
+                     number(r.get("receiver_max"), 3), number(r["unshadowed_rmse"], 5),
+                     number(r["camera_ratio"], 2),
                      number(r["light_ratio"], 2), number(r["build_ms"], 0), nodes])
     return header, rows
 
@@ -118,9 +124,10 @@ TABLES = {
         "title": "Shadow representations at equal memory",
         "about": BUDGET_ABOUT,
         "args": ["shadow-bench", "--scenes", "head,clouds,hybrid-ground", "--size", "256x256",
-                 "--error-size", "128x128", "--frames", "3", "--techniques", BUDGET_SPECS],
+                 "--error-size", "128x128", "--frames", "3", "--receiver-error", "--techniques", BUDGET_SPECS],
+        "charts": True,
         "quick": ["shadow-bench", "--scenes", "box", "--techniques", "dsm:layers=1,avsm:avsm-nodes=2",
-                  "--size", "32x32", "--error-size", "16x16", "--frames", "1"],
+                  "--size", "32x32", "--error-size", "16x16", "--frames", "1", "--receiver-error"],
         "rows": budget_rows,
     },
     "shadow-budgets-mr": {
@@ -129,7 +136,8 @@ TABLES = {
                  "181x217x181, the tool's default preset for the file) under a key light from the "
                  "upper right front. " + BUDGET_ABOUT,
         "args": ["shadow-bench", "--volume", "/usr/share/mricron/templates/ch2.nii.gz", "--size", "256x256",
-                 "--error-size", "128x128", "--frames", "3", "--techniques", BUDGET_SPECS],
+                 "--error-size", "128x128", "--frames", "3", "--receiver-error", "--techniques", BUDGET_SPECS],
+        "charts": True,
         "quick": ["shadow-bench", "--volume", "/usr/share/mricron/templates/ch2.nii.gz", "--techniques",
                   "dsm-fixed:dsm-bits=64", "--size", "32x32", "--error-size", "16x16", "--frames", "1"],
         "rows": budget_rows,
@@ -195,6 +203,11 @@ def page(name, spec, data, command, quick):
         "|" + "---|" * len(header),
     ]
     lines += ["| " + " | ".join(row) + " |" for row in rows]
+    if spec.get("charts"):
+        lines += ["", "Per scene, the image's RMSE against bits per texel and against the camera-only "
+                  "frame ratio, one series per technique, the Pareto front dashed:", ""]
+        for scene in dict.fromkeys(r["scene"] for r in data["rows"]):
+            lines.append(f"![{scene}]({name}/{scene}.png)")
     text = "\n".join(lines) + "\n"
     return text + DIGEST + digest(text) + (" quick" if quick else "") + " -->\n"
 
@@ -234,6 +247,11 @@ def main():
         parser.error("give a table or --check")
     spec = TABLES[options.table]
     args = spec["quick"] if options.quick else spec["args"]
+    os.makedirs(options.out, exist_ok=True)
+    if spec.get("charts"):
+        charts = os.path.join(options.out, options.table)
+        os.makedirs(charts, exist_ok=True)
+        args = [*args, "--charts", charts]
     with tempfile.TemporaryDirectory() as work:
         result = os.path.join(work, "result.json")
         # The tool prints its rows as it goes: progress on a long run.
@@ -242,8 +260,8 @@ def main():
             return 1
         with open(result) as f:
             data = json.load(f)
-    command = "deepshadow " + " ".join(args)
-    os.makedirs(options.out, exist_ok=True)
+    command = "deepshadow " + " ".join(a if a != options.out and not a.startswith(options.out + "/")
+                                       else os.path.relpath(a, ROOT) for a in args)
     path = os.path.join(options.out, options.table + ".md")
     with open(path, "w") as f:
         f.write(page(options.table, spec, data, command, options.quick))

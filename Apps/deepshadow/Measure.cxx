@@ -203,6 +203,23 @@ Image SceneBench::Picture(vtkDeepShadowTechnique* technique, vtkDeepShadowTechni
   return picture;
 }
 
+Image SceneBench::TwinSurfaceTerm(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second)
+{
+  this->Use(technique, second);
+  this->Restore();
+  this->Scene.Window->SetSize(this->Settings.ErrorWidth, this->Settings.ErrorHeight);
+  RenderFrame(this->Scene.Window); // lights and clipping as the ground truth has them
+  vtkNew<vtkDeepShadowReferenceRenderer> reference;
+  Image picture, surface;
+  if (!reference->Render(this->Scene.Renderer, picture, nullptr, &surface))
+  {
+    throw std::runtime_error("the CPU twin failed: " + reference->GetLastError());
+  }
+  this->Scene.Window->SetSize(this->Settings.Width, this->Settings.Height);
+  this->Use(nullptr, nullptr);
+  return surface;
+}
+
 const GroundTruth& SceneBench::Truth(bool colored)
 {
   GroundTruth& truth = this->Truths[colored ? 1 : 0];
@@ -221,7 +238,7 @@ const GroundTruth& SceneBench::Truth(bool colored)
   vtkNew<vtkDeepShadowReferenceRenderer> reference;
   reference->SetShadows(vtkDeepShadowReferenceRenderer::GroundTruthShadows);
   const auto start = std::chrono::steady_clock::now();
-  if (!reference->Render(this->Scene.Renderer, truth.Picture, &truth.ShadowTerm))
+  if (!reference->Render(this->Scene.Renderer, truth.Picture, &truth.ShadowTerm, &truth.SurfaceTerm))
   {
     throw std::runtime_error("the ground truth failed: " + reference->GetLastError());
   }

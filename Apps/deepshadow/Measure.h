@@ -60,6 +60,7 @@ struct GroundTruth
 {
   Image Picture;
   Image ShadowTerm;
+  Image SurfaceTerm; // at each pixel's first receiver, -1 where none (ReferenceRenderer::Render)
   double Milliseconds = 0.0;
 };
 
@@ -85,6 +86,13 @@ public:
 
   /** The ground truth, grey or coloured, computed once per kind. */
   const GroundTruth& Truth(bool colored);
+
+  /**
+   * The shadow term at each pixel's first receiver with `technique`'s CPU twin (the exact
+   * march of the ground truth otherwise), at --error-size, -1 where there is none: the
+   * error of the representation alone, where a viewer sees it.
+   */
+  Image TwinSurfaceTerm(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second = nullptr);
 
   /** The start view at --size with `technique` (null: none; `second` as in Measure). */
   Image Picture(vtkDeepShadowTechnique* technique, vtkDeepShadowTechnique* second = nullptr);

@@ -568,6 +568,8 @@ std::vector<OptionEntry> OutputAndBenchOptions()
         }
       } },
     Size("--error-size", &Options::ErrorWidth, &Options::ErrorHeight),
+    Switch("--receiver-error", &Options::ReceiverError),
+    Text("--charts", &Options::ChartsDirectory),
     { { "--blend-modes" },
       [](Options& o, const std::string&, const NextValue& next) { ParseBlendModes(o, next); } },
     { { "--bench-sizes" },

@@ -129,6 +129,8 @@ struct Options
   std::vector<std::string> BenchTechniques; // empty: all but none
   int ErrorWidth = 256;
   int ErrorHeight = 256;
+  bool ReceiverError = false; // also the shadow term's error at the first receivers (CPU twins)
+  std::string ChartsDirectory; // one chart of error against bits and frame time per scene
   // report
   bool Quick = false; // the short sweep at smaller sizes
 

@@ -114,7 +114,7 @@ Usage:
   deepshadow bench     [--bench-sizes 128,256] [--blend-modes LIST|all] [--size WxH] [--frames N]
                        [--json bench.json]
   deepshadow shadow-bench [--scenes a,b] [--techniques t,u] [--size WxH] [--error-size WxH]
-                       [--frames N] [--json shadows.json]
+                       [--frames N] [--receiver-error] [--charts DIR] [--json shadows.json]
   deepshadow report    --out DIR [--quick] [--scenes a,b] [--techniques t,u] [--size WxH]
                        [--error-size WxH] [--frames N]
   deepshadow scenes
@@ -158,7 +158,12 @@ std::string UsageCommands()
               a quarter step, coloured for coloured techniques) at --error-size (default
               256x256). --techniques takes technique specs, NAME[:OPTION=VALUE...] with any
               technique option below without its dashes, e.g. dsm:layers=2:epsilon=0.05.
-              With --volume and no --scenes, the file alone.
+              With --volume and no --scenes, the file alone. --receiver-error: also the
+              error of the shadow term alone at each pixel's first receiver (where the view
+              ray's opacity reaches 1/2), the technique's CPU twin against the ground
+              truth's shadows (slower: a CPU render per technique). --charts DIR: per scene
+              DIR/SCENE.png, the error against bits per light-space texel and against the
+              frame ratio, one series per technique, Pareto fronts dashed.
   report      Error against run time for every technique over a sweep of its parameters
               (step factors, cache and map sizes, PCF kernels, epsilon and layers, CSSM
               offsets and photons, cached and recomputed) on the standard scenes: writes

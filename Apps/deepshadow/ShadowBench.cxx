@@ -8,11 +8,18 @@
 //     translucent shadow rays at a quarter step (coloured for coloured techniques), at
 //     --error-size;
 //   - for deep shadow maps, the nodes needed per texel (average and maximum, as in Ropinski
-//     et al.'s Table 4).
+//     et al.'s Table 4);
+//   - with --receiver-error, the error of the shadow term alone at each pixel's first
+//     receiver (where the view ray's opacity reaches one half), the technique's CPU twin
+//     against the ground truth's shadows on the same exact march: what the representation
+//     costs where a viewer sees it;
+//   - with --charts DIR, per scene DIR/<scene>.png: RMSE against bits per light-space texel
+//     and against the camera-only frame ratio, one series per technique, Pareto fronts drawn.
 #include "Commands.h"
 #include "Json.h"
 #include "Measure.h"
 #include "Outputs.h"
+#include "ReportChart.h"
 
 #include "Core/Shadows.h"
 
@@ -20,6 +27,8 @@
 #include "Core/ShadowTechniques.h"
 #include "vtkDeepShadowTechnique.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace deepshadow
@@ -46,6 +55,52 @@ std::vector<std::string> DefaultTechniques()
   return specs;
 }
 
+// The first-receiver error: over the pixels where both the twin and the ground truth have a
+// receiver (-1 marks none), RMSE and largest difference of the shadow term.
+struct ReceiverError
+{
+  double RMSE = 0.0;
+  double MaxAbs = 0.0;
+  long long Pixels = 0;
+};
+
+ReceiverError CompareReceivers(const Image& twin, const Image& truth)
+{
+  ReceiverError error;
+  double squares = 0.0;
+  for (int y = 0; y < truth.Height; ++y)
+  {
+    for (int x = 0; x < truth.Width; ++x)
+    {
+      const glm::dvec3 a = twin.At(x, y), b = truth.At(x, y);
+      if (a.r < 0.0 || b.r < 0.0)
+      {
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        squares += (a[c] - b[c]) * (a[c] - b[c]);
+        error.MaxAbs = std::max(error.MaxAbs, std::abs(a[c] - b[c]));
+      }
+      ++error.Pixels;
+    }
+  }
+  error.RMSE = error.Pixels > 0 ? std::sqrt(squares / (3.0 * error.Pixels)) : 0.0;
+  return error;
+}
+
+// One scene's chart: RMSE against bits per texel (map techniques) and against the
+// camera-only frame ratio, one series per technique name.
+void ChartScene(const std::string& directory, const std::string& label, const std::vector<ChartPoint>& bits,
+  const std::vector<ChartPoint>& ratio)
+{
+  ChartPanel memory{ label + ": error against memory", "bits per light-space texel",
+    "RMSE of the image against the ground truth", bits };
+  ChartPanel time{ label + ": error against frame time", "frame time / unshadowed frame (camera moves)",
+    "RMSE of the image against the ground truth", ratio };
+  WriteErrorVsTimeChart(directory + "/" + label + ".png", { memory, time });
+}
+
 // A volume file's row label: its name without folders.
 std::string FileLabel(const std::string& path)
 {
@@ -63,6 +118,10 @@ int RunShadowBench(const Options& options)
                                                : options.BenchScenes;
   const std::vector<std::string> techniques =
     options.BenchTechniques.empty() ? DefaultTechniques() : options.BenchTechniques;
+  if (!options.ChartsDirectory.empty())
+  {
+    Outputs::RequireWritable(options.ChartsDirectory + "/chart.png"); // before the work
+  }
 
   std::printf("%-8s %-24s %9s %8s %8s %9s %11s %9s %8s %s\n", "scene", "technique", "frame_ms",
     "camera", "light", "build_ms", "bytes", "rmse", "max", "nodes avg/max");
@@ -81,6 +140,7 @@ int RunShadowBench(const Options& options)
       label.c_str(), "none", baseline, "1.00", "1.00", "-", "0", unshadowedError.RMSE,
       unshadowedError.MaxAbs, truth.Milliseconds);
     std::fflush(stdout);
+    std::vector<ChartPoint> bitsPoints, ratioPoints;
 
     for (const std::string& technique : techniques)
     {
@@ -100,10 +160,25 @@ int RunShadowBench(const Options& options)
         std::snprintf(nodes, sizeof(nodes), "%.2f/%.0f",
           vtkDeepShadowTechnique::FindStatistic(m.Statistics, "dsm_nodes_avg"), nodesMax);
       }
-      std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s\n", label.c_str(),
+      const ShadowTechniqueInfo& info = ShadowTechniqueOf(shadow->GetParameters());
+      ReceiverError receiver;
+      char receiverText[64] = "";
+      if (options.ReceiverError)
+      {
+        receiver = CompareReceivers(bench.TwinSurfaceTerm(shadow), bench.Truth(colored).SurfaceTerm);
+        std::snprintf(receiverText, sizeof(receiverText), "  receivers %.5f/%.4f", receiver.RMSE, receiver.MaxAbs);
+      }
+      std::printf("%-8s %-24s %9.1f %8.2f %8.2f %9.1f %11lld %9.5f %8.4f %s%s%s\n", label.c_str(),
         technique.c_str(), m.CameraMs, m.CameraMs / baseline, m.LightMs / baseline, m.BuildMs,
-        m.ShadowBytes, error.RMSE, error.MaxAbs, nodes,
-        m.RebuiltForCamera && !ShadowTechniqueOf(shadow->GetParameters()).FollowsView ? "  (rebuilt when the camera moved!)" : "");
+        m.ShadowBytes, error.RMSE, error.MaxAbs, nodes, receiverText,
+        m.RebuiltForCamera && !info.FollowsView ? "  (rebuilt when the camera moved!)" : "");
+      // Log axes: an error of exactly 0 would sit on the edge.
+      const double chartError = std::max(error.RMSE, 1e-6);
+      if (info.TexelBytes)
+      {
+        bitsPoints.push_back({ info.Name, 8.0 * static_cast<double>(info.TexelBytes(shadow->GetParameters())), chartError });
+      }
+      ratioPoints.push_back({ info.Name, m.CameraMs / baseline, chartError });
       std::fflush(stdout);
       Json row;
       row.Set("scene", label)
@@ -121,8 +196,16 @@ int RunShadowBench(const Options& options)
         .Set("unshadowed_rmse", unshadowedError.RMSE)
         .Set("ground_truth_ms", bench.Truth(colored).Milliseconds)
         .Set("rebuilt_when_camera_moved", m.RebuiltForCamera);
+      if (options.ReceiverError)
+      {
+        row.Set("receiver_rmse", receiver.RMSE).Set("receiver_max", receiver.MaxAbs).Set("receiver_pixels", receiver.Pixels);
+      }
       SetStatistics(row, m.Statistics);
       rows.push_back(row);
+    }
+    if (!options.ChartsDirectory.empty())
+    {
+      ChartScene(options.ChartsDirectory, label, bitsPoints, ratioPoints);
     }
   }
   if (!options.Json.empty())

@@ -271,6 +271,22 @@ expect 0 "shadow-bench of a volume file" -- "$tool" shadow-bench --volume int32.
   --error-size 16x16 --frames 1 --techniques none,dsm-fixed:dsm-bits=64
 grep -q '^int32.mhd  *dsm-fixed:dsm-bits=64 ' out.txt || fail "shadow-bench row of the file"
 [ "$(grep -c '^bucky\|^box' out.txt)" = 0 ] || fail "shadow-bench of a file ran standard scenes"
+# --receiver-error: the shadow term's error at the first receivers, per row, in the JSON; a
+# fine map is closer there than 8 coarse slices. --charts: a chart per scene; a folder that
+# does not exist is refused before the work.
+mkdir -p charts
+expect 0 "shadow-bench receiver errors and charts" -- "$tool" shadow-bench --scenes bucky --scale 0.5 \
+  --size 32x32 --error-size 32x32 --frames 1 --techniques dsm-fixed:dsm-bits=512,slices:slices=8 \
+  --receiver-error --charts charts --json receivers.json
+python3 - receivers.json <<'PY' || fail "receiver errors"
+import json, sys
+rows = {r["technique"]: r for r in json.load(open(sys.argv[1]))["rows"]}
+fine, coarse = rows["dsm-fixed:dsm-bits=512"], rows["slices:slices=8"]
+assert fine["receiver_pixels"] > 100, fine
+assert fine["receiver_rmse"] < 0.5 * coarse["receiver_rmse"], (fine["receiver_rmse"], coarse["receiver_rmse"])
+PY
+[ "$(head -c 4 charts/bucky.png | tail -c 3)" = PNG ] || fail "no chart of bucky"
+expect 2 "charts into a missing folder" -- "$tool" shadow-bench --scenes bucky --charts no/such/folder
 expect 0 "reference" -- "$tool" reference --scene bucky --scale 0.5 --size 64x64 --out reference.png --json reference.json
 grep -q '"render_ms":' reference.json || fail "reference.json lacks render_ms"
 # The CPU reference of the unshadowed view is the GPU's picture within its error (0.0013 here).

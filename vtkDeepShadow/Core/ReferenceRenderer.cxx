@@ -26,6 +26,18 @@ struct Fragment
   bool FirstVolume;
 };
 
+// The surface term of Render(): the shadow term of the fragment at which `front`'s opacity,
+// composited with `sample`, first reaches ReceiverOpacity (kept in `surface` once found).
+void FollowReceiver(glm::dvec4& front, const RaySample& sample, glm::dvec3& surface, bool& found)
+{
+  CompositeFrontToBack(front, sample.Color);
+  if (!found && front.a >= ReferenceRenderer::ReceiverOpacity && sample.Term.a > 0.0)
+  {
+    surface = glm::dvec3(sample.Term) / sample.Term.a;
+    found = true;
+  }
+}
+
 // Scene::VolumeSegments: a volume's samples along `ray` (as MarchRay gives them, up to
 // `tEnd`) grouped into `count` segments of equal length over its march interval, each
 // composited on its own and placed at its opacity-weighted mean depth. Empty segments are
@@ -358,7 +370,7 @@ double CollectMeshFragments(const Scene& scene, const MarchSettings& settings, c
 // `termPixel` (the GPU twin's merge of meshes, peeled layers and further volumes).
 void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings,
   const std::vector<PreparedVolume>& prepared, const MeshShadows& meshes, double receiverBias,
-  const Ray& ray, double offset, glm::dvec3& pixel, glm::dvec3& termPixel)
+  const Ray& ray, double offset, glm::dvec3& pixel, glm::dvec3& termPixel, glm::dvec3& surfacePixel)
 {
   std::vector<Fragment> fragments;
   const double tEnd = CollectMeshFragments(scene, settings, meshes, receiverBias, ray, fragments);
@@ -383,7 +395,8 @@ void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings
     [](const Fragment& a, const Fragment& b) { return a.Sample.T < b.Sample.T; });
   glm::dvec4 front(0.0);
   glm::dvec4 termFront(0.0);
-  bool terminated = false;
+  glm::dvec4 receiverFront(0.0);
+  bool terminated = false, found = false;
   for (const Fragment& fragment : fragments)
   {
     // The first volume's march stops once the ray, all it merged included, is nearly
@@ -395,6 +408,7 @@ void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings
     }
     CompositeFrontToBack(front, fragment.Sample.Color);
     CompositeFrontToBack(termFront, fragment.Sample.Term);
+    FollowReceiver(receiverFront, fragment.Sample, surfacePixel, found);
   }
   pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
   termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;
@@ -402,7 +416,7 @@ void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings
 }
 
 Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& settings, int threads,
-  Image* shadowTerm)
+  Image* shadowTerm, Image* surfaceTerm)
 {
   CheckVolumeSamples(scene, settings);
   const int width = scene.View.GetWidth();
@@ -411,6 +425,10 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
   if (shadowTerm)
   {
     *shadowTerm = Image(width, height);
+  }
+  if (surfaceTerm)
+  {
+    *surfaceTerm = Image(width, height);
   }
 
   const size_t source = ShadowSource(scene);
@@ -439,15 +457,25 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           : UnjitteredOffset;
         glm::dvec3 pixel = scene.Background;
         glm::dvec3 termPixel = scene.Background;
+        glm::dvec3 surfacePixel(-1.0);
         if ((scene.Surfaces && !scene.Surfaces->Empty()) || scene.Volumes.size() > 1)
         {
-          CompositeMeshesAndVolumes(scene, settings, prepared, meshes, receiverBias, ray, offset, pixel, termPixel);
+          CompositeMeshesAndVolumes(
+            scene, settings, prepared, meshes, receiverBias, ray, offset, pixel, termPixel, surfacePixel);
         }
         else if (!scene.Volumes.empty())
         {
           glm::dvec4 term(0.0);
+          std::vector<RaySample> samples;
           const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[0], prepared[0], ray,
-            std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr);
+            std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr,
+            surfaceTerm ? &samples : nullptr);
+          glm::dvec4 receiverFront(0.0);
+          bool found = false;
+          for (const RaySample& sample : samples)
+          {
+            FollowReceiver(receiverFront, sample, surfacePixel, found);
+          }
           // The GPU writes the volume to an 8-bit target, which clamps its colour (above 1 where
           // independent components overlap, as in VTK's) before it is blended.
           pixel = glm::clamp(glm::dvec3(rgba), 0.0, 1.0) + (1.0 - rgba.a) * pixel;
@@ -457,6 +485,10 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
         if (shadowTerm)
         {
           shadowTerm->Set(x, y, termPixel);
+        }
+        if (surfaceTerm)
+        {
+          surfaceTerm->Set(x, y, surfacePixel);
         }
       }
     },

@@ -190,12 +190,17 @@ public:
   /**
    * Renders the scene; `threads` 0 uses DefaultThreadCount(). With `shadowTerm`, also its
    * shadow-term image (RenderOutput::ShadowTerm) from the same march: the visibilities,
-   * which cost the most, are evaluated once for both. Throws std::invalid_argument when a
-   * sample distance (or a shadow step) would take more samples across a volume than a ray
-   * may (CheckRaySamples), as the GPU mapper refuses it.
+   * which cost the most, are evaluated once for both. With `surfaceTerm`, also the shadow
+   * term at each pixel's first receiver: that of the fragment (sample or mesh crossing) at
+   * which the view ray's opacity first reaches ReceiverOpacity, not composited; -1 where it
+   * never does. Throws std::invalid_argument when a sample distance (or a shadow step)
+   * would take more samples across a volume than a ray may (CheckRaySamples), as the GPU
+   * mapper refuses it.
    */
   static Image Render(const Scene& scene, const MarchSettings& settings, int threads = 0,
-    Image* shadowTerm = nullptr);
+    Image* shadowTerm = nullptr, Image* surfaceTerm = nullptr);
+  /** Where a view ray meets its first receiver: the opacity it has reached there. */
+  static constexpr double ReceiverOpacity = 0.5;
 
   /** What rendering a volume needs beyond its description, computed once per image. */
   struct PreparedVolume

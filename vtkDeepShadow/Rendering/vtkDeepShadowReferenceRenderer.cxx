@@ -307,7 +307,7 @@ void FillBackground(const deepshadow::Scene& scene, deepshadow::Image& image, de
 }
 
 bool vtkDeepShadowReferenceRenderer::Render(
-  vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm)
+  vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm, deepshadow::Image* surfaceTerm)
 {
   this->LastError.clear();
   deepshadow::Scene scene = MakeSceneFrame(renderer);
@@ -385,6 +385,18 @@ bool vtkDeepShadowReferenceRenderer::Render(
   if (scene.Volumes.empty())
   {
     FillBackground(scene, image, shadowTerm);
+    if (surfaceTerm)
+    {
+      // No receiver anywhere.
+      *surfaceTerm = deepshadow::Image(image.Width, image.Height);
+      for (int y = 0; y < image.Height; ++y)
+      {
+        for (int x = 0; x < image.Width; ++x)
+        {
+          surfaceTerm->Set(x, y, glm::dvec3(-1.0));
+        }
+      }
+    }
     return true;
   }
   if (sampleDistance <= 0.0)
@@ -395,7 +407,7 @@ bool vtkDeepShadowReferenceRenderer::Render(
   settings.SampleDistance = sampleDistance;
   try
   {
-    image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm);
+    image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm, surfaceTerm);
   }
   catch (const std::invalid_argument& e)
   {

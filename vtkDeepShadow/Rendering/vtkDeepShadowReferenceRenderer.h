@@ -92,9 +92,12 @@ public:
   bool Render(vtkRenderer* renderer, vtkImageData* image);
   /**
    * The same, as linear double RGB; with `shadowTerm`, also the shadow-term image
-   * (vtkDeepShadowVolumeMapper::OutputShadowTerm) from the same march, for about the cost of one.
+   * (vtkDeepShadowVolumeMapper::OutputShadowTerm) from the same march, for about the cost of
+   * one; with `surfaceTerm`, the shadow term at each pixel's first receiver, -1 where there
+   * is none (deepshadow::ReferenceRenderer::Render).
    */
-  bool Render(vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm = nullptr);
+  bool Render(vtkRenderer* renderer, deepshadow::Image& image, deepshadow::Image* shadowTerm = nullptr,
+    deepshadow::Image* surfaceTerm = nullptr);
 
   const std::string& GetLastError() const { return this->LastError; }
 

@@ -186,4 +186,16 @@ TEST(Shadows, ReferenceRendererDarkensWhatTheSlabShadows)
   }
   EXPECT_EQ(term.At(18, 12).x, term.At(18, 12).z);
   EXPECT_LT(term.At(18, 12).x, 0.5 * term.At(5, 12).x);
+
+  // The shadow term at the first receivers changes the colour not at all; -1 off the volume.
+  // The camera's ray meets the floor (value 0.5, opacity 0.3 a unit) from z = 0 and reaches
+  // opacity 1/2 at the sample centred at z = 1.75 (1 - 0.7^2 < 1/2 <= 1 - 0.7^2.5); the light
+  // comes from +z through the floor's top (z 1.75 to 3, and its ramp to 0 over z 3 to 4: in
+  // all an optical depth of 1.25 (-ln 0.7) + 0.16 = 0.61, V = 0.54), and under the slab
+  // through the slab as well (opaque: V below 0.01).
+  Image surface;
+  EXPECT_EQ(ReferenceRenderer::Render(scene, settings, 2, nullptr, &surface).RGB, shadowed.RGB);
+  EXPECT_EQ(surface.At(0, 12), glm::dvec3(-1.0));
+  EXPECT_NEAR(surface.At(5, 12).x, 0.54, 0.04);
+  EXPECT_LT(surface.At(18, 12).x, 0.01);
 }
