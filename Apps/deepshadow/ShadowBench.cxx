@@ -120,7 +120,9 @@ int RunShadowBench(const Options& options)
     options.BenchTechniques.empty() ? DefaultTechniques() : options.BenchTechniques;
   if (!options.ChartsDirectory.empty())
   {
-    Outputs::RequireWritable(options.ChartsDirectory + "/chart.png"); // before the work
+    // Before the work: the first scene's chart can be written there.
+    const std::string first = scenes.front().empty() ? FileLabel(options.VolumeFile) : scenes.front();
+    Outputs::RequireWritable(options.ChartsDirectory + "/" + first + ".png");
   }
 
   std::printf("%-8s %-24s %9s %8s %8s %9s %11s %9s %8s %s\n", "scene", "technique", "frame_ms",

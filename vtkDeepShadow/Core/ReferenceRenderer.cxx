@@ -26,12 +26,12 @@ struct Fragment
   bool FirstVolume;
 };
 
-// The surface term of Render(): the shadow term of the fragment at which `front`'s opacity,
-// composited with `sample`, first reaches ReceiverOpacity (kept in `surface` once found).
-void FollowReceiver(glm::dvec4& front, const RaySample& sample, glm::dvec3& surface, bool& found)
+// The surface term of Render(): the shadow term of the first fragment with which the view
+// ray's opacity (`opacity`, this fragment composited) reaches ReceiverOpacity (kept in
+// `surface` once found).
+void FollowReceiver(double opacity, const RaySample& sample, glm::dvec3& surface, bool& found)
 {
-  CompositeFrontToBack(front, sample.Color);
-  if (!found && front.a >= ReferenceRenderer::ReceiverOpacity && sample.Term.a > 0.0)
+  if (!found && opacity >= ReferenceRenderer::ReceiverOpacity && sample.Term.a > 0.0)
   {
     surface = glm::dvec3(sample.Term) / sample.Term.a;
     found = true;
@@ -395,7 +395,6 @@ void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings
     [](const Fragment& a, const Fragment& b) { return a.Sample.T < b.Sample.T; });
   glm::dvec4 front(0.0);
   glm::dvec4 termFront(0.0);
-  glm::dvec4 receiverFront(0.0);
   bool terminated = false, found = false;
   for (const Fragment& fragment : fragments)
   {
@@ -408,7 +407,7 @@ void CompositeMeshesAndVolumes(const Scene& scene, const MarchSettings& settings
     }
     CompositeFrontToBack(front, fragment.Sample.Color);
     CompositeFrontToBack(termFront, fragment.Sample.Term);
-    FollowReceiver(receiverFront, fragment.Sample, surfacePixel, found);
+    FollowReceiver(front.a, fragment.Sample, surfacePixel, found);
   }
   pixel = glm::dvec3(front) + (1.0 - front.a) * pixel;
   termPixel = glm::dvec3(termFront) + (1.0 - termFront.a) * termPixel;
@@ -470,11 +469,12 @@ Image ReferenceRenderer::Render(const Scene& scene, const MarchSettings& setting
           const glm::dvec4 rgba = MarchRay(scene, scene.Volumes[0], prepared[0], ray,
             std::numeric_limits<double>::infinity(), offset, settings, shadowTerm ? &term : nullptr,
             surfaceTerm ? &samples : nullptr);
-          glm::dvec4 receiverFront(0.0);
+          glm::dvec4 front(0.0);
           bool found = false;
           for (const RaySample& sample : samples)
           {
-            FollowReceiver(receiverFront, sample, surfacePixel, found);
+            CompositeFrontToBack(front, sample.Color);
+            FollowReceiver(front.a, sample, surfacePixel, found);
           }
           // The GPU writes the volume to an 8-bit target, which clamps its colour (above 1 where
           // independent components overlap, as in VTK's) before it is blended.
