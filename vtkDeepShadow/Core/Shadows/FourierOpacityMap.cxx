@@ -14,13 +14,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-// A sample's optical depth; an opaque one counts as 1/1024 let through (the ray stops after
-// it anyway), so that the series stays finite.
-double OpticalDepth(double opacity)
-{
-  return -std::log(std::max(1.0 - opacity, 1.0 / 1024.0));
-}
-
 constexpr std::uint32_t FirstBits = 0xfffu;
 
 std::uint32_t BitsOf(float value)
@@ -56,6 +49,11 @@ void UnpackFourierEnd(float stored, double& end, double& first)
   const float period = FloatOf(bits & ~FirstBits);
   end = period;
   first = static_cast<double>(static_cast<float>(bits & FirstBits) / 4095.0f * period);
+}
+
+double SampleOpticalDepth(double opacity)
+{
+  return -std::log(std::max(1.0 - opacity, 1.0 / 1024.0));
 }
 
 int FourierTerms(const ShadowParameters& parameters)
@@ -150,7 +148,7 @@ FourierOpacityMap::FourierOpacityMap(const ShadowParameters& parameters, const S
       [&](double t, double opacity, bool skipped, double) {
         if (!skipped)
         {
-          series.Add(t, OpticalDepth(opacity));
+          series.Add(t, SampleOpticalDepth(opacity));
         }
       });
     const size_t texel = this->Texel(f, x, y);

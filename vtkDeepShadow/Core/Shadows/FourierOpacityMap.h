@@ -46,6 +46,13 @@ inline int FourierLayers(int terms)
   return (2 + 2 * terms + 3) / 4;
 }
 
+/**
+ * A sample's optical depth from its opacity, as the series of fom and moments add it: an
+ * opaque sample counts as 1/1024 let through (the ray stops after it anyway), so that the
+ * series stays finite.
+ */
+VTKDEEPSHADOWCORE_EXPORT double SampleOpticalDepth(double opacity);
+
 /** End rounded up to a float whose 12 lowest mantissa bits are free (for First). */
 VTKDEEPSHADOWCORE_EXPORT float FourierEnd(double end);
 /** The stored End: `end` (a FourierEnd) with `first` in its 12 lowest bits. */

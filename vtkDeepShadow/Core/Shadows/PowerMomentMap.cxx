@@ -14,13 +14,6 @@ namespace
 {
 constexpr int MaxOrder = 3; // moments / 2
 
-// A sample's optical depth; an opaque one counts as 1/1024 let through (the ray stops after
-// it anyway), so that the moments stay finite.
-double OpticalDepth(double opacity)
-{
-  return -std::log(std::max(1.0 - opacity, 1.0 / 1024.0));
-}
-
 // The k-th moment of the uniform distribution on [x - h, x + h]:
 // sum over even j of C(k, j) x^(k - j) h^j / (j + 1).
 double BoxMoment(int k, double x, double h)
@@ -254,7 +247,7 @@ PowerMomentMap::PowerMomentMap(const ShadowParameters& parameters, const ShadowC
       [&](double t, double opacity, bool skipped, double) {
         if (!skipped)
         {
-          moments.Add(t, OpticalDepth(opacity));
+          moments.Add(t, SampleOpticalDepth(opacity));
         }
       });
     const size_t texel = this->Texel(f, x, y);

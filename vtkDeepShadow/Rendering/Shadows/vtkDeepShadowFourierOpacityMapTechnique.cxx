@@ -6,6 +6,7 @@
 #include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowFourierOpacityMap.h"
 #include "vtkDeepShadowFourierOpacityMapBuild.h"
+#include "vtkDeepShadowSeriesEnd.h"
 #include "vtkDeepShadowSurfaceSteps.h"
 #include "vtkDeepShadowSurfaceStepsBuild.h"
 #include "vtkDeepShadowTechniqueFactory.h"
@@ -88,13 +89,13 @@ unsigned int vtkDeepShadowFourierOpacityMapTechnique::GetTexelFormat() const
 std::string vtkDeepShadowFourierOpacityMapTechnique::GetBuildSource() const
 {
   return "//@Dec\n#define FOM_LAYERS " + std::to_string(deepshadow::FourierLayers(this->Terms)) + "\n" +
-    vtkDeepShadowSurfaceStepsBuild + vtkDeepShadowFourierOpacityMapBuild;
+    vtkDeepShadowSurfaceStepsBuild + vtkDeepShadowSeriesEnd + vtkDeepShadowFourierOpacityMapBuild;
 }
 
 std::string vtkDeepShadowFourierOpacityMapTechnique::GetMapLookupSource() const
 {
   return "//@Dec\n#define FOM_LAYERS " + std::to_string(deepshadow::FourierLayers(this->Terms)) + "\n" +
-    vtkDeepShadowSurfaceSteps + vtkDeepShadowFourierOpacityMap;
+    vtkDeepShadowSurfaceSteps + vtkDeepShadowSeriesEnd + vtkDeepShadowFourierOpacityMap;
 }
 
 void vtkDeepShadowFourierOpacityMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

@@ -6,6 +6,7 @@
 #include "Sampling/ShadowContext.h"
 #include "vtkDeepShadowPowerMomentMap.h"
 #include "vtkDeepShadowPowerMomentMapBuild.h"
+#include "vtkDeepShadowSeriesEnd.h"
 #include "vtkDeepShadowSurfaceSteps.h"
 #include "vtkDeepShadowSurfaceStepsBuild.h"
 #include "vtkDeepShadowTechniqueFactory.h"
@@ -101,12 +102,12 @@ std::string vtkDeepShadowPowerMomentMapTechnique::GetDefines() const
 
 std::string vtkDeepShadowPowerMomentMapTechnique::GetBuildSource() const
 {
-  return this->GetDefines() + vtkDeepShadowSurfaceStepsBuild + vtkDeepShadowPowerMomentMapBuild;
+  return this->GetDefines() + vtkDeepShadowSurfaceStepsBuild + vtkDeepShadowSeriesEnd + vtkDeepShadowPowerMomentMapBuild;
 }
 
 std::string vtkDeepShadowPowerMomentMapTechnique::GetMapLookupSource() const
 {
-  return this->GetDefines() + vtkDeepShadowSurfaceSteps + vtkDeepShadowPowerMomentMap;
+  return this->GetDefines() + vtkDeepShadowSurfaceSteps + vtkDeepShadowSeriesEnd + vtkDeepShadowPowerMomentMap;
 }
 
 void vtkDeepShadowPowerMomentMapTechnique::PrintSelf(ostream& os, vtkIndent indent)

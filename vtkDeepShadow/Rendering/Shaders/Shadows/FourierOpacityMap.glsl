@@ -11,9 +11,8 @@ float fourierVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 
 {
   float depth = lightSpaceDepthAt(vec2(texel), xy, pointDepth, slope);
   vec4 head = lightSpaceTexel(texel, layer); // End with First, Total, A_1, B_1
-  uint endBits = floatBitsToUint(head.x);
-  float end = uintBitsToFloat(endBits & ~0xfffu);
-  float first = float(endBits & 0xfffu) / 4095.0 * end;
+  float end, first;
+  unpackSeriesEnd(head.x, end, first);
   float tau = 0.0;
   if (head.y > 0.0 && depth > first)
   {

@@ -74,8 +74,7 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   g_transmittance = 1.0;
   g_total = 0.0;
   g_first = 0.0;
-  // FourierEnd: rounded up to a float whose 12 lowest mantissa bits are free.
-  g_end = uintBitsToFloat((floatBitsToUint(tEnter < tExit ? tExit + u_feelerStep : 1.0) | 0xfffu) + 1u);
+  g_end = seriesEnd(tEnter, tExit, u_feelerStep);
   for (int k = 0; k < FourierTerms; ++k)
   {
     g_cosSum[k] = 0.0;
@@ -84,8 +83,7 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   resetSurfaceSteps();
   marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   float width = u_feelerStep / g_end;
-  // PackFourierEnd: First as a fraction of End in 4095ths, rounded down.
-  float packedEnd = uintBitsToFloat(floatBitsToUint(g_end) | uint(floor(4095.0 * clamp(g_first / g_end, 0.0, 1.0))));
+  float packedEnd = packSeriesEnd(g_end, g_first);
   imageStore(u_output, ivec3(g_texel, u_layer),
     vec4(packedEnd, g_total, fourierCoefficient(1, width, g_cosSum[0]), fourierCoefficient(1, width, g_sinSum[0])));
   for (int l = 1; l < FOM_LAYERS; ++l)

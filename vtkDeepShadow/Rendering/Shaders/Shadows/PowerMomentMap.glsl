@@ -143,9 +143,8 @@ float momentsVisibility(int layer, ivec2 texel, vec2 xy, float pointDepth, vec2 
     values[4 * l + 2] = v.z;
     values[4 * l + 3] = v.w;
   }
-  uint endBits = floatBitsToUint(values[0]);
-  float end = uintBitsToFloat(endBits & ~0xfffu);
-  float first = float(endBits & 0xfffu) / 4095.0 * end;
+  float end, first;
+  unpackSeriesEnd(values[0], end, first);
   float total = values[1];
   float tau = 0.0;
   if (total > 0.0 && depth > first)

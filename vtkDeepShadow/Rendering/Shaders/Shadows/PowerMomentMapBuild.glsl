@@ -80,16 +80,14 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
   g_transmittance = 1.0;
   g_total = 0.0;
   g_first = 0.0;
-  // FourierEnd: rounded up to a float whose 12 lowest mantissa bits are free.
-  g_end = uintBitsToFloat((floatBitsToUint(tEnter < tExit ? tExit + u_feelerStep : 1.0) | 0xfffu) + 1u);
+  g_end = seriesEnd(tEnter, tExit, u_feelerStep);
   for (int k = 0; k < POWER_MOMENTS; ++k)
   {
     g_sums[k] = 0.0;
   }
   resetSurfaceSteps();
   marchTexel(indexOrigin, indexDirection, tEnter, tExit);
-  // PackFourierEnd: First as a fraction of End in 4095ths, rounded down.
-  float packedEnd = uintBitsToFloat(floatBitsToUint(g_end) | uint(floor(4095.0 * clamp(g_first / g_end, 0.0, 1.0))));
+  float packedEnd = packSeriesEnd(g_end, g_first);
   float values[4 * MOMENTS_LAYERS];
   for (int i = 0; i < 4 * MOMENTS_LAYERS; ++i)
   {
