@@ -2,6 +2,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace deepshadow
 {
 
@@ -18,7 +21,8 @@ glm::dvec3 VolumeShading::Normal(const glm::dvec3& indexGradient) const
   {
     return glm::dvec3(0.0);
   }
-  return this->Path == ShadingPath::VTKHeadlight ? inward / length : -inward / length;
+  const bool inwards = this->Path == ShadingPath::VTKHeadlight && this->Revision == VTKShadingRevision::HalfVector;
+  return inwards ? inward / length : -inward / length;
 }
 
 glm::dvec3 VolumeShading::Halfway(glm::dvec3& toLight, const glm::dvec3& toViewer, const glm::dvec3& position) const
@@ -38,6 +42,48 @@ glm::dvec3 VolumeShading::Halfway(glm::dvec3& toLight, const glm::dvec3& toViewe
       break;
   }
   return glm::normalize(toLight + toViewer);
+}
+
+PhongParts VolumeShading::LightTerms(const glm::dvec3& color, const glm::dvec3& normal, const LightSample& sample,
+  bool positional, const glm::dvec3& toViewer, const glm::dvec3& litPosition, const Material& material,
+  bool twoSided) const
+{
+  glm::dvec3 toLight = sample.ToLight;
+  if (this->Path == ShadingPath::BlinnPhong || this->Revision == VTKShadingRevision::HalfVector)
+  {
+    const glm::dvec3 halfway = this->Halfway(toLight, toViewer, litPosition);
+    return PhongTerms(color, normal, toLight, halfway, sample, material, twoSided);
+  }
+  // VTK 9.2 onwards. The headlight's light and viewer are the eye, in dataset space.
+  glm::dvec3 viewer;
+  if (this->Path == ShadingPath::VTKHeadlight)
+  {
+    toLight = viewer = glm::normalize(this->WorldToShading * toLight);
+  }
+  else
+  {
+    viewer = glm::normalize(this->Eye - litPosition);
+  }
+  PhongParts parts;
+  const double facing = glm::dot(normal, toLight);
+  parts.NDotL = twoSided ? std::abs(facing) : facing;
+  if (!(parts.NDotL > 0.0))
+  {
+    return parts; // no diffuse light, and VTK gives no specular light then either
+  }
+  const double scale = this->Path == ShadingPath::VTKHeadlight ? facing : parts.NDotL;
+  double rDotV = -glm::dot(viewer, glm::normalize(toLight - 2.0 * scale * normal));
+  if (twoSided && positional && this->Path != ShadingPath::VTKHeadlight)
+  {
+    rDotV = std::abs(rDotV);
+  }
+  parts.NDotH = std::max(rDotV, 0.0);
+  parts.Diffuse = material.Diffuse * parts.NDotL * sample.Diffuse * color;
+  if (parts.NDotH > 0.0)
+  {
+    parts.Specular = material.Specular * std::pow(parts.NDotH, material.SpecularPower) * sample.Specular;
+  }
+  return parts;
 }
 
 }

@@ -4,26 +4,31 @@
 // - Blinn-Phong: the normal is the world-space gradient's, the halfway vector normalize(L + V),
 //   the ambient term Ka x colour x the renderer's ambient light. What the CPU reference calls
 //   exact; the deepshadow tool draws it.
-// - VTK: VTK 9.1's GPU volume mapper as it is (vtkVolumeShaderComposer.h,
+// - VTK: VTK's GPU volume mapper as it is (vtkVolumeShaderComposer.h,
 //   ComputeLightingDeclaration), so that a swapped-in mapper draws VTK's unshadowed picture.
-//   It has three paths, picked from the renderer's lights as VTK picks its "lighting
-//   complexity" (VTKLightingPath):
+//   VTK rewrote its lighting in 9.2; VolumeShading::Revision says which one (the build's VTK
+//   picks it). It has three paths, picked from the renderer's lights as VTK picks its
+//   "lighting complexity" (VTKLightingPath):
 //   1 Headlight (one light on, a headlight of intensity 1): light and viewer are the eye,
-//     compared with the normal in the volume's dataset space; the normal points inwards, so
-//     with one-sided lighting a surface facing the eye takes pow() of a negative N.H, NaN,
-//     which Mesa's clamp turns black (GLSL leaves it undefined): black, and its back lit;
-//     ambient Ka x colour.
+//     compared with the normal in the volume's dataset space; ambient Ka x colour.
+//     VTK 9.1 takes the normal inwards, so with one-sided lighting a surface facing the eye
+//     takes pow() of a negative N.H, NaN, which Mesa's clamp turns black (GLSL leaves it
+//     undefined): black, and its back lit. VTK 9.2 onwards takes it outwards.
 //   2 Directional (any other set of directional lights): the gradient is multiplied by the
 //     transpose of the volume's texture-to-eye matrix (VTK uploads it untransposed), not by
 //     the inverse transpose, so the normal leans towards the box's long axes as the camera
 //     sees them (only a cube keeps the true normal); a sample is lit up to half a voxel from
-//     where it is (LightingTransform); the specular half vector looks from the eye at that point mirrored
-//     through the volume's first voxel (2 P0 - p); only the last light whose N.H > 0 gives
-//     specular light; ambient Ka x the lights' ambient colours (black by default: no ambient
-//     term at all).
-//   3 Positional (any positional light): the normal and the lit point as in 2; the half
-//     vector is normalize(L - V); distance and cone attenuation (cones of 90 degrees or
-//     less); ambient as in 2.
+//     where it is (LightingTransform); ambient Ka x the lights' ambient colours (black by
+//     default: no ambient term at all). VTK 9.1 only: the specular half vector looks from the
+//     eye at that point mirrored through the volume's first voxel (2 P0 - p), and only the
+//     last light whose N.H > 0 gives specular light.
+//   3 Positional (any positional light): the normal and the lit point as in 2; distance and
+//     cone attenuation (cones of 90 degrees or less); ambient as in 2. VTK 9.1's half vector
+//     is normalize(L - V).
+//   VTK 9.2 onwards, on every path: Phong's reflection, R.V with R the light reflected about
+//   the normal, and only where N.L > 0 (after the two-sided flip); R is reflected with the
+//   flipped N.L, but the headlight's with the unflipped one; two-sided lighting flips R.V for
+//   positional lights only. VTKShadingRevision::Reflection.
 //   Colour is clamped to [0, 1] after the lights are summed, as VTK clamps computeLighting.
 //
 // Shadows multiply each light's diffuse and specular part by its visibility; ambient light is
@@ -58,9 +63,17 @@ enum class ShadingPath
   VTKPositional = 3
 };
 
+/** Which VTK's lighting the VTK paths follow. */
+enum class VTKShadingRevision
+{
+  HalfVector, // VTK 9.0 and 9.1: Blinn's half vector, with the quirks listed above
+  Reflection  // VTK 9.2 onwards: Phong's reflected light
+};
+
 struct VTKDEEPSHADOWCORE_EXPORT VolumeShading
 {
   ShadingPath Path = ShadingPath::BlinnPhong;
+  VTKShadingRevision Revision = VTKShadingRevision::HalfVector;
   /**
    * BlinnPhong and VTKHeadlight: multiplies Ka x colour (the renderer's ambient light, or 1);
    * VTKDirectional and VTKPositional: the lights' ambient colours x intensities, summed,
@@ -86,7 +99,7 @@ struct VTKDEEPSHADOWCORE_EXPORT VolumeShading
   bool AmbientTimesColour() const;
   /**
    * The unit normal the lights are compared with, in shading space (zero for a zero
-   * gradient): outward, but for VTKHeadlight's, which VTK takes inward.
+   * gradient): outward, but for VTKHeadlight's under HalfVector, which VTK 9.1 takes inward.
    */
   glm::dvec3 Normal(const glm::dvec3& indexGradient) const;
   /**
@@ -94,6 +107,14 @@ struct VTKDEEPSHADOWCORE_EXPORT VolumeShading
    * `toViewer` (world, unit), in shading space; `toLight` becomes shading space too.
    */
   glm::dvec3 Halfway(glm::dvec3& toLight, const glm::dvec3& toViewer, const glm::dvec3& position) const;
+  /**
+   * One light's diffuse and specular parts at a sample of shading-space `normal`, lit at world
+   * `litPosition` and seen along `toViewer` (world, unit): Blinn-Phong or VTK's, as Path and
+   * Revision say. NDotH is R.V under Reflection.
+   */
+  PhongParts LightTerms(const glm::dvec3& color, const glm::dvec3& normal, const LightSample& sample,
+    bool positional, const glm::dvec3& toViewer, const glm::dvec3& litPosition, const Material& material,
+    bool twoSided) const;
 };
 
 /**
@@ -112,7 +133,7 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
   {
     return glm::clamp(lit, 0.0, 1.0); // a zero gradient: ambient only
   }
-  glm::dvec3 lastSpecular(0.0); // VTKDirectional: only the last light's
+  glm::dvec3 lastSpecular(0.0); // VTK 9.1's VTKDirectional: only the last light's
   const glm::dvec3 litPosition(shading.LightingTransform * glm::dvec4(position, 1.0));
   for (size_t l = 0; l < lights.size(); ++l)
   {
@@ -121,10 +142,10 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
     {
       continue;
     }
-    glm::dvec3 toLight = sample.ToLight;
-    const glm::dvec3 halfway = shading.Halfway(toLight, toViewer, litPosition);
-    const PhongParts parts = PhongTerms(color, normal, toLight, halfway, sample, material, twoSided);
-    if (shading.Path == ShadingPath::VTKHeadlight && parts.NDotH < 0.0)
+    const PhongParts parts =
+      shading.LightTerms(color, normal, sample, lights[l].Positional, toViewer, litPosition, material, twoSided);
+    const bool halfVector = shading.Revision == VTKShadingRevision::HalfVector;
+    if (halfVector && shading.Path == ShadingPath::VTKHeadlight && parts.NDotH < 0.0)
     {
       return glm::dvec3(0.0); // VTK's pow() of a negative N.H: NaN, clamped to black (Mesa)
     }
@@ -133,7 +154,7 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
       continue;
     }
     const glm::dvec3 factor = visibility(l);
-    if (shading.Path == ShadingPath::VTKDirectional)
+    if (halfVector && shading.Path == ShadingPath::VTKDirectional)
     {
       lit += parts.Diffuse * factor;
       if (parts.NDotH > 0.0)

@@ -189,7 +189,8 @@ Transfer2D MakeTransfer2D(vtkImageData* image, const glm::dvec2& range, const gl
 /**
  * A label-map mask's labels (Core/Mask.h) when the mapper's mask type is a label map and
  * anything changes: labels with functions and a mask blend factor above 0; null otherwise
- * (VTK then draws the volume as if unmasked). `maskRange`: the mask's finite range.
+ * (VTK then draws the volume as if unmasked). `maskRange`: the mask's finite range, which
+ * VTK 9.1 maps onto the labels; VTK 9.2 onwards maps [0, number of labels] instead.
  */
 std::shared_ptr<const LabelMap> MakeLabelMap(
   vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property, const glm::dvec2& maskRange);
@@ -236,12 +237,23 @@ std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light>
   const KeyLight& key = KeyLight(), bool* replaced = nullptr);
 
 /**
- * VTK 9.1's lighting path for the renderer's lights, as vtkOpenGLGPUVolumeRayCastMapper picks
- * its "lighting complexity" (every light of the collection is looked at, on or off):
- * VTKHeadlight for one light on that is a headlight of intensity 1, VTKPositional when a light
- * is positional, VTKDirectional otherwise; BlinnPhong when no light is on.
+ * The lighting path of the VTK this module was built with for the renderer's lights, as
+ * vtkOpenGLGPUVolumeRayCastMapper picks it (every light of the collection is looked at, on or
+ * off): VTKHeadlight for one light on that is a headlight of intensity 1, VTKPositional when a
+ * light is positional (VTK 9.1: on or off; 9.2 onwards: on), VTKDirectional otherwise;
+ * BlinnPhong when no light is on.
  */
 ShadingPath VTKLightingPath(vtkRenderer* renderer);
+
+/**
+ * The path a mapper that had `previous` takes now: VTK 9.1 raises its "lighting complexity"
+ * while it shades and never lowers it; VTK 9.2 onwards picks its path again whenever the
+ * lights change.
+ */
+ShadingPath NextVTKLightingPath(ShadingPath previous, vtkRenderer* renderer);
+
+/** The lighting of the VTK this module was built with: VTK 9.2 rewrote it. */
+VTKShadingRevision BuiltVTKShadingRevision();
 
 /**
  * How `volume`'s shaded samples are lit (Core/VolumeShading.h) under `model`, VTK's on `path`

@@ -9,6 +9,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkRenderer.h"
+#include "vtkVersionMacros.h"
 #include "vtkVolume.h"
 
 #include <glm/geometric.hpp>
@@ -188,12 +189,22 @@ std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light>
   return { keyLight, fill };
 }
 
+VTKShadingRevision BuiltVTKShadingRevision()
+{
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  return VTKShadingRevision::Reflection;
+#else
+  return VTKShadingRevision::HalfVector;
+#endif
+}
+
 ShadingPath VTKLightingPath(vtkRenderer* renderer)
 {
   // vtkOpenGLGPUVolumeRayCastMapper's loop, as it is: every light of the collection is
-  // looked at, so a light switched off after the headlight still leaves the headlight path,
-  // and a positional one switched off still picks the positional path.
-  int complexity = 0, switchedOn = 0;
+  // looked at, so a light switched off after the headlight still leaves the headlight path
+  // (and, in VTK 9.1, a positional one switched off still picks the positional path).
+  const bool reflection = BuiltVTKShadingRevision() == VTKShadingRevision::Reflection;
+  int complexity = 0, switchedOn = 0, positionalOn = 0;
   vtkCollectionSimpleIterator it;
   vtkLightCollection* collection = renderer->GetLights();
   collection->InitTraversal(it);
@@ -202,6 +213,7 @@ ShadingPath VTKLightingPath(vtkRenderer* renderer)
     if (light->GetSwitch() > 0)
     {
       ++switchedOn;
+      positionalOn += light->GetPositional() ? 1 : 0;
       complexity = std::max(complexity, 1);
     }
     if (complexity == 1 &&
@@ -209,13 +221,27 @@ ShadingPath VTKLightingPath(vtkRenderer* renderer)
     {
       complexity = 2;
     }
-    if (complexity < 3 && light->GetPositional())
+    if (!reflection && complexity < 3 && light->GetPositional())
     {
       complexity = 3;
       break;
     }
   }
+  if (reflection && complexity == 2 && positionalOn > 0)
+  {
+    complexity = 3; // VTK 9.2's default lighting is the headlight's, whatever it is
+  }
   return static_cast<ShadingPath>(complexity);
+}
+
+ShadingPath NextVTKLightingPath(ShadingPath previous, vtkRenderer* renderer)
+{
+  const ShadingPath now = VTKLightingPath(renderer);
+  if (BuiltVTKShadingRevision() == VTKShadingRevision::Reflection)
+  {
+    return now;
+  }
+  return std::max(previous, now);
 }
 
 VolumeShading MakeVolumeShading(vtkRenderer* renderer, vtkVolume* volume, vtkImageData* drawn,
@@ -244,6 +270,7 @@ VolumeShading MakeVolumeShading(vtkRenderer* renderer, vtkVolume* volume, vtkIma
     return shading;
   }
   shading.Path = path;
+  shading.Revision = BuiltVTKShadingRevision();
   for (Light& light : lights)
   {
     light.ShadedFromEye = path == ShadingPath::VTKHeadlight;

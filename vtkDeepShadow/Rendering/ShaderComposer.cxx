@@ -101,9 +101,10 @@ ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices)
   return WithDefines("TranslucentLayers", vtkDeepShadowFeatureTranslucentLayers, defines);
 }
 
-ShaderFeature VTKShadingShaderFeature(int path)
+ShaderFeature VTKShadingShaderFeature(int path, bool reflection)
 {
-  return WithDefines("VTKShading", vtkDeepShadowFeatureVTKShading, "#define VTK_SHADING_PATH " + std::to_string(path));
+  return WithDefines("VTKShading", vtkDeepShadowFeatureVTKShading,
+    "#define VTK_SHADING_PATH " + std::to_string(path) + "\n#define VTK_SHADING_REFLECTION " + (reflection ? "1" : "0"));
 }
 
 ShaderFeature VolumeSegmentsShaderFeature(int segments)

@@ -57,8 +57,11 @@ ShaderFeature ComponentsShaderFeature(int count, int mode, bool litApart, bool g
  */
 ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices);
 
-/** The VTKShading feature for VTK's lighting path `path` (1 to 3, VTK_SHADING_PATH). */
-ShaderFeature VTKShadingShaderFeature(int path);
+/**
+ * The VTKShading feature for VTK's lighting path `path` (1 to 3, VTK_SHADING_PATH), VTK 9.2's
+ * reflected light or VTK 9.1's half vector (VTK_SHADING_REFLECTION).
+ */
+ShaderFeature VTKShadingShaderFeature(int path, bool reflection);
 /** The VolumeSegments feature: the march written as `segments` pieces (Rendering/Translucency). */
 ShaderFeature VolumeSegmentsShaderFeature(int segments);
 

@@ -186,10 +186,11 @@ bool MakeVolumeInstance(vtkRenderer* renderer, vtkVolume* volume, vtkVolumeMappe
   instance.Projection = adapter::MakeProjection(mapper, grid->GetRange());
   const bool projection = instance.Projection.Mode != deepshadow::BlendMode::Composite;
   instance.Shade = instance.Shade && !projection; // projections are unlit and unshadowed
-  // Shaded as the mapper shades: VTK's mapper, and ours by default, as VTK 9.1 does.
-  // (The path VTK's mapper would reach, or the one ours has: VTK's never goes back.)
+  // Shaded as the mapper shades: VTK's mapper, and ours by default, as the VTK built with.
+  // (The path VTK's mapper would reach from the one ours has: VTK 9.1's never goes back.)
   const bool blinnPhong = ours && ours->GetShadingModel() == vtkDeepShadowVolumeMapper::BLINN_PHONG_SHADING;
-  const int path = std::max(static_cast<int>(adapter::VTKLightingPath(renderer)), ours ? ours->GetVTKLightingComplexity() : 0);
+  const int path = static_cast<int>(adapter::NextVTKLightingPath(
+    static_cast<deepshadow::ShadingPath>(ours ? ours->GetVTKLightingComplexity() : 0), renderer));
   instance.Shading = adapter::MakeVolumeShading(renderer, volume, image,
     vtkImageData::SafeDownCast(mapper->GetDataSetInput()), grid->GetIndexToWorld(),
     blinnPhong ? deepshadow::ShadingModel::BlinnPhong : deepshadow::ShadingModel::VTK,

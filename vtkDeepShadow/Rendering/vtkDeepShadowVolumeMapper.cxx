@@ -558,11 +558,11 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   {
     context.Lights = adapter::KeyForLoneHeadlight(frame.Renderer, context.Lights, adapter::KeyLight(), &keyLit);
   }
-  // VTK 9.1's mapper raises its lighting complexity while it shades and never lowers it.
+  // As VTK's mapper picks it (9.1 never lowers it).
   if (frame.Shade)
   {
-    this->VTKLightingComplexity =
-      std::max(this->VTKLightingComplexity, static_cast<int>(adapter::VTKLightingPath(frame.Renderer)));
+    this->VTKLightingComplexity = static_cast<int>(adapter::NextVTKLightingPath(
+      static_cast<deepshadow::ShadingPath>(this->VTKLightingComplexity), frame.Renderer));
   }
   context.Shading = adapter::MakeVolumeShading(frame.Renderer, frame.Volume, this->GetImageInput(),
     this->GetImageInput(), context.IndexToWorld,

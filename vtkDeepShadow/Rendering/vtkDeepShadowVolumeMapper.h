@@ -15,7 +15,7 @@
  * 1 to 4 components, independent or dependent, combined as VTK's mapper combines them: Core/
  * Components.h) with a vtkVolumeProperty: colour and scalar-opacity transfer functions,
  * scalar opacity unit distance, nearest or linear interpolation, and shading of the gradient
- * with the renderer's lights as VTK 9.1's mapper shades it (SetShadingModel). Honours the
+ * with the renderer's lights as the VTK it was built with shades it (SetShadingModel). Honours the
  * image's spacing, origin and direction and the vtkVolume's transform, and the fragment code
  * of its vtkShaderProperty at VTK's Base and RenderToImage tags (anything else is refused,
  * said once). Opaque geometry already drawn ends the rays (depth buffer).
@@ -177,7 +177,8 @@ public:
   ///@{
   /**
    * How the lights shade a volume whose property shades (ShadeOn). VTK_SHADING, the default,
-   * draws what VTK 9.1's vtkOpenGLGPUVolumeRayCastMapper draws, quirks included, so that a
+   * draws what the vtkOpenGLGPUVolumeRayCastMapper of the VTK this module was built with
+   * draws (VTK 9.1's half vector, or VTK 9.2's reflected light), quirks included, so that a
    * swapped-in mapper keeps a script's picture: under scene lights or a light kit the ambient
    * term is Ka times the lights' ambient colours (black unless vtkLight::SetAmbientColor: a
    * shadow is then black), the normal leans towards the volume's long axes, the specular
@@ -193,10 +194,11 @@ public:
   ///@}
 
   /**
-   * VTK 9.1's "lighting complexity" this mapper has reached while shading (0 none yet, 1 a
-   * lone headlight, 2 directional lights, 3 a positional light): the path of VTK's shading it
-   * draws. As in VTK 9.1's mapper it only grows, so a mapper that once shaded under a
-   * positional light keeps VTK's positional path when the lights change back.
+   * VTK's "lighting complexity" this mapper has reached while shading (0 none yet, 1 a lone
+   * headlight, 2 directional lights, 3 a positional light): the path of VTK's shading it
+   * draws. Built with VTK 9.1 it only grows, as in VTK 9.1's mapper, so a mapper that once
+   * shaded under a positional light keeps VTK's positional path when the lights change back;
+   * with VTK 9.2 onwards it follows the lights.
    */
   vtkGetMacro(VTKLightingComplexity, int);
 

@@ -237,7 +237,8 @@ std::vector<VolumeFeature> ShadingFeatures()
       BindUserShader, nullptr },
     { "VTKShading", VTKShading,
       [](const Frame& f, ComposedFeatures& features) {
-        features.Runtime["VTKShading"] = VTKShadingShaderFeature(static_cast<int>(f.Context.Shading.Path));
+        features.Runtime["VTKShading"] = VTKShadingShaderFeature(static_cast<int>(f.Context.Shading.Path),
+          f.Context.Shading.Revision == VTKShadingRevision::Reflection);
         features.Labels.emplace_back("VTKShading");
       },
       BindVTKShading, nullptr },

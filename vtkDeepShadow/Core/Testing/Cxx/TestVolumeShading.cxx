@@ -1,5 +1,5 @@
-// VolumeShading in closed form: each of VTK 9.1's lighting paths and Blinn-Phong on a sample
-// whose normal, lights and viewer are chosen so that every term can be written down.
+// VolumeShading in closed form: each of VTK 9.1's and 9.2's lighting paths and Blinn-Phong on a
+// sample whose normal, lights and viewer are chosen so that every term can be written down.
 #include "Core/VolumeShading.h"
 
 #include <gtest/gtest.h>
@@ -175,4 +175,75 @@ TEST(VolumeShading, SpotsOfNinetyDegreesAreSpots)
   EXPECT_EQ(spot.At({ 0.0, 0.0, 2.0 }).Reach, 0.0); // behind the light: outside the half-space
   spot.ConeAngle = 90.5;
   EXPECT_GT(spot.At({ 0.0, 0.0, 2.0 }).Reach, 0.0);
+}
+
+// VTK 9.2 onwards (VTKShadingRevision::Reflection): Phong's R.V, only where N.L > 0.
+TEST(VolumeShading, VTK92sDirectionalPathReflectsTheLightAndSumsEveryLightsSpecular)
+{
+  VolumeShading shading;
+  shading.Path = ShadingPath::VTKDirectional;
+  shading.Revision = VTKShadingRevision::Reflection;
+  shading.Ambient = glm::dvec3(0.0);
+  shading.Eye = { 0.0, 0.0, 1e9 }; // the viewer straight above, wherever the first voxel is
+  shading.MirrorCentre = { -20.0, 0.0, 0.0 }; // VTK 9.1's mirror: not looked at any more
+  const Material m = MakeMaterial();
+  const double s = std::sqrt(0.5);
+  // Light at 45 degrees: R = (-s, 0, s), R.V = s; and overhead: R.V = 1. Both speculars count.
+  const glm::dvec3 both = Shade(shading, { Directional({ s, 0.0, s }), Directional({ 0.0, 0.0, 1.0 }) },
+    { 0.0, 0.0, 1.0 }, false);
+  const glm::dvec3 expected = m.Diffuse * (s + 1.0) * Colour +
+    glm::dvec3(m.Specular * (std::pow(s, m.SpecularPower) + 1.0));
+  ExpectNear(both, glm::clamp(expected, 0.0, 1.0));
+  // A grazing light (N.L = 0) gives no specular light, though its R.V is 0 < x: VTK 9.1's
+  // half vector would have given some.
+  ExpectNear(Shade(shading, { Directional({ 1.0, 0.0, 0.0 }) }, { 0.0, 0.0, 1.0 }, false), glm::dvec3(0.0));
+  // From below, two-sided: N.L flipped to s, R reflected with it: R = l - 2 s n = (s, 0, -3s)
+  // normalized, R.V = -(-3s)/|R|... R.V = -V.r with r that vector: 3s / sqrt(10 s^2) = 3/sqrt(10).
+  const glm::dvec3 below = Shade(shading, { Directional({ s, 0.0, -s }) }, { 0.0, 0.0, 1.0 }, true);
+  ExpectNear(below, glm::clamp(m.Diffuse * s * Colour + glm::dvec3(m.Specular * std::pow(3.0 / std::sqrt(10.0), m.SpecularPower)), 0.0, 1.0));
+}
+
+TEST(VolumeShading, VTK92sHeadlightComparesTheOutwardNormalAndIsNeverBlack)
+{
+  VolumeShading shading;
+  shading.Path = ShadingPath::VTKHeadlight;
+  shading.Revision = VTKShadingRevision::Reflection;
+  const glm::dvec3 normal = shading.Normal({ 0.0, 0.0, -2.0 }); // density grows downwards
+  ExpectNear(normal, { 0.0, 0.0, 1.0 });
+  Light head = Directional({ 0.0, 0.0, 1.0 });
+  head.ShadedFromEye = true;
+  head.Eye = { 0.0, 0.0, 10.0 };
+  const Material m = MakeMaterial();
+  // Facing the eye, one-sided: N.L = 1, R.V = 1.
+  ExpectNear(Shade(shading, { head }, { 0.0, 0.0, 1.0 }, false, normal),
+    glm::clamp(m.Ambient * Colour + m.Diffuse * Colour + glm::dvec3(m.Specular), 0.0, 1.0));
+  // Its back, one-sided: ambient alone (VTK 9.1 drew it black).
+  ExpectNear(Shade(shading, { head }, { 0.0, 0.0, 1.0 }, false, -normal), m.Ambient * Colour);
+  // At 60 degrees: N.L = 1/2, R.V = 2 (N.L)^2 - 1 < 0: no specular light.
+  const glm::dvec3 tilted(std::sqrt(0.75), 0.0, 0.5);
+  ExpectNear(Shade(shading, { head }, { 0.0, 0.0, 1.0 }, false, tilted),
+    glm::clamp(m.Ambient * Colour + m.Diffuse * 0.5 * Colour, 0.0, 1.0));
+}
+
+TEST(VolumeShading, VTK92sPositionalLightsFlipRDotVUnderTwoSidedLighting)
+{
+  VolumeShading shading;
+  shading.Path = ShadingPath::VTKPositional;
+  shading.Revision = VTKShadingRevision::Reflection;
+  shading.Ambient = glm::dvec3(0.0);
+  shading.Eye = { 0.0, 0.0, 10.0 };
+  Light point;
+  point.Positional = true;
+  point.Position = { 3.0, 0.0, 4.0 };
+  point.FocalPoint = glm::dvec3(0.0);
+  const Material m = MakeMaterial();
+  // The light along (0.6, 0, 0.8): R = (-0.6, 0, 0.8), the eye along +z: R.V = 0.8.
+  ExpectNear(Shade(shading, { point }, { 0.0, 0.0, 1.0 }, false),
+    glm::clamp(m.Diffuse * 0.8 * Colour + glm::dvec3(m.Specular * std::pow(0.8, m.SpecularPower)), 0.0, 1.0));
+  // The eye below the surface, the light above: R.V = -0.8; two-sided flips it for a
+  // positional light, not for a directional one.
+  shading.Eye = { 0.0, 0.0, -10.0 };
+  ExpectNear(Shade(shading, { point }, { 0.0, 0.0, -1.0 }, true),
+    glm::clamp(m.Diffuse * 0.8 * Colour + glm::dvec3(m.Specular * std::pow(0.8, m.SpecularPower)), 0.0, 1.0));
+  ExpectNear(Shade(shading, { Directional({ 0.6, 0.0, 0.8 }) }, { 0.0, 0.0, -1.0 }, true), m.Diffuse * 0.8 * Colour);
 }

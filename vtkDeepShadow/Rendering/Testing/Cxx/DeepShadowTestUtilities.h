@@ -33,6 +33,7 @@
 #include "vtkRendererCollection.h"
 #include "vtkSmartPointer.h"
 #include "vtkTesting.h"
+#include "vtkVersionMacros.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -185,10 +186,20 @@ inline bool MatchesBaseline(const Image& picture, const Image& baseline,
  * The baselines a picture may match: FILE (llvmpipe's) and, named as VTK's own regression
  * tests name theirs, the alternatives FILE_1.png ... FILE_9.png that exist beside it, for a
  * driver whose rounding differs beyond the tolerance (a GPU's texture filtering and fused
- * arithmetic). Each keeps the tight tolerance; none widens it for the others.
+ * arithmetic). Each keeps the tight tolerance; none widens it for the others. Built with
+ * VTK 9.2 onwards, whose volume lighting our VTK shading follows (Core/VolumeShading.h),
+ * FILE.vtk92.png replaces FILE where it exists: a picture with VTK's shading in it.
  */
-inline std::vector<std::string> BaselineAndAlternatives(const std::string& path)
+inline std::vector<std::string> BaselineAndAlternatives(std::string path)
 {
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  const std::string::size_type end = path.rfind(".png");
+  const std::string lit = end == std::string::npos ? path : path.substr(0, end) + ".vtk92.png";
+  if (std::ifstream(lit).good())
+  {
+    path = lit;
+  }
+#endif
   std::vector<std::string> paths{ path };
   const std::string::size_type dot = path.rfind(".png");
   for (int i = 1; dot != std::string::npos && i <= 9; ++i)
