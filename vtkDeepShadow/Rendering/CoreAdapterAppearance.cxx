@@ -10,6 +10,7 @@
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkVersionMacros.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -353,7 +354,13 @@ std::shared_ptr<const LabelMap> MakeLabelMap(
     return nullptr;
   }
   auto map = std::make_shared<LabelMap>();
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  // VTK 9.2 onwards spans [0, the number of labels with functions], whatever the mask holds.
+  (void)maskRange;
+  map->MaskRange = glm::dvec2(0.0, static_cast<double>(labels.size()));
+#else
   map->MaskRange = maskRange;
+#endif
   map->BlendFactor = mapper->GetMaskBlendFactor();
   const TransferFunction volume = MakeTransferFunction(property);
   for (int label = 1; label <= *labels.rbegin(); ++label)

@@ -193,8 +193,8 @@ int TestMask(int, char*[])
     });
     ok = LabelMapMatchesVTK(window, data, labels, 1.0f, "label map") && ok;
     ok = LabelMapMatchesVTK(window, data, labels, 0.5f, "label map, blend factor 0.5") && ok;
-    // Labels 0, 1 and 3 with functions for 1 and 2: VTK maps the mask's range [0, 3] onto the
-    // labels 0..2 (1 -> 0, 3 -> 2), and so do we.
+    // Labels 0, 1 and 3 with functions for 1 and 2: VTK 9.1 maps the mask's range [0, 3] onto
+    // the labels 0..2 (1 -> 0, 3 -> 2), VTK 9.2 onwards [0, 2] (1 -> 1, 3 -> 2), and so do we.
     const auto spread = MakeLabels(data, [](double x, double y, double z) {
       return x * x + y * y + z * z < 0.3 ? 3 : x < 0.0 ? 1 : 0;
     });
