@@ -127,6 +127,7 @@ TEST(VolumePresets, BadNamesAndFilesAreOneErrorAndLeaveThePropertyAlone)
     const char* Name;
     std::string Text; // empty: no file
     const char* Needle;
+    const char* OrNeedle = nullptr; // a second accepted wording
   };
   const std::vector<Case> cases = {
     { "missing", "", "neither a transfer-function preset (CT-Bone" },
@@ -134,7 +135,8 @@ TEST(VolumePresets, BadNamesAndFilesAreOneErrorAndLeaveThePropertyAlone)
     { "no-rgb.json", R"([{"Name":"x","Points":[0,0,0.5,0]}])", "no \"RGBPoints\"" },
     { "count.json", R"([{"RGBPoints":[0,0,0,0,1,1,1]}])", "whole nodes of 4" },
     { "text.json", R"([{"RGBPoints":[0,0,0,"red"]}])", "not a finite number" },
-    { "huge.json", R"([{"RGBPoints":[0,0,0,0,1e999,1,1,1]}])", "not JSON" },
+    // jsoncpp up to 1.9.5 refuses 1e999; 1.9.6 (Debian 13) reads it as infinity.
+    { "huge.json", R"([{"RGBPoints":[0,0,0,0,1e999,1,1,1]}])", "not JSON", "\"RGBPoints\"[4] is not a finite number" },
     { "order.json", R"([{"RGBPoints":[5,0,0,0,1,1,1,1]}])", "must not decrease" },
     { "range.json", R"([{"RGBPoints":[0,0,0,0,1,1,2,1]}])", "outside [0, 1]" },
     { "opacity.json", R"([{"RGBPoints":[0,0,0,0,1,1,1,1],"Points":[0,1.5,0.5,0]}])",
@@ -151,8 +153,9 @@ TEST(VolumePresets, BadNamesAndFilesAreOneErrorAndLeaveThePropertyAlone)
     property->SetScalarOpacity(before);
     vtkNew<vtkDeepShadowVolumePresets> presets;
     EXPECT_FALSE(presets->Apply(path, property)) << c.Name;
-    EXPECT_NE(presets->GetLastError().find(c.Needle), std::string::npos)
-      << c.Name << ": " << presets->GetLastError();
+    const std::string& error = presets->GetLastError();
+    EXPECT_TRUE(error.find(c.Needle) != std::string::npos || (c.OrNeedle && error.find(c.OrNeedle) != std::string::npos))
+      << c.Name << ": " << error;
     EXPECT_EQ(property->GetScalarOpacity(), before.GetPointer()) << c.Name;
   }
   vtkNew<vtkDeepShadowVolumePresets> presets;
