@@ -3,11 +3,13 @@
 //
 // Stated tolerances (8-bit images in [0, 1]; measured values are printed):
 // - emission/absorption: RMSE <= 0.005 and <= 1% of pixels off by more than 8/255;
-// - Phong-shaded with the headlight: RMSE <= 0.007, <= 0.5% of pixels off by more than 16/255;
+// - Phong-shaded with the headlight: RMSE <= 0.006, <= 0.5% of pixels off by more than 16/255;
 // - with an opaque sphere inside: same as shaded.
 // Each must catch a density 1.5 times too high (checked: the control renders ours so and
 // must fail). The shaded bounds were 0.01 and 2 %, which let that error pass with the sphere
-// (RMSE 0.0093, 1.05 %); measured now: 0.0036 and 0.0055, 0.22 % at most.
+// (RMSE 0.0093, 1.05 %), then 0.007, which VTK 9.3's headlight let pass without it (0.0069);
+// measured now (VTK 9.1 and 9.3 alike): 0.0016 and 0.0045, 0.18 % at most; the controls
+// 0.0069-0.0074.
 // Why they are not zero: VTK puts the first sample one full step past the entry (we use the
 // middle of the step), looks opacity up in a 1024-texel table whose texel centres are offset
 // by half a texel (ours: 4096, centred), and lights a headlight as a point at the camera
@@ -59,8 +61,8 @@ int TestVolumeMapperMatchesVTK(int argc, char* argv[])
     // ours integrating per world unit.
     { "emission-absorption, a prop scaled 3 times", false, false, 0.005, 8.0 / 255.0, 0.01, false,
       3.0, 3.0 },
-    { "shaded", true, false, 0.007, 16.0 / 255.0, 0.005 },
-    { "shaded, opaque sphere inside", true, true, 0.007, 16.0 / 255.0, 0.005 },
+    { "shaded", true, false, 0.006, 16.0 / 255.0, 0.005 },
+    { "shaded, opaque sphere inside", true, true, 0.006, 16.0 / 255.0, 0.005 },
   };
   const double sampleDistance = 0.5;
   bool ok = true;
