@@ -7,7 +7,8 @@
 #   DEEPSHADOW_DEBIAN13_ROOT  where the root lives (default /var/tmp/deepshadow-debian13)
 # Exit 77 (skipped, said on one line) when this machine cannot make or enter the root (no
 # debootstrap download, no mount); otherwise setup's or ctest's status.
-# Not yet run: the ParaView plugin against ParaView 5.13.
+# Not yet built here: the ParaView plugin against ParaView 5.13 (Debian 13's paraview-dev
+# removes libvtk9-dev, as on Debian 12: it needs setup-paraview.sh's private prefix).
 set -euo pipefail
 checkout=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 target=${DEEPSHADOW_DEBIAN13_ROOT:-/var/tmp/deepshadow-debian13}
