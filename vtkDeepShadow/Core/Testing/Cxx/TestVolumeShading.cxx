@@ -35,6 +35,25 @@ Light Directional(const glm::dvec3& towards, double intensity = 1.0)
   return light;
 }
 
+// A point light 5 units from the sample, along (0.6, 0, 0.8), unattenuated.
+Light PointLight()
+{
+  Light point;
+  point.Positional = true;
+  point.Position = { 3.0, 0.0, 4.0 };
+  point.FocalPoint = glm::dvec3(0.0);
+  return point;
+}
+
+// VTK's lone headlight: shaded from the eye, 10 units above the sample.
+Light HeadlightAbove()
+{
+  Light head = Directional({ 0.0, 0.0, 1.0 });
+  head.ShadedFromEye = true;
+  head.Eye = { 0.0, 0.0, 10.0 };
+  return head;
+}
+
 glm::dvec3 Shade(const VolumeShading& shading, const std::vector<Light>& lights, const glm::dvec3& toViewer,
   bool twoSided = true, const glm::dvec3& normal = Up)
 {
@@ -122,10 +141,7 @@ TEST(VolumeShading, VTKsPositionalPathTakesLMinusVAndLightsWhereTheTransformSays
   shading.Path = ShadingPath::VTKPositional;
   shading.Ambient = glm::dvec3(0.0);
   shading.Eye = { 0.0, 0.0, 10.0 };
-  Light point;
-  point.Positional = true;
-  point.Position = { 3.0, 0.0, 4.0 };
-  point.FocalPoint = glm::dvec3(0.0);
+  Light point = PointLight();
   point.Attenuation = { 0.5, 0.1, 0.0 };
   const Material m = MakeMaterial();
   // From the origin: the light 5 away along (0.6, 0, 0.8), the eye along +z.
@@ -153,9 +169,7 @@ TEST(VolumeShading, VTKsHeadlightPathComparesTheInwardNormalAndIsBlackWhereItsPo
   // An index gradient pointing down (density grows downwards): VTK's normal is the gradient.
   const glm::dvec3 normal = shading.Normal({ 0.0, 0.0, -2.0 });
   ExpectNear(normal, { 0.0, 0.0, -1.0 });
-  Light head = Directional({ 0.0, 0.0, 1.0 });
-  head.ShadedFromEye = true;
-  head.Eye = { 0.0, 0.0, 10.0 };
+  const Light head = HeadlightAbove();
   const Material m = MakeMaterial();
   // Two-sided: |N.L| = |N.H| = 1, ambient Ka x colour.
   ExpectNear(Shade(shading, { head }, { 0.0, 0.0, 1.0 }, true, normal),
@@ -210,9 +224,7 @@ TEST(VolumeShading, VTK92sHeadlightComparesTheOutwardNormalAndIsNeverBlack)
   shading.Revision = VTKShadingRevision::Reflection;
   const glm::dvec3 normal = shading.Normal({ 0.0, 0.0, -2.0 }); // density grows downwards
   ExpectNear(normal, { 0.0, 0.0, 1.0 });
-  Light head = Directional({ 0.0, 0.0, 1.0 });
-  head.ShadedFromEye = true;
-  head.Eye = { 0.0, 0.0, 10.0 };
+  const Light head = HeadlightAbove();
   const Material m = MakeMaterial();
   // Facing the eye, one-sided: N.L = 1, R.V = 1.
   ExpectNear(Shade(shading, { head }, { 0.0, 0.0, 1.0 }, false, normal),
@@ -232,10 +244,7 @@ TEST(VolumeShading, VTK92sPositionalLightsFlipRDotVUnderTwoSidedLighting)
   shading.Revision = VTKShadingRevision::Reflection;
   shading.Ambient = glm::dvec3(0.0);
   shading.Eye = { 0.0, 0.0, 10.0 };
-  Light point;
-  point.Positional = true;
-  point.Position = { 3.0, 0.0, 4.0 };
-  point.FocalPoint = glm::dvec3(0.0);
+  const Light point = PointLight();
   const Material m = MakeMaterial();
   // The light along (0.6, 0, 0.8): R = (-0.6, 0, 0.8), the eye along +z: R.V = 0.8.
   ExpectNear(Shade(shading, { point }, { 0.0, 0.0, 1.0 }, false),
