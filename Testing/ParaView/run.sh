@@ -51,6 +51,8 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       # Cell data, as ParaView selects it (cell field data, by name).
       draw 1 "$out/cells-volume.png" "Volume" none 0 cells
       draw 1 "$out/cells-none.png" "Shadowed Volume" none 0 cells
+      # A parameter error, made with a cached technique selected, names that technique.
+      draw 1 "$out/bad-key.png" "Shadowed Volume" dsm-cached 0 bad-key 2>&1 | tee "$out/bad-key.log"
       # The example users copy, as they run it, and the example state file.
       DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" timeout -k 5 300 pvbatch "$source_dir/Examples/ParaView/shadowed_volume.py" \
         "$out/example.png"
@@ -111,6 +113,8 @@ case "$what" in
     # only), darkens in its shadow; without a technique it is lit.
     compare darker-in 0.42 0.66 0.56 0.70 "$out/ground-dsm.png" "$out/ground-none.png" 0.6
     compare diff "$out/cells-none.png" "$out/cells-volume.png" 0.012 0.02
+    grep -q "the shadow technique 'dsm-cached' has no parameter 'no-such-key'" "$out/bad-key.log" ||
+      { echo "a parameter error did not name the technique selected (dsm-cached): FAILED"; exit 1; }
     compare drawn "$out/example.png" 0.05
     grep -q "representation 'Shadowed Volume', technique 'dsm'" "$out/state.log" ||
       { echo "the state file did not restore a Shadowed Volume: FAILED"; exit 1; }

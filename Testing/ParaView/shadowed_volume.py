@@ -1,8 +1,9 @@
 """pvbatch: a Wavelet drawn by the DeepShadow plugin's "Shadowed Volume" representation (or
 ParaView's own "Volume"), shaded, saved to a PNG. Arguments: PLUGIN OUTPUT.png
-REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS [cells] [ground]]]: "cells" colours by the Wavelet's
-values as cell data, "ground" adds the representation's shadow ground below it (-Z). Under
-mpirun every rank holds a brick of it."""
+REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS [cells] [ground] [bad-key]]]: "cells" colours by the
+Wavelet's values as cell data, "ground" adds the representation's shadow ground below it (-Z),
+"bad-key" gives the technique a parameter no technique has. Under mpirun every rank holds a
+brick of it."""
 import sys
 
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetOpacityTransferFunction,
@@ -14,6 +15,7 @@ wavelet = Wavelet()
 wavelet.WholeExtent = [-24, 24, -24, 24, -24, 24]
 cells = "cells" in sys.argv[6:]
 ground = "ground" in sys.argv[6:]
+bad_key = "bad-key" in sys.argv[6:]
 source = PointDatatoCellData(Input=wavelet) if cells else wavelet
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [240, 240]
@@ -28,6 +30,8 @@ if representation == "Shadowed Volume":
     display.ShadowTechnique = sys.argv[4] if len(sys.argv) > 4 else "dsm"
     display.ShadowLights = int(sys.argv[5]) if len(sys.argv) > 5 else 0
     display.ShadowGround = "-Z" if ground else "None"
+    if bad_key:
+        display.ShadowParameters = "no-such-key=1"
 view.CameraPosition = [0, -100, 50]
 view.CameraFocalPoint = [0, 0, 0]
 view.CameraViewUp = [0, 0, 1]

@@ -173,7 +173,8 @@ bool vtkDeepShadowVolumeRepresentation::ApplyTechnique()
       const deepshadow::ShadowParameterInfo* info = deepshadow::FindShadowParameter(key);
       if (!info || !technique->Reads(key))
       {
-        this->Error = "the shadow technique '" + technique->Name + "' has no parameter '" + key + "'";
+        // The name selected (dsm-cached), not the registry entry's (dsm).
+        this->Error = "the shadow technique '" + this->TechniqueName + "' has no parameter '" + key + "'";
         break;
       }
       try
