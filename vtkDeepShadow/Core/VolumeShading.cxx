@@ -54,11 +54,12 @@ PhongParts VolumeShading::LightTerms(const glm::dvec3& color, const glm::dvec3& 
     const glm::dvec3 halfway = this->Halfway(toLight, toViewer, litPosition);
     return PhongTerms(color, normal, toLight, halfway, sample, material, twoSided);
   }
-  // VTK 9.2 onwards. The headlight's light and viewer are the eye, in dataset space.
+  // VTK 9.2 onwards. The headlight's light and viewer are the eye, in dataset space (the
+  // half vector Halfway gives it is that direction).
   glm::dvec3 viewer;
   if (this->Path == ShadingPath::VTKHeadlight)
   {
-    toLight = viewer = glm::normalize(this->WorldToShading * toLight);
+    viewer = this->Halfway(toLight, toViewer, litPosition);
   }
   else
   {

@@ -134,6 +134,7 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
     return glm::clamp(lit, 0.0, 1.0); // a zero gradient: ambient only
   }
   glm::dvec3 lastSpecular(0.0); // VTK 9.1's VTKDirectional: only the last light's
+  const bool halfVector = shading.Revision == VTKShadingRevision::HalfVector;
   const glm::dvec3 litPosition(shading.LightingTransform * glm::dvec4(position, 1.0));
   for (size_t l = 0; l < lights.size(); ++l)
   {
@@ -144,7 +145,6 @@ glm::dvec3 ShadeVolumeSample(const VolumeShading& shading, const glm::dvec3& col
     }
     const PhongParts parts =
       shading.LightTerms(color, normal, sample, lights[l].Positional, toViewer, litPosition, material, twoSided);
-    const bool halfVector = shading.Revision == VTKShadingRevision::HalfVector;
     if (halfVector && shading.Path == ShadingPath::VTKHeadlight && parts.NDotH < 0.0)
     {
       return glm::dvec3(0.0); // VTK's pow() of a negative N.H: NaN, clamped to black (Mesa)
