@@ -45,6 +45,9 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       draw 1 "$out/none.png" "Shadowed Volume" none
       draw 1 "$out/dsm.png" "Shadowed Volume" dsm | tee "$out/dsm.log"
       draw 1 "$out/dsm-all-lights.png" "Shadowed Volume" dsm 1
+      # ParaView's default, unshaded: lit without a normal by the whole light kit.
+      draw 1 "$out/unshaded-none.png" "Shadowed Volume" none 0 unshaded
+      draw 1 "$out/unshaded-dsm.png" "Shadowed Volume" dsm 0 unshaded
       # The representation's ground plane, below the volume (-Z), lit and receiving.
       draw 1 "$out/ground-none.png" "Shadowed Volume" none 0 ground
       draw 1 "$out/ground-dsm.png" "Shadowed Volume" dsm 0 ground
@@ -106,6 +109,9 @@ case "$what" in
     # The key light's deep shadow darkens the volume; every light's more so.
     compare darker "$out/dsm.png" "$out/none.png" 0.97
     compare darker "$out/dsm-all-lights.png" "$out/dsm.png" 0.97
+    # Unshaded, shadows only darken: lit by every light of the kit, the volume keeps its
+    # unshaded colour where nothing shadows it (before: 1.10x brighter, the key light shadowing).
+    compare darker "$out/unshaded-dsm.png" "$out/unshaded-none.png" 0.97
     # The technique's statistics reach the client by name (ShadowStatistics).
     grep -Eq "shadow statistics: .*dsm_nodes_max=[1-9]" "$out/dsm.log" ||
       { echo "the deep shadow map's statistics did not reach the client: FAILED"; exit 1; }

@@ -1,8 +1,9 @@
 """pvbatch: a Wavelet drawn by the DeepShadow plugin's "Shadowed Volume" representation (or
 ParaView's own "Volume"), shaded, saved to a PNG. Arguments: PLUGIN OUTPUT.png
-REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS [cells] [ground] [bad-key]]]: "cells" colours by the
-Wavelet's values as cell data, "ground" adds the representation's shadow ground below it (-Z),
-"bad-key" gives the technique a parameter no technique has. Under mpirun every rank holds a
+REPRESENTATION [TECHNIQUE [SHADOW_LIGHTS [cells] [ground] [bad-key] [unshaded]]]: "cells" colours
+by the Wavelet's values as cell data, "ground" adds the representation's shadow ground below it
+(-Z), "bad-key" gives the technique a parameter no technique has, "unshaded" leaves Shade off
+(ParaView's default). Under mpirun every rank holds a
 brick of it."""
 import sys
 
@@ -16,6 +17,7 @@ wavelet.WholeExtent = [-24, 24, -24, 24, -24, 24]
 cells = "cells" in sys.argv[6:]
 ground = "ground" in sys.argv[6:]
 bad_key = "bad-key" in sys.argv[6:]
+unshaded = "unshaded" in sys.argv[6:]
 source = PointDatatoCellData(Input=wavelet) if cells else wavelet
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [240, 240]
@@ -23,7 +25,7 @@ view.OrientationAxesVisibility = 0
 display = Show(source, view)
 display.Representation = representation
 ColorBy(display, ("CELLS" if cells else "POINTS", "RTData"))
-display.Shade = 1
+display.Shade = 0 if unshaded else 1
 # Clear below 150, denser towards the peak: a lobed ball that shadows itself.
 GetOpacityTransferFunction("RTData").Points = [37, 0.0, 0.5, 0.0, 150, 0.0, 0.5, 0.0, 276, 0.8, 0.5, 0.0]
 if representation == "Shadowed Volume":

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace deepshadow
@@ -49,6 +50,17 @@ LightSample Light::VolumeSampleAt(const glm::dvec3& p) const
     sample.ToLight = glm::normalize(this->Eye - p);
   }
   return sample;
+}
+
+double IsotropicLightScale(const std::vector<Light>& lights)
+{
+  glm::dvec3 sum(0.0);
+  for (const Light& light : lights)
+  {
+    sum += light.Diffuse;
+  }
+  const double largest = std::max({ sum.r, sum.g, sum.b });
+  return largest > 0.0 ? 1.0 / largest : 0.0;
 }
 
 }

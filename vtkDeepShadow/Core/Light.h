@@ -10,6 +10,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <vector>
+
 namespace deepshadow
 {
 
@@ -42,6 +44,15 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
   /** The same for shading a volume's sample at `p` (ShadedFromEye: towards the eye). */
   LightSample VolumeSampleAt(const glm::dvec3& p) const;
 };
+
+/**
+ * An unshaded volume with a shadow technique is lit without a normal (isotropically); each
+ * light gives it (1 - Ka A) * Ld * scale of its colour, scale = 1 / (the lights' summed
+ * nominal diffuse, its largest channel), so that where every light reaches it the volume keeps
+ * the colour it has unshaded and unshadowed, and shadows only darken it, whatever the number
+ * of lights (ParaView's light kit sums to 1.67). 0 when no light is lit.
+ */
+VTKDEEPSHADOWCORE_EXPORT double IsotropicLightScale(const std::vector<Light>& lights);
 
 }
 #endif

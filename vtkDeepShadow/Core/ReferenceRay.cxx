@@ -187,10 +187,13 @@ glm::dvec3 ReferenceRenderer::LitColor(const Scene& scene, const VolumeInstance&
       return ShadeVolumeSample(volume.Shading, c, normal, position, -ray.Direction, scene.Lights,
         material, scene.TwoSidedLighting, factorOf);
     }
-    glm::dvec3 light = material.Ambient * c * scene.AmbientLight;
+    // Isotropic (Light.h): fully lit keeps the colour `c`; Ka A is the shadows' floor.
+    const glm::dvec3 ambient = material.Ambient * scene.AmbientLight;
+    const glm::dvec3 scattered = glm::max(1.0 - ambient, 0.0) * IsotropicLightScale(scene.Lights) * c;
+    glm::dvec3 light = ambient * c;
     for (size_t l = 0; l < scene.Lights.size(); ++l)
     {
-      const glm::dvec3 contribution = material.Diffuse * scene.Lights[l].VolumeSampleAt(position).Diffuse * c;
+      const glm::dvec3 contribution = scattered * scene.Lights[l].VolumeSampleAt(position).Diffuse;
       if (contribution != glm::dvec3(0.0))
       {
         light += contribution * factorOf(l);

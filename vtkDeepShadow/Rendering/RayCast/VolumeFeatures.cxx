@@ -242,7 +242,11 @@ std::vector<VolumeFeature> ShadingFeatures()
         features.Labels.emplace_back("VTKShading");
       },
       BindVTKShading, nullptr },
-    { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr, nullptr, nullptr },
+    { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        sink.Set("u_isotropicLightScale", static_cast<float>(IsotropicLightScale(f.Context.Lights)));
+      },
+      nullptr },
     { "DatasetOpacity", [](const Frame& f) { return f.WorldToDataset.has_value(); }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         sink.Set("u_worldToDataset", glm::mat3(*f.WorldToDataset));

@@ -53,7 +53,8 @@ TEST(StiffCases, ALightAtTheCameraLightsWhatTheCameraSees)
   for (int k = 0; k < 40; ++k)
   {
     const double weight = a * std::pow(1.0 - a, k);
-    bounds += weight * (0.05 + 0.35 * glm::dvec2(std::pow(1.0 - a, k + 1), std::pow(1.0 - a, k)));
+    // Ambient 0.1 x 0.5, and the light's isotropic (1 - 0.1) x 0.5 (Light.h) times its visibility.
+    bounds += weight * (0.05 + 0.45 * glm::dvec2(std::pow(1.0 - a, k + 1), std::pow(1.0 - a, k)));
   }
   bounds += std::pow(1.0 - a, 40) * scene.Background.r;
   for (int y = 2; y < 6; ++y)
@@ -119,6 +120,71 @@ TEST(StiffCases, ZeroIntensityLightsGiveTheAmbientOnlyPictureExactly)
       reference.Volumes[0].Shade = shade;
       EXPECT_EQ(ReferenceRenderer::Render(scene, Exact(), Threads).RGB,
         shade ? ReferenceRenderer::Render(reference, Exact(), Threads).RGB : expected.RGB) << NameOf(p);
+    }
+  }
+}
+
+// An unshaded volume with a technique, every light reaching it (none casting: shadow
+// attenuation 0): the picture is the one without a technique, which emits the colour, to
+// rounding, whatever the lights (one of intensity 1, a light kit's five of 1.66 in all,
+// coloured ones, a positional one) and the material's ambient (Light.h's IsotropicLightScale),
+// tinted by the lights' colour: their summed diffuse over its largest channel.
+// Then the key light casting: never brighter than that. The former model (Ka + Kd sum Ld)
+// fails the first (0.8 of it under one light; 1.26 under the kit).
+TEST(StiffCases, UnshadedWithATechniqueKeepsItsColourWhereFullyLit)
+{
+  const Caster caster{ Grid(glm::ivec3(17), glm::dvec3(1.0), [](int i, int, int k) { return (i + k) % 5 == 0 ? 1.0f : 0.3f; }),
+    Medium(0.4, 0.2, 0.6) };
+  auto light = [](const glm::dvec3& toLight, double intensity, const glm::dvec3& colour) {
+    Light l = Directional(toLight);
+    l.Diffuse = l.Specular = intensity * colour;
+    return l;
+  };
+  const std::vector<std::vector<Light>> setups{
+    { light({ 0.3, 0.2, 1.0 }, 1.0, glm::dvec3(1.0)) },
+    // vtkLightKit's (key, fill, head-on, two back lights; warm and cool colours)
+    { light({ 0.3, 0.2, 1.0 }, 0.75, { 1.0, 0.97232, 0.90222 }), light({ -0.5, -0.3, 0.8 }, 0.25, { 0.90824, 0.93314, 1.0 }),
+      light({ 0.0, 0.0, -1.0 }, 0.25, glm::dvec3(0.9998)), light({ 1.0, 0.0, 0.2 }, 0.2142857, glm::dvec3(0.9998)),
+      light({ -1.0, 0.0, 0.2 }, 0.2142857, glm::dvec3(0.9998)) },
+    { light({ 0.3, 0.2, 1.0 }, 0.6, { 1.0, 0.2, 0.2 }), Positional({ 8.0, 8.0, 40.0 }) },
+  };
+  Scene emitting = ViewFromBelow(caster.G, caster.Transfer, ShadowParameters(), setups[0], 12);
+  emitting.Volumes[0].Shadows.Kind = ShadowKind::None;
+  emitting.Background = glm::dvec3(0.0);
+  const Image expected = ReferenceRenderer::Render(emitting, Exact(), Threads);
+  for (const std::vector<Light>& lights : setups)
+  {
+    glm::dvec3 tint(0.0);
+    for (const Light& l : lights)
+    {
+      tint += l.Diffuse;
+    }
+    tint /= std::max({ tint.r, tint.g, tint.b });
+    for (double ambient : { 0.1, 0.4 })
+    {
+      Scene scene = ViewFromBelow(caster.G, caster.Transfer, Technique(ShadowKind::DeepShadowMap), lights, 12);
+      scene.Volumes[0].Surface.Ambient = ambient;
+      scene.Background = glm::dvec3(0.0);
+      for (Light& l : scene.Lights)
+      {
+        l.ShadowAttenuation = 0.0;
+      }
+      const Image lit = ReferenceRenderer::Render(scene, Exact(), Threads);
+      for (size_t i = 0; i < lit.RGB.size(); ++i)
+      {
+        // (Over a black background every pixel is the drawn colour, tinted.)
+        const double tinted = expected.RGB[i] * (ambient + (1.0 - ambient) * tint[static_cast<int>(i % 3)]);
+        ASSERT_NEAR(lit.RGB[i], tinted, 1e-9) << lights.size() << " lights, ambient " << ambient;
+      }
+      scene.Lights[0].ShadowAttenuation = 1.0;
+      const Image shadowed = ReferenceRenderer::Render(scene, Exact(), Threads);
+      double darker = 0.0;
+      for (size_t i = 0; i < lit.RGB.size(); ++i)
+      {
+        ASSERT_LE(shadowed.RGB[i], lit.RGB[i] + 1e-9);
+        darker = std::max(darker, lit.RGB[i] - shadowed.RGB[i]);
+      }
+      EXPECT_GT(darker, 0.02) << "the key light's shadow darkens";
     }
   }
 }

@@ -30,6 +30,7 @@ vec4 lightMaterial()
   return u_material;
 }
 //DeepShadow::Gradient::Dec
+//DeepShadow::Isotropic::Dec
 //DeepShadow::ShadowGrid::Dec
 //DeepShadow::Shadow::Dec
 //DeepShadow::OtherVolumeShadows::Dec

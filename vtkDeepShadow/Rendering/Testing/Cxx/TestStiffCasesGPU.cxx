@@ -337,7 +337,7 @@ int TestStiffCasesGPU(int, char*[])
         const double below = belowAmbient(t.Object, middle);
         ok = Check(what + ": never below ambient only (" + std::to_string(255.0 * below) + "/255)", below <= 1.0 / 255.0) && ok;
         ok = Check(what + ": saturated (" + std::to_string(255.0 * middle) + "/255)",
-               middle <= (1.0 + 255.0 * 0.35 * t.Dark) / 255.0) && ok;
+               middle <= (1.0 + 255.0 * 0.45 * t.Dark) / 255.0) && ok; // the light's isotropic share
       }
     }
     auto coarse = Make<vtkDeepShadowDeepShadowMapTechnique>(128);
