@@ -401,9 +401,8 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   // as vtkSmartVolumeMapper decides) with AutoAdjustSampleDistances on, the view rays take
   // samples InteractiveStepFactor times farther apart and the shadows stay as built.
   const double stillStep = this->SampleStep(input, indexToWorld);
-  const bool interacting = this->AutoAdjustSampleDistances &&
-    renderer->GetRenderWindow()->GetDesiredUpdateRate() >= InteractiveUpdateRate;
-  const double step = interacting ? InteractiveStepFactor * stillStep : stillStep;
+  const bool interactive = renderer->GetRenderWindow()->GetDesiredUpdateRate() >= InteractiveUpdateRate;
+  const double step = this->AutoAdjustSampleDistances && interactive ? InteractiveStepFactor * stillStep : stillStep;
   impl.EffectiveStep = step;
   if (!this->UpdateSurfaces(window, worldToIndex))
   {
@@ -448,6 +447,7 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
   }
 
   this->FillFrame(renderer, volume, frame, indexToWorld, stillStep, step, unitScale);
+  frame.Context.LightLagDegrees = interactive ? this->InteractiveShadowLag : 0.0;
   if (several && !this->UpdateComponents(window, property, step, uncorrected, unitScale, frame))
   {
     return false;
@@ -708,6 +708,7 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SampleDistance: " << this->SampleDistance << " (0 = half the smallest spacing)\n";
   os << indent << "Jitter: " << this->UseJittering << " (seed " << this->JitterSeed << ")\n";
+  os << indent << "InteractiveShadowLag: " << this->InteractiveShadowLag << " degrees\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";

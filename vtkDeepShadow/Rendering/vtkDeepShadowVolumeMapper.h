@@ -102,6 +102,20 @@ public:
 
   ///@{
   /**
+   * Shadows while interacting: on frames whose window asks for 1 frame a second or more (an
+   * interactor moving the camera, ParaView's interactive renders), a shadow-casting light that
+   * turned less than this many degrees about the volume's centre since its shadow structure was
+   * built keeps that structure; the shadows then lag the light by at most that angle, and the
+   * next still frame rebuilds them. A light that follows the camera (the headlight, ParaView's
+   * light kit) otherwise rebuilds its structure on every frame of a rotation. 0 (the default)
+   * rebuilds whenever a light moved; [0, 90] (clamped). Shadow rays have no structure to keep.
+   */
+  vtkSetClampMacro(InteractiveShadowLag, double, 0.0, 90.0);
+  vtkGetMacro(InteractiveShadowLag, double);
+  ///@}
+
+  ///@{
+  /**
    * Jitter each ray's first sample by a hash of the pixel and JitterSeed (off by default).
    * Jitter is VTK's UseJittering under a shorter name.
    */
@@ -371,6 +385,7 @@ protected:
   void PostRender(vtkRenderer* renderer, int components) override;
 
   unsigned int JitterSeed = 0;
+  double InteractiveShadowLag = 0.0;
   double TerminationOpacity;
   bool EmptySpaceSkipping = true;
   int TransferTableSize = 4096;

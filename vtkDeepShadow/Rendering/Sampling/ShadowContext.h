@@ -69,6 +69,12 @@ struct ShadowContext
    * stay as built (not rebuilt for the coarser step).
    */
   double ShadowStep = 1.0;
+  /**
+   * Interactive frames (vtkDeepShadowVolumeMapper::InteractiveShadowLag): a light that turned
+   * less than this many degrees about the volume's centre since its structure was built keeps
+   * that structure; 0 (still frames) rebuilds whenever a light moved.
+   */
+  double LightLagDegrees = 0.0;
   const BoundTextures* Bound = nullptr; // null: the volume fills its box
   const SurfaceTextures* Surfaces = nullptr; // null: only the volume casts shadows
   const SurfaceSet* CastingSurfaces = nullptr; // the same surfaces in world space (CPU side)

@@ -2,6 +2,10 @@
 
 #include "Sampling/ShadowContext.h"
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
 namespace deepshadow
 {
 
@@ -37,34 +41,62 @@ std::vector<int> ShadowSlots::SlotOfEachLight(int lightCount) const
   return slots;
 }
 
+namespace
+{
+// Where light `light` shines from, seen from `centre`: its direction, or a positional light's
+// offset.
+glm::dvec3 LightFrom(const deepshadow::Light& light, const glm::dvec3& centre)
+{
+  return light.Positional ? light.Position - centre : light.Position - light.FocalPoint;
+}
+
+// Whether `now` is within `degrees` of `built` (and, for a positional light, its distance
+// within as much: tan(degrees) of the built one).
+bool Within(const glm::dvec3& built, const glm::dvec3& now, bool positional, double degrees)
+{
+  const double a = glm::length(built), b = glm::length(now);
+  if (a <= 0.0 || b <= 0.0)
+  {
+    return false;
+  }
+  const double radians = degrees * 3.14159265358979323846 / 180.0;
+  const bool turned = glm::dot(built, now) / (a * b) < std::cos(radians);
+  return !turned && (!positional || std::abs(b - a) <= std::tan(radians) * a);
+}
+}
+
 bool ShadowSlots::Stale(
   int slot, const ShadowContext& context, const std::vector<double>& parameters)
 {
   const deepshadow::Light& light = context.Lights[static_cast<size_t>(this->LightOfSlot[slot])];
-  std::vector<double> key = parameters;
-  key.insert(key.end(), { static_cast<double>(context.DataVersion),
+  std::vector<double> shared = parameters;
+  shared.insert(shared.end(), { static_cast<double>(context.DataVersion),
     static_cast<double>(context.BoundVersion), static_cast<double>(context.SurfacesVersion), context.ShadowStep,
     static_cast<double>(context.Sampling == Interpolation::Nearest), light.Positional ? 1.0 : 0.0 });
-  for (int c = 0; c < 3; ++c)
-  {
-    key.insert(key.end(), { light.Position[c], light.FocalPoint[c] });
-  }
   for (int column = 0; column < 4; ++column)
   {
     for (int row = 0; row < 4; ++row)
     {
-      key.push_back(context.IndexToWorld[column][row]);
+      shared.push_back(context.IndexToWorld[column][row]);
     }
   }
-  if (static_cast<int>(this->Keys.size()) <= slot)
+  const glm::dvec3 centre = glm::dvec3(context.IndexToWorld * glm::dvec4(0.5 * glm::dvec3(context.Dims - 1), 1.0));
+  if (static_cast<int>(this->Built.size()) <= slot)
   {
-    this->Keys.resize(static_cast<size_t>(slot) + 1);
+    this->Built.resize(static_cast<size_t>(slot) + 1);
   }
-  if (this->Keys[static_cast<size_t>(slot)] == key)
+  BuildKey& built = this->Built[static_cast<size_t>(slot)];
+  const bool sameLight = built.Position == light.Position && built.FocalPoint == light.FocalPoint;
+  if (built.Valid && built.Shared == shared &&
+    (sameLight ||
+      (context.LightLagDegrees > 0.0 &&
+        Within(built.From, LightFrom(light, centre), light.Positional, context.LightLagDegrees))))
   {
+    // Kept; a structure whose light moved lags it, and the next frame without a lag (a still
+    // frame) finds its light moved and rebuilds it.
     return false;
   }
-  this->Keys[static_cast<size_t>(slot)] = key;
+  built = BuildKey{ true, shared, light.Position, light.FocalPoint, LightFrom(light, centre) };
   return true;
 }
 

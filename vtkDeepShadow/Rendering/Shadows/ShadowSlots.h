@@ -30,15 +30,25 @@ public:
    * True if slot `slot` must be rebuilt: its light (position, focal point, kind; not its
    * intensity or shadow attenuation, which apply at lookup), the shared inputs (data,
    * transform, sampling, sample distance) or `parameters` (the technique's, with the casting
-   * transfer function's content) differ from its last build. Remembers them.
+   * transfer function's content) differ from its last build. Remembers them. On interactive
+   * frames (context.LightLagDegrees > 0) a structure whose light turned less than that about
+   * the volume's centre since its build is kept.
    */
   bool Stale(int slot, const ShadowContext& context, const std::vector<double>& parameters);
   /** Forget all builds (the storage was reallocated). */
-  void Invalidate() { this->Keys.clear(); }
+  void Invalidate() { this->Built.clear(); }
 
 private:
+  struct BuildKey
+  {
+    bool Valid = false;
+    std::vector<double> Shared; // everything but the light's placement
+    glm::dvec3 Position{ 0.0 };
+    glm::dvec3 FocalPoint{ 0.0 };
+    glm::dvec3 From{ 0.0 };     // where the light shone from, seen from the volume's centre
+  };
   std::vector<int> LightOfSlot;
-  std::vector<std::vector<double>> Keys;
+  std::vector<BuildKey> Built;
 };
 
 }

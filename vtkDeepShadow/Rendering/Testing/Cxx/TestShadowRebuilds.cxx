@@ -16,6 +16,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -267,6 +268,49 @@ bool LightSpaceTechniques(Scene& s)
   s.Techniques.insert(s.Techniques.end(), { dsm.Get(), dsmColor.Get(), levels.Get(), cssm.Get() });
   return ok;
 }
+
+// Interactive frames (the window asks for 15 frames a second) keep a structure whose light
+// turned less than InteractiveShadowLag; the next still frame rebuilds it.
+bool InteractiveLag(Scene& s)
+{
+  bool ok = true;
+  vtkNew<vtkDeepShadowDeepShadowMapTechnique> dsm;
+  dsm->SetMapSize(32);
+  s.Mapper->SetShadowTechnique(dsm);
+  s.Mapper->SetInteractiveShadowLag(10.0);
+  s.Fill->SetShadowAttenuation(0.0);
+  double degrees = 0.0;
+  auto step = [&](const char* what, double turn, double rate, int expected) {
+    degrees += turn; // the key light turned in the xy plane, around its focal point
+    const double radians = degrees * 3.14159265358979323846 / 180.0;
+    s.Key->SetPosition(std::cos(radians), std::sin(radians), 0.0);
+    s.Window->SetDesiredUpdateRate(rate);
+    const int before = dsm->GetBuildCount();
+    s.Window->Render();
+    const int built = dsm->GetBuildCount() - before;
+    const bool good = built == expected;
+    std::printf("lag 10: %-46s built %d (expected %d) %s\n", what, built, expected, good ? "ok" : "FAILED");
+    ok = good && ok;
+  };
+  const double still = 0.0001, interactive = 15.0;
+  step("still frame", 0.0, still, 1);
+  step("interactive, key turned 5 degrees: kept", 5.0, interactive, 0);
+  step("interactive, 7 degrees from its build: kept", 2.0, interactive, 0);
+  step("interactive, 11 degrees from its build: rebuilt", 4.0, interactive, 1);
+  step("interactive, 3 degrees from that build: kept", 3.0, interactive, 0);
+  step("still frame, the light as it was: rebuilt", 0.0, still, 1);
+  step("still frame again: nothing", 0.0, still, 0);
+  step("still frame, key turned 2 degrees: rebuilt", 2.0, still, 1);
+  dsm->CachedOn();
+  step("cached, still: the cache", 0.0, still, 1);
+  step("cached, interactive, 4 degrees: kept", 4.0, interactive, 0);
+  step("cached, still: rebuilt", 0.0, still, 1);
+  s.Mapper->SetInteractiveShadowLag(0.0);
+  step("lag 0, interactive, 1 degree: rebuilt", 1.0, interactive, 1);
+  s.Window->SetDesiredUpdateRate(still);
+  s.Techniques.push_back(dsm.Get());
+  return ok;
+}
 }
 
 int TestShadowRebuilds(int, char*[])
@@ -278,5 +322,6 @@ int TestShadowRebuilds(int, char*[])
   ok = ShadowMap(s) && ok;
   ok = Rays(s) && ok;
   ok = LightSpaceTechniques(s) && ok;
+  ok = InteractiveLag(s) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
