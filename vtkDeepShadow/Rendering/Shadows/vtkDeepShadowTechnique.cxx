@@ -620,6 +620,13 @@ void Internals::Bind(vtkDeepShadowTechnique* self, deepshadow::UniformSink& sink
     attenuation.push_back(static_cast<float>(light.ShadowAttenuation));
   }
   sink.Set("u_shadowSlot", impl.Slots.SlotOfEachLight(static_cast<int>(context.Lights.size())));
+  std::vector<int> slotLights;
+  for (int slot = 0; slot < impl.Slots.Count(); ++slot)
+  {
+    slotLights.push_back(impl.Slots.Light(slot));
+  }
+  sink.Set("u_shadowSlotCount", impl.Slots.Count());
+  sink.Set("u_shadowSlotLight", slotLights);
   sink.Set("u_shadowAttenuation", attenuation);
   if (self->Cached && !direct)
   {

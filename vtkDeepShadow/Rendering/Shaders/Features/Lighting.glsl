@@ -45,6 +45,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   //DeepShadow::MeshNormal::Normal
   vec3 litPosition = position; // where the lights are evaluated (shadows: at position)
   //DeepShadow::VTKShading::Start
+  //DeepShadow::Shadow::Start
   for (int i = 0; i < u_lightCount; ++i)
   {
     vec3 toLight = u_lightDirection[i];

@@ -5,9 +5,36 @@
 // 1 - attenuation (1 - visibility), as deepshadow::ReferenceRenderer::MarchRay does. What
 // other volumes cast (OtherVolumeShadows) multiplies the visibility first: light crosses
 // every caster on its way.
+//
+// Each structure is looked up before the lights' loop, once per slot (Start): llvmpipe runs
+// the code of a branch not taken as well (masked), so a lookup inside the loop cost every
+// light, shadowed or not (ParaView's light kit: five lookups a sample for its key light's one).
 //@Dec
 uniform int u_shadowSlot[MaxLights];          // the light's shadow structure, -1: none
 uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
+uniform int u_shadowSlotCount;                // structures
+uniform int u_shadowSlotLight[MaxLights];     // the light of each
+//@Start
+  vec3 slotVisibility[MaxLights];
+  for (int s = 0; s < u_shadowSlotCount; ++s)
+  {
+    int i = u_shadowSlotLight[s];
+    // The light as the loop below sees it from the sample (the shadow ray leaves from it).
+    vec3 shadowToLight = u_lightDirection[i];
+    float lightDistance = 1e30;
+    if (u_lightPositional[i] != 0)
+    {
+      vec3 fromLight = position - u_lightPosition[i];
+      lightDistance = length(fromLight);
+      shadowToLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
+    }
+    vec3 shadowPosition = position;
+    float shadowDistance = lightDistance;
+    vec3 shadowNormal = vec3(0.0); // a volume sample
+    //DeepShadow::MeshNormal::ShadowOffset
+    //DeepShadow::Isosurface::ShadowOffset
+    slotVisibility[s] = lightVisibility(s, shadowPosition, shadowToLight, shadowDistance, shadowNormal);
+  }
 //@Impl
     {
       vec3 shadowPosition = position;
@@ -16,11 +43,7 @@ uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
       //DeepShadow::MeshNormal::ShadowOffset
       //DeepShadow::Isosurface::ShadowOffset
       bool shadowed = u_shadowSlot[i] >= 0;
-      vec3 visibility = vec3(1.0);
-      if (shadowed)
-      {
-        visibility = lightVisibility(u_shadowSlot[i], shadowPosition, shadowToLight, shadowDistance, shadowNormal);
-      }
+      vec3 visibility = shadowed ? slotVisibility[u_shadowSlot[i]] : vec3(1.0);
       //DeepShadow::OtherVolumeShadows::Impl
       if (shadowed)
       {

@@ -106,6 +106,14 @@ int TestShadowTechniques(int argc, char* argv[])
              (c.Binary ? 4.0 : 2.0) / 255.0, (c.Binary ? 24.0 : 12.0) / 255.0,
              c.Binary ? 0.03 : 0.01) && ok;
     }
+    // Unshaded, the key light casting none: lit isotropically and unshadowed, beside the two
+    // lights that cast.
+    scene.Light->SetShadowAttenuation(0.0);
+    window->Render();
+    ok = WithinTolerance((std::string(c.Name) + ", three lights, unshaded, the key casting none").c_str(),
+           Grab(window), deepshadow::testing::Reference(renderer, true), (c.Binary ? 4.0 : 2.0) / 255.0,
+           (c.Binary ? 24.0 : 12.0) / 255.0, c.Binary ? 0.03 : 0.01) && ok;
+    scene.Light->SetShadowAttenuation(1.0);
   }
   renderer->RemoveLight(point);
   renderer->RemoveLight(spot);
