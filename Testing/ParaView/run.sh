@@ -48,6 +48,12 @@ for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1
       # ParaView's default, unshaded: lit without a normal by the whole light kit.
       draw 1 "$out/unshaded-none.png" "Shadowed Volume" none 0 unshaded
       draw 1 "$out/unshaded-dsm.png" "Shadowed Volume" dsm 0 unshaded
+      # Turning the view in interactive renders: the key light's shadow is kept while it
+      # turned less than ShadowInteractiveLag, rebuilt every frame at 0.
+      for lag in 0 10; do
+        timeout -k 5 300 pvbatch "$here/rotation.py" "$plugin" wavelet "Shadowed Volume" dsm $lag 4 2 |
+          grep "interactive" | tee "$out/rotation-$lag.log"
+      done
       # The representation's ground plane, below the volume (-Z), lit and receiving.
       draw 1 "$out/ground-none.png" "Shadowed Volume" none 0 ground
       draw 1 "$out/ground-dsm.png" "Shadowed Volume" dsm 0 ground
@@ -121,6 +127,9 @@ case "$what" in
     compare diff "$out/cells-none.png" "$out/cells-volume.png" 0.012 0.02
     grep -q "the shadow technique 'dsm-cached' has no parameter 'no-such-key'" "$out/bad-key.log" ||
       { echo "a parameter error did not name the technique selected (dsm-cached): FAILED"; exit 1; }
+    grep -q "shadow builds: 4 in 4 interactive frames" "$out/rotation-0.log" &&
+      grep -q "shadow builds: 0 in 4 interactive frames of 2 degrees, 5 in 5 still frames" "$out/rotation-10.log" ||
+      { echo "interactive renders did not keep (lag 10) or rebuild (lag 0) the key light's shadow: FAILED"; exit 1; }
     compare drawn "$out/example.png" 0.05
     grep -q "representation 'Shadowed Volume', technique 'dsm'" "$out/state.log" ||
       { echo "the state file did not restore a Shadowed Volume: FAILED"; exit 1; }

@@ -34,6 +34,9 @@ vtkStandardNewMacro(vtkDeepShadowVolumeRepresentation);
 
 namespace
 {
+// ShadowInteractiveLag's default (degrees; the XML's default_values says the same).
+constexpr double DefaultInteractiveLag = 10.0;
+
 // The bricks of an MPI run: one per rank of ParaView's global controller.
 class vtkDeepShadowMPIBrickExchange : public vtkDeepShadowBrickExchange
 {
@@ -87,6 +90,7 @@ vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
   // Blinn-Phong: our model of VTK's shading is VTK 9.1's, ParaView's VTK 9.2 shades otherwise,
   // and VTK's shading depends on each rank's box (seams between the pieces of MPI ranks).
   mapper->SetShadingModelToBlinnPhong();
+  mapper->SetInteractiveShadowLag(DefaultInteractiveLag);
   this->VolumeMapper = mapper;
   this->Exchange = vtkSmartPointer<vtkDeepShadowMPIBrickExchange>::New();
   this->Ground = vtkSmartPointer<vtkActor>::New();
@@ -345,6 +349,26 @@ void vtkDeepShadowVolumeRepresentation::ShareShadowsAcrossRanks()
   this->SaidAlone = alone;
 }
 
+void vtkDeepShadowVolumeRepresentation::SetShadowInteractiveLag(double degrees)
+{
+  auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper);
+  if (degrees != mapper->GetInteractiveShadowLag())
+  {
+    mapper->SetInteractiveShadowLag(degrees);
+    this->Modified();
+  }
+}
+
+double vtkDeepShadowVolumeRepresentation::GetShadowInteractiveLag()
+{
+  return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetInteractiveShadowLag();
+}
+
+int vtkDeepShadowVolumeRepresentation::GetShadowBuilds()
+{
+  return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetShadowBuilds();
+}
+
 double vtkDeepShadowVolumeRepresentation::GetShadowExchangeBytes()
 {
   return static_cast<double>(this->Exchange->GetLastBytes());
@@ -412,4 +436,5 @@ void vtkDeepShadowVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowParameters: " << this->ParameterText << "\n";
   os << indent << "ShadowLights: " << (this->ShadowLights ? "all" : "the brightest") << "\n";
   os << indent << "ShadowGround: " << this->ShadowGround << "\n";
+  os << indent << "ShadowInteractiveLag: " << this->GetShadowInteractiveLag() << " degrees\n";
 }

@@ -72,6 +72,20 @@ public:
 
   ///@{
   /**
+   * While the view is interacted with (ParaView's interactive renders), a shadow-casting light
+   * that turned less than this many degrees since its shadow was built keeps that shadow; the
+   * still render after the interaction rebuilds it (vtkDeepShadowVolumeMapper::
+   * InteractiveShadowLag). ParaView's light kit follows the camera, so without it every frame
+   * of a rotation rebuilds the key light's maps. Default 10; 0 rebuilds on every frame.
+   */
+  void SetShadowInteractiveLag(double degrees);
+  double GetShadowInteractiveLag();
+  /** Shadow structures built so far, counted per light (vtkDeepShadowVolumeMapper::GetShadowBuilds). */
+  int GetShadowBuilds();
+  ///@}
+
+  ///@{
+  /**
    * Under MPI (mpirun -np N pvbatch), what this rank's light-space technique gathered from the
    * others at the last frame (vtkDeepShadowBrickExchange): bytes received, and milliseconds.
    * 0 on one rank, or when the pieces shadow themselves only (said once: a technique that is
