@@ -28,13 +28,8 @@ writer.SetInputConnection(reader.GetOutputPort())
 writer.SetFileName(sys.argv[2])
 writer.Write()
 PY
-display=""
-for n in $(seq 140 199); do
-  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=":$n"; break; fi
-done
-Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
-xvfb=$!
-for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
+# shellcheck source=../Testing/ParaView/xvfb.sh
+. "$root/Testing/ParaView/xvfb.sh"
 # shellcheck disable=SC1090
 . "$sdk/env.sh"
 export DISPLAY=$display

@@ -17,15 +17,9 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 compare() { env -u PYTHONPATH /usr/bin/python3 "$here/compare.py" "$@"; }
 mkdir -p "$out"
 
-# A display of our own (-noreset: two ranks reconnecting while the server resets abort).
-display=""
-for n in $(seq 140 199); do
-  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=":$n"; break; fi
-done
-Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
-xvfb=$!
+# shellcheck source=xvfb.sh
+. "$here/xvfb.sh"
 trap 'kill $xvfb 2>/dev/null || true' EXIT
-for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
 
 (
   # shellcheck disable=SC1090
