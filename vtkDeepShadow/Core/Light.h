@@ -50,7 +50,7 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
  * light gives it (1 - Ka A) * Ld * scale of its colour, scale = 1 / (the lights' summed
  * nominal diffuse, its largest channel), so that where every light reaches it the volume keeps
  * the colour it has unshaded and unshadowed, and shadows only darken it, whatever the number
- * of lights (ParaView's light kit sums to 1.67). 0 when no light is lit.
+ * of lights (vtkLightKit's five sum to 1.66 in red). 0 when no light is lit.
  */
 VTKDEEPSHADOWCORE_EXPORT double IsotropicLightScale(const std::vector<Light>& lights);
 
