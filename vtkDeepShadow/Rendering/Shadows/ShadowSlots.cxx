@@ -45,9 +45,10 @@ namespace
 {
 // Where light `light` shines from, seen from `centre`: its direction, or a positional light's
 // offset.
-glm::dvec3 LightFrom(const deepshadow::Light& light, const glm::dvec3& centre)
+glm::dvec3 LightFrom(bool positional, const glm::dvec3& position, const glm::dvec3& focalPoint,
+  const glm::dvec3& centre)
 {
-  return light.Positional ? light.Position - centre : light.Position - light.FocalPoint;
+  return positional ? position - centre : position - focalPoint;
 }
 
 // Whether `now` is within `degrees` of `built` (and, for a positional light, its distance
@@ -87,16 +88,19 @@ bool ShadowSlots::Stale(
   }
   BuildKey& built = this->Built[static_cast<size_t>(slot)];
   const bool sameLight = built.Position == light.Position && built.FocalPoint == light.FocalPoint;
-  if (built.Valid && built.Shared == shared &&
+  // (The same Shared holds the kind and the transform, so the centre is the build's.)
+  if (!built.Shared.empty() && built.Shared == shared &&
     (sameLight ||
       (context.LightLagDegrees > 0.0 &&
-        Within(built.From, LightFrom(light, centre), light.Positional, context.LightLagDegrees))))
+        Within(LightFrom(light.Positional, built.Position, built.FocalPoint, centre),
+          LightFrom(light.Positional, light.Position, light.FocalPoint, centre), light.Positional,
+          context.LightLagDegrees))))
   {
     // Kept; a structure whose light moved lags it, and the next frame without a lag (a still
     // frame) finds its light moved and rebuilds it.
     return false;
   }
-  built = BuildKey{ true, shared, light.Position, light.FocalPoint, LightFrom(light, centre) };
+  built = BuildKey{ shared, light.Position, light.FocalPoint };
   return true;
 }
 

@@ -41,11 +41,9 @@ public:
 private:
   struct BuildKey
   {
-    bool Valid = false;
-    std::vector<double> Shared; // everything but the light's placement
+    std::vector<double> Shared; // everything but the light's placement; empty: never built
     glm::dvec3 Position{ 0.0 };
     glm::dvec3 FocalPoint{ 0.0 };
-    glm::dvec3 From{ 0.0 };     // where the light shone from, seen from the volume's centre
   };
   std::vector<int> LightOfSlot;
   std::vector<BuildKey> Built;

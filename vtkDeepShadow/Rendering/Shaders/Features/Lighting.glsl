@@ -21,6 +21,19 @@ uniform vec3 u_lightEye;                   // the eye, for it
 uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
+
+// Towards light i from `p` (unit), and how far it is (1e30 for a directional light).
+vec3 towardsLight(int i, vec3 p, out float lightDistance)
+{
+  lightDistance = 1e30;
+  if (u_lightPositional[i] == 0)
+  {
+    return u_lightDirection[i];
+  }
+  vec3 fromLight = p - u_lightPosition[i];
+  lightDistance = length(fromLight);
+  return lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
+}
 //DeepShadow::VTKShading::Dec
 
 // The material of what is lit: the volume's, or the component's being lit.
@@ -48,14 +61,11 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   //DeepShadow::Shadow::Start
   for (int i = 0; i < u_lightCount; ++i)
   {
-    vec3 toLight = u_lightDirection[i];
+    float lightDistance;
+    vec3 toLight = towardsLight(i, litPosition, lightDistance);
     float attenuation = 1.0;
-    float lightDistance = 1e30;
     if (u_lightPositional[i] != 0)
     {
-      vec3 fromLight = litPosition - u_lightPosition[i];
-      lightDistance = length(fromLight);
-      toLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
       attenuation = 1.0 / (u_lightAttenuation[i].x + u_lightAttenuation[i].y * lightDistance +
                             u_lightAttenuation[i].z * lightDistance * lightDistance);
       if (u_lightConeCos[i] >= -1.0)

@@ -22,10 +22,7 @@ uniform mat4 u_lightingTransform; // paths 2 and 3: where a sample is lit, from 
 //@ShadowRay
     if (u_lightPositional[i] != 0)
     {
-      // The shadow ray leaves from the sample itself.
-      vec3 fromLight = position - u_lightPosition[i];
-      lightDistance = length(fromLight);
-      shadowToLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
+      shadowToLight = towardsLight(i, position, lightDistance); // the shadow ray leaves from the sample itself
     }
 //@Halfway
 #if VTK_SHADING_PATH == 1

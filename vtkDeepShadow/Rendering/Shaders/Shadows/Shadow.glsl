@@ -19,15 +19,8 @@ uniform int u_shadowSlotLight[MaxLights];     // the light of each
   for (int s = 0; s < u_shadowSlotCount; ++s)
   {
     int i = u_shadowSlotLight[s];
-    // The light as the loop below sees it from the sample (the shadow ray leaves from it).
-    vec3 shadowToLight = u_lightDirection[i];
-    float lightDistance = 1e30;
-    if (u_lightPositional[i] != 0)
-    {
-      vec3 fromLight = position - u_lightPosition[i];
-      lightDistance = length(fromLight);
-      shadowToLight = lightDistance > 0.0 ? -fromLight / lightDistance : vec3(0.0, 0.0, 1.0);
-    }
+    float lightDistance;
+    vec3 shadowToLight = towardsLight(i, position, lightDistance); // the shadow ray leaves from the sample
     vec3 shadowPosition = position;
     float shadowDistance = lightDistance;
     vec3 shadowNormal = vec3(0.0); // a volume sample
