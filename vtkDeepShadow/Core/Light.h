@@ -35,6 +35,11 @@ struct VTKDEEPSHADOWCORE_EXPORT Light
    */
   bool ShadedFromEye = false;
   glm::dvec3 Eye{ 0.0 };
+  /**
+   * The scene's only light is this directional headlight (any intensity): VTK's polygon mapper
+   * then takes its simplest path, a specular (N.L)^p (SurfaceLight).
+   */
+  bool LoneHeadlight = false;
 
   /** The spot's cone cosine, cos(ConeAngle <= 90); -2 (below any cosine) when it is no spot. */
   double ConeCosine() const;

@@ -103,19 +103,27 @@ inline PhongParts PhongTerms(const glm::dvec3& color, const glm::dvec3& normal, 
 }
 
 /**
- * Phong term of one light (no ambient): kd C Ld |N.L| + ks Ls |N.H|^p with two-sided
- * lighting, max(., 0) otherwise, H = normalize(L + V). A zero normal gives no light.
+ * A surface's light from one light (no ambient), as VTK's polygon mapper lights it:
+ * kd C Ld max(N.L, 0) + ks Ls max(R.V, 0)^p where N.L > 0, with R the light's direction
+ * mirrored about the normal (Phong's reflection; VTK's volumes use a half vector instead).
+ * The normal is on the viewer's side already (two-sided lighting turned a back face's): each
+ * light is one-sided, so a sphere's far side stays dark. A zero normal gives no light.
+ * `loneHeadlight`: the light is Light::LoneHeadlight; `specularColor`, the highlights' colour.
  */
-inline glm::dvec3 PhongLight(const glm::dvec3& color, const glm::dvec3& normal,
-  const glm::dvec3& toViewer, const LightSample& light, const Material& material, bool twoSided)
+inline glm::dvec3 SurfaceLight(const glm::dvec3& color, const glm::dvec3& normal, const glm::dvec3& toViewer,
+  const LightSample& light, const Material& material, bool loneHeadlight, const glm::dvec3& specularColor)
 {
-  if (glm::dot(normal, normal) == 0.0)
+  const double nDotL = glm::dot(normal, light.ToLight);
+  if (glm::dot(normal, normal) == 0.0 || nDotL <= 0.0)
   {
     return glm::dvec3(0.0);
   }
-  const PhongParts parts = PhongTerms(color, normal, light.ToLight, glm::normalize(light.ToLight + toViewer),
-    light, material, twoSided);
-  return parts.Diffuse + parts.Specular;
+  const glm::dvec3 reflected = 2.0 * nDotL * normal - light.ToLight;
+  // VTK's lone headlight (Light::LoneHeadlight): (N.L)^p, the viewer taken along the light.
+  const double rDotV = loneHeadlight ? nDotL : std::max(glm::dot(reflected, toViewer), 0.0);
+  const double specular = rDotV > 0.0 ? std::pow(rDotV, material.SpecularPower) : 0.0;
+  return material.Diffuse * nDotL * light.Diffuse * color +
+    material.Specular * specular * light.Specular * specularColor;
 }
 
 /** Rays stop once accumulated opacity exceeds this (VTK's value: 1 - 1/255). */

@@ -355,7 +355,10 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
 {
   const SurfaceMaterial& material = surfaces.GetSurface(hit.Surface).Material;
   const glm::dvec3 color = surfaces.Color(hit);
-  const glm::dvec3 normal = surfaces.Normal(hit);
+  // As VTK lights surfaces: two-sided lighting turns a back face's normal to the viewer (the
+  // triangle's winding says which face is seen), then each light is one-sided.
+  const bool backFace = glm::dot(surfaces.FaceNormal(hit), ray.Direction) > 0.0;
+  const glm::dvec3 normal = (scene.TwoSidedLighting && backFace ? -1.0 : 1.0) * surfaces.Normal(hit);
   const glm::dvec3 position = ray.Origin + hit.T * ray.Direction;
   if (term)
   {
@@ -366,7 +369,8 @@ glm::dvec3 ReferenceRenderer::ShadeSurface(const Scene& scene, const SurfaceSet&
   {
     const LightSample sample = scene.Lights[l].At(position);
     glm::dvec3 contribution =
-      PhongLight(color, normal, -ray.Direction, sample, material.Shading, scene.TwoSidedLighting);
+      SurfaceLight(color, normal, -ray.Direction, sample, material.Shading,
+      scene.Lights[l].LoneHeadlight, material.SpecularColor);
     const LightShadow* own = l < shadows.size() ? shadows[l] : nullptr;
     const LightShadow* other = l < others.size() ? others[l] : nullptr;
     const bool termReached = term && sample.Reach > 0.0;

@@ -450,6 +450,9 @@ SurfaceMaterial MakeSurfaceMaterial(vtkProperty* property)
   material.Shading.Diffuse = property->GetDiffuse();
   material.Shading.Specular = property->GetSpecular();
   material.Shading.SpecularPower = property->GetSpecularPower();
+  double specular[3];
+  property->GetSpecularColor(specular);
+  material.SpecularColor = glm::dvec3(specular[0], specular[1], specular[2]);
   return material;
 }
 

@@ -117,6 +117,7 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     l.ShadowAttenuation = light->GetShadowAttenuation();
     l.Eye = ToGlm3(position);
     l.ShadedFromEye = light->LightTypeIsHeadlight() && light->GetIntensity() == 1.0;
+    l.LoneHeadlight = light->LightTypeIsHeadlight() && !l.Positional;
     lights.push_back(l);
   }
   // VTK's mappers treat a lone headlight of intensity 1 as their simplest lighting; the
@@ -132,6 +133,7 @@ std::vector<Light> MakeLights(vtkRenderer* renderer, bool* truncated)
     for (Light& light : lights)
     {
       light.ShadedFromEye = false;
+      light.LoneHeadlight = false;
     }
   }
   return lights;
@@ -177,11 +179,13 @@ std::vector<Light> KeyForLoneHeadlight(vtkRenderer* renderer, std::vector<Light>
   keyLight.Specular = head.Specular * key.KeyIntensity;
   keyLight.ConeAngle = 180.0;
   keyLight.ShadedFromEye = false;
+  keyLight.LoneHeadlight = false;
   Light fill = head;
   fill.Diffuse = head.Diffuse * key.FillIntensity;
   fill.Specular = head.Specular * key.FillIntensity;
   fill.ShadowAttenuation = 0.0;
   fill.ShadedFromEye = false;
+  fill.LoneHeadlight = false;
   if (replaced)
   {
     *replaced = true;

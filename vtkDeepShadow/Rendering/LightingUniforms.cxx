@@ -35,6 +35,8 @@ void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vt
     }
   }
   sink.Set("u_lightFromEye", fromEye);
+  // Meshes: VTK's polygon mapper lights a lone headlight by its simplest path.
+  sink.Set("u_loneHeadlight", !volume && lights.size() == 1 && lights[0].LoneHeadlight ? 1 : 0);
   std::vector<int> positional;
   std::vector<glm::vec3> positions, directions, diffuse, specular, attenuation;
   std::vector<float> coneCos, exponent;

@@ -210,7 +210,12 @@ bool vtkDeepShadowPolyDataMapper::Internals::Prepare(vtkDeepShadowPolyDataMapper
   vtkUnsignedCharArray* mapped = nullptr;
   if (self->GetScalarVisibility())
   {
+    // Colours per point: VTK's interpolation before mapping (ParaView's default) would map
+    // to texture coordinates instead and leave no colours.
+    const vtkTypeBool interpolate = self->InterpolateScalarsBeforeMapping;
+    self->InterpolateScalarsBeforeMapping = 0;
     mapped = self->MapScalars(mesh, 1.0);
+    self->InterpolateScalarsBeforeMapping = interpolate;
   }
   double color[3];
   actor->GetProperty()->GetColor(color);
@@ -366,6 +371,7 @@ void SetViewUniforms(deepshadow::UniformSink& sink, vtkRenderer* renderer, vtkAc
   const std::vector<deepshadow::Light>& lights, const deepshadow::SurfaceMaterial& material)
 {
   deepshadow::SetLightingUniforms(sink, lights, renderer, material.Shading, false);
+  sink.Set("u_specularColor", glm::vec3(material.SpecularColor));
   const glm::dmat4 modelToWorld = adapter::ToGlm(actor->GetMatrix());
   sink.Set("u_modelToWorld", glm::mat4(modelToWorld));
   sink.Set("u_normalToWorld", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelToWorld)))));

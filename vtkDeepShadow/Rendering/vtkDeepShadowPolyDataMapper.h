@@ -4,8 +4,10 @@
  *
  * Draws the triangles of a vtkPolyData (polygons and strips are triangulated; points without
  * normals get them from vtkPolyDataNormals) with the actor's vtkProperty (colour, opacity,
- * ambient, diffuse, specular, specular power) or its mapped scalars, Phong-lit by the
- * renderer's lights as the volume mapper lights its samples.
+ * ambient, diffuse, specular and its colour, specular power) or its point scalars mapped per
+ * point, lit by the renderer's lights as vtkPolyDataMapper lights them (deepshadow::
+ * SurfaceLight: one-sided per light, back faces turned to the viewer under two-sided
+ * lighting, Phong's reflection). Cell scalars are not drawn (the property's colour is).
  *
  * In a renderer whose pass is vtkDeepShadowPass the mesh takes part in the scene's shadows:
  * - it casts (CastShadows, on by default) into every technique's structure: an opaque mesh

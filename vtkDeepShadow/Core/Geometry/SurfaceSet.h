@@ -32,6 +32,7 @@ struct SurfaceMaterial
   double Opacity = 1.0;
   glm::dvec3 Color{ 1.0 }; // vtkProperty's colour: also what a translucent surface transmits
   Material Shading;        // ambient, diffuse, specular, specular power
+  glm::dvec3 SpecularColor{ 1.0 }; // vtkProperty's: its highlights' colour (SetColor sets it too)
 };
 
 /**

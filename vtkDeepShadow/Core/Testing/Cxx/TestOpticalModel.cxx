@@ -60,7 +60,7 @@ TEST(CompositeFrontToBack, MatchesTheTransmittanceProduct)
   EXPECT_NEAR(glm::length(glm::dvec3(accumulated) - expected), 0.0, 1e-15);
 }
 
-TEST(PhongLight, FollowsTheClosedForm)
+TEST(SurfaceLight, FollowsVTKsClosedForm)
 {
   Material m;
   m.Diffuse = 0.6;
@@ -68,23 +68,31 @@ TEST(PhongLight, FollowsTheClosedForm)
   m.SpecularPower = 8.0;
   LightSample light;
   light.ToLight = glm::normalize(glm::dvec3(0.0, 1.0, 1.0));
-  const glm::dvec3 normal(0.0, 0.0, 1.0), toViewer(0.0, 0.0, 1.0), color(0.5, 0.25, 1.0);
-  const glm::dvec3 lit = PhongLight(color, normal, toViewer, light, m, false);
+  const glm::dvec3 normal(0.0, 0.0, 1.0), color(0.5, 0.25, 1.0);
+  const glm::dvec3 toViewer = glm::normalize(glm::dvec3(0.0, -0.5, 1.0));
+  const glm::dvec3 lit = SurfaceLight(color, normal, toViewer, light, m, false, glm::dvec3(1.0));
+  // VTK's polygon mapper: the reflection of the light's direction, (0, -1, 1)/sqrt(2) here.
   const double nDotL = std::sqrt(0.5);
-  const double nDotH = glm::dot(normal, glm::normalize(light.ToLight + toViewer));
-  const glm::dvec3 expected = 0.6 * nDotL * color + 0.3 * std::pow(nDotH, 8.0) * glm::dvec3(1.0);
+  const double rDotV = glm::dot(glm::normalize(glm::dvec3(0.0, -1.0, 1.0)), toViewer);
+  const glm::dvec3 expected = 0.6 * nDotL * color + 0.3 * std::pow(rDotV, 8.0) * glm::dvec3(1.0);
   EXPECT_NEAR(glm::length(lit - expected), 0.0, 1e-14);
+  // A lone headlight: VTK's simplest path, (N.L)^p.
+  const glm::dvec3 headlit = SurfaceLight(color, normal, toViewer, light, m, true, glm::dvec3(1.0));
+  EXPECT_NEAR(glm::length(headlit - (0.6 * nDotL * color + 0.3 * std::pow(nDotL, 8.0) * glm::dvec3(1.0))), 0.0, 1e-14);
 }
 
-TEST(PhongLight, TwoSidedLightingIgnoresTheNormalsSign)
+TEST(SurfaceLight, IsOneSided)
 {
   Material m;
+  m.Specular = 1.0;
   LightSample light;
   light.ToLight = glm::dvec3(0.0, 0.0, 1.0);
   const glm::dvec3 up(0, 0, 1), down(0, 0, -1), viewer(0, 0, 1), color(1.0);
-  EXPECT_EQ(PhongLight(color, up, viewer, light, m, true), PhongLight(color, down, viewer, light, m, true));
-  EXPECT_EQ(PhongLight(color, down, viewer, light, m, false), glm::dvec3(0.0));
-  EXPECT_EQ(PhongLight(color, glm::dvec3(0.0), viewer, light, m, true), glm::dvec3(0.0));
+  EXPECT_GT(SurfaceLight(color, up, viewer, light, m, false, glm::dvec3(1.0)).x, 0.0);
+  // Lit from behind: neither diffuse nor specular light (|N.L| would light a sphere's far side).
+  EXPECT_EQ(SurfaceLight(color, down, viewer, light, m, false, glm::dvec3(1.0)), glm::dvec3(0.0));
+  EXPECT_EQ(SurfaceLight(color, down, -viewer, light, m, false, glm::dvec3(1.0)), glm::dvec3(0.0));
+  EXPECT_EQ(SurfaceLight(color, glm::dvec3(0.0), viewer, light, m, false, glm::dvec3(1.0)), glm::dvec3(0.0));
 }
 
 TEST(Light, DirectionalLightsPointFromTheFocalPointToThePosition)
