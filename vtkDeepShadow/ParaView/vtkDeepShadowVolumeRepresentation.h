@@ -58,9 +58,9 @@ public:
   /**
    * A ground plane that receives the volume's shadow (a shadow is read on a ground): 0, none
    * (the default); 1 to 6, on the side -X, +X, -Y, +Y, -Z or +Z of the volume's box, a
-   * twentieth of the box beyond it and half the box wider on every side. ParaView's own
-   * surfaces are drawn by its mappers and receive no shadow; this plane is drawn by
-   * vtkDeepShadowPolyDataMapper with the volume as its shadowing volume, in the colour of
+   * twentieth of the box beyond it and half the box wider on every side (ParaView's own
+   * surfaces receive the shadow as "Shadowed Surface", vtkDeepShadowSurfaceRepresentation);
+   * this plane is drawn by vtkDeepShadowPolyDataMapper with the volume as its shadowing volume, in the colour of
    * ShadowGroundColor. Under MPI it is not drawn (said once): a rank's lookups see its own
    * brick and those in front of it, not the bricks between it and a receiver beyond them.
    */
