@@ -43,6 +43,8 @@ public:
 
   /** Times the leaves were joined anew (observability: once per changed input). */
   vtkGetMacro(Joins, int);
+  /** Joins the input's leaves for the surface mapper if the input changed since the last join. */
+  void Join();
 
 protected:
   vtkDeepShadowCompositeSurfaceMapper();
@@ -53,8 +55,6 @@ private:
   vtkDeepShadowCompositeSurfaceMapper(const vtkDeepShadowCompositeSurfaceMapper&) = delete;
   void operator=(const vtkDeepShadowCompositeSurfaceMapper&) = delete;
 
-  /** Joins the input's leaves into Joined if the input changed since the last join. */
-  void Join();
   /** Gives the inner mapper this mapper's colouring settings (only those that changed). */
   void PassSettings();
 

@@ -23,11 +23,6 @@ vtkDeepShadowSurfaceRepresentation::vtkDeepShadowSurfaceRepresentation()
   this->LODMapper->Delete();
   this->Mapper = vtkDeepShadowCompositeSurfaceMapper::New();
   this->LODMapper = vtkDeepShadowCompositeSurfaceMapper::New();
-  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
-  {
-    // Receiving only: nothing in ParaView's views gathers casting meshes.
-    vtkDeepShadowCompositeSurfaceMapper::SafeDownCast(mapper)->GetSurfaceMapper()->CastShadowsOff();
-  }
   this->SetupDefaults();
 }
 
@@ -87,8 +82,9 @@ void vtkDeepShadowSurfaceRepresentation::FindShadowingVolume()
   {
     if (!this->SaidRanks && controller->GetLocalProcessId() == 0)
     {
-      vtkWarningMacro(<< "Shadowed Surface under MPI is drawn without the volumes' shadows: a rank's lookups see "
-                         "its own brick and those in front of it, not every brick between the light and the surface");
+      vtkWarningMacro(<< "Shadowed Surface under MPI is drawn without the volumes' shadows and casts none: a rank's "
+                         "lookups see its own brick and those in front of it, not every brick between the light and "
+                         "the surface");
     }
     this->SaidRanks = true;
     found = nullptr;

@@ -9,14 +9,16 @@
  * mapper, a vtkDeepShadowCompositeSurfaceMapper, with vtkMapper's API. Added: the surface
  * receives the shadows of the first visible "Shadowed Volume" of the view (the volume drawn
  * by a vtkDeepShadowVolumeMapper with a technique), with that volume's technique, as the
- * volume's own shadow ground does.
+ * volume's own shadow ground does, and casts into every Shadowed Volume's structures (each
+ * gathers the view's Shadowed Surfaces at the start of a render, again only when one of them
+ * changed: vtkDeepShadowVolumeRepresentation::GetCastingMeshes()), as meshes do under
+ * vtkDeepShadowPass: an opaque surface stops the light, a translucent one lets its
+ * transmission through.
  *
  * Limits of this version:
- * - the surface casts no shadow into the volume (vtkDeepShadowPass does that outside
- *   ParaView; ParaView's views draw with passes of their own);
- * - under MPI the surface is drawn lit, without shadows, said once in Output Messages (a
- *   rank's lookups see its own brick and those in front of it, not yet every brick between
- *   the light and a surface);
+ * - under MPI the surface is drawn lit, without shadows, and casts none, said once in Output
+ *   Messages (a rank's lookups see its own brick and those in front of it, not yet every
+ *   brick between the light and a surface);
  * - blocks are drawn alike, with the display's property (no per-block colour or visibility);
  * - a backface style other than "Follow Frontface" draws the back faces as ParaView does,
  *   without shadows.

@@ -1,7 +1,10 @@
 #include "vtkDeepShadowVolumeRepresentation.h"
 
 #include "Core/ShadowTechniques.h"
+#include "PassFrame.h"
 #include "vtkDeepShadowBrickExchange.h"
+#include "vtkDeepShadowCastingMeshes.h"
+#include "vtkDeepShadowCompositeSurfaceMapper.h"
 #include "vtkDeepShadowLightSpaceTechnique.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowTechnique.h"
@@ -9,6 +12,8 @@
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommunicator.h"
 #include "vtkDataSet.h"
@@ -93,6 +98,7 @@ vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
   mapper->SetInteractiveShadowLag(DefaultInteractiveLag);
   this->VolumeMapper = mapper;
   this->Exchange = vtkSmartPointer<vtkDeepShadowMPIBrickExchange>::New();
+  this->Casting = vtkSmartPointer<vtkDeepShadowCastingMeshes>::New();
   this->Ground = vtkSmartPointer<vtkActor>::New();
   vtkNew<vtkDeepShadowPolyDataMapper> groundMapper;
   groundMapper->CastShadowsOff();
@@ -208,6 +214,8 @@ bool vtkDeepShadowVolumeRepresentation::AddToView(vtkView* view)
   {
     this->Renderer = renderView->GetRenderer();
     this->Renderer->AddActor(this->Ground);
+    this->RenderObserver = this->Renderer->AddObserver(
+      vtkCommand::StartEvent, this, &vtkDeepShadowVolumeRepresentation::GatherCastingSurfaces);
   }
   return this->Superclass::AddToView(view);
 }
@@ -218,9 +226,48 @@ bool vtkDeepShadowVolumeRepresentation::RemoveFromView(vtkView* view)
   if (auto* renderView = vtkPVRenderView::SafeDownCast(view))
   {
     renderView->GetRenderer()->RemoveActor(this->Ground);
+    renderView->GetRenderer()->RemoveObserver(this->RenderObserver);
   }
   this->Renderer = nullptr;
   return this->Superclass::RemoveFromView(view);
+}
+
+vtkDeepShadowCastingMeshes* vtkDeepShadowVolumeRepresentation::GetCastingMeshes()
+{
+  return this->Casting;
+}
+
+void vtkDeepShadowVolumeRepresentation::GatherCastingSurfaces()
+{
+  // Here, after every representation's REQUEST_RENDER (the surfaces' data is delivered) and
+  // before anything is drawn: the surfaces' own renders prepare these structures first.
+  std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>> meshes;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool ranks = controller && controller->GetNumberOfProcesses() > 1;
+  if (this->Renderer && this->GetVisibility() && !ranks)
+  {
+    vtkActorCollection* actors = this->Renderer->GetActors();
+    vtkCollectionSimpleIterator it;
+    actors->InitTraversal(it);
+    while (vtkActor* actor = actors->GetNextActor(it))
+    {
+      auto* mapper = vtkDeepShadowCompositeSurfaceMapper::SafeDownCast(actor->GetMapper());
+      if (mapper && actor->GetVisibility())
+      {
+        mapper->Join();
+        meshes.emplace_back(actor, mapper->GetSurfaceMapper());
+      }
+    }
+  }
+  this->Casting->Update(meshes);
+  // The set stays with the mapper after the frame (vtkDeepShadowVolumeMapper::SetPassFrame);
+  // handing the same set again changes nothing.
+  auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper);
+  deepshadow::PassFrame frame;
+  frame.Surfaces = this->Casting->GetSurfaces();
+  frame.SurfaceHolder = mapper;
+  mapper->SetPassFrame(&frame);
+  mapper->SetPassFrame(nullptr);
 }
 
 void vtkDeepShadowVolumeRepresentation::UpdateGround()

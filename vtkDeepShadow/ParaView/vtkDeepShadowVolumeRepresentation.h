@@ -20,6 +20,7 @@
 
 class vtkActor;
 class vtkDeepShadowBrickExchange;
+class vtkDeepShadowCastingMeshes;
 class vtkRenderer;
 
 class VTKDEEPSHADOWPARAVIEW_EXPORT vtkDeepShadowVolumeRepresentation : public vtkImageVolumeRepresentation
@@ -102,6 +103,12 @@ public:
   const char* GetShadowStatistics();
   /** The error of the last technique or parameters set, "" when they were applied. */
   const char* GetShadowError() const { return this->Error.c_str(); }
+  /**
+   * The view's Shadowed Surfaces that cast into the volume's shadow structures (gathered at
+   * the start of each render, again only when one of them changed: GetBuilds()). Under MPI
+   * none cast (said by the Shadowed Surfaces).
+   */
+  vtkDeepShadowCastingMeshes* GetCastingMeshes();
 
 protected:
   vtkDeepShadowVolumeRepresentation();
@@ -127,6 +134,10 @@ private:
   void CountPieces();
   /** Gives a light-space technique the ranks' exchange, or says why the pieces cannot share. */
   void ShareShadowsAcrossRanks();
+  /** At the renderer's start: the visible Shadowed Surfaces cast into the volume's structures. */
+  void GatherCastingSurfaces();
+  vtkSmartPointer<vtkDeepShadowCastingMeshes> Casting;
+  unsigned long RenderObserver = 0; // on Renderer's StartEvent
   int ShadowLights = 0;
   int ShadowGround = 0;
   double ShadowGroundColor[3] = { 0.85, 0.85, 0.8 };

@@ -5,11 +5,13 @@
 #include "Sampling/ShadowContext.h"
 #include "Core/Geometry/SurfaceSet.h"
 #include "Translucency/TranslucentLayers.h"
+#include "vtkDeepShadowCastingMeshes.h"
 #include "vtkDeepShadowPolyDataMapper.h"
 #include "vtkDeepShadowVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyData.h"
@@ -75,8 +77,7 @@ void HandFrame(const VolumeEntries& volumes, const MeshEntries& meshes, deepshad
 class vtkDeepShadowPass::Internals
 {
 public:
-  std::vector<double> SurfaceKey;
-  std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
+  vtkNew<vtkDeepShadowCastingMeshes> Casting; // the casting meshes, gathered again on change
   // What the mappers read this frame; empty between frames.
   deepshadow::PassFrame Frame;
   deepshadow::TranslucentLayers Layers;
@@ -128,7 +129,12 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   MeshEntries meshes;
   CollectProps(state, volumes, meshes);
 
-  this->UpdateCastingSurfaces(meshes);
+  if (impl.Casting->Update(meshes))
+  {
+    this->LastError = impl.Casting->GetLastError();
+  }
+  this->SurfaceSetBuilds = impl.Casting->GetBuilds();
+  this->CastingMeshes = impl.Casting->GetCount();
 
   // Every volume with a technique casts shadows onto the others and onto the meshes. The
   // first one is the meshes' shadow source and holds the casting meshes (so that they count
@@ -144,7 +150,7 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   // One frame object for all our mappers, handed over now and taken back at the end. (A
   // volume takes its casting surfaces from it at once: a replaced set marks it modified.)
   impl.Frame = deepshadow::PassFrame();
-  impl.Frame.Surfaces = impl.Surfaces;
+  impl.Frame.Surfaces = impl.Casting->GetSurfaces();
   impl.Frame.SurfaceHolder = shadowing.empty() ? nullptr : shadowing.front().second;
   HandFrame(volumes, meshes, &impl.Frame);
   std::vector<deepshadow::VolumeCaster> casters(shadowing.size());
@@ -200,69 +206,6 @@ void vtkDeepShadowPass::Render(const vtkRenderState* state)
   // The frame ends: the mappers let go of it, and it lets go of the contexts.
   HandFrame(volumes, meshes, nullptr);
   impl.Frame = deepshadow::PassFrame();
-}
-
-void vtkDeepShadowPass::UpdateCastingSurfaces(
-  const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes)
-{
-  Internals& impl = *this->Impl;
-  std::vector<double> key;
-  for (const auto& [actor, mapper] : meshes)
-  {
-    if (!mapper->GetCastShadows())
-    {
-      continue;
-    }
-    vtkPolyData* input = mapper->GetInput();
-    key.insert(key.end(), { static_cast<double>(reinterpret_cast<uintptr_t>(actor)),
-      static_cast<double>(mapper->GetMTime()), static_cast<double>(input ? input->GetMTime() : 0),
-      static_cast<double>(actor->GetProperty()->GetMTime()) });
-    const double* m = actor->GetMatrix()->GetData();
-    key.insert(key.end(), m, m + 16);
-  }
-  if (key != impl.SurfaceKey || (impl.Surfaces == nullptr) != key.empty())
-  {
-    impl.SurfaceKey = key;
-    impl.Surfaces.reset();
-    this->LastError.clear();
-    std::vector<deepshadow::SurfaceMesh> casting;
-    for (const auto& [actor, mapper] : meshes)
-    {
-      deepshadow::SurfaceMesh mesh;
-      std::string error;
-      if (!mapper->GetCastShadows())
-      {
-        continue;
-      }
-      if (mapper->GetSurfaceMesh(actor, mesh, error))
-      {
-        casting.push_back(std::move(mesh));
-      }
-      else
-      {
-        vtkWarningMacro("a mesh casts no shadow: " << error);
-      }
-    }
-    try
-    {
-      if (!casting.empty())
-      {
-        impl.Surfaces = std::make_shared<const deepshadow::SurfaceSet>(std::move(casting));
-        this->CastingMeshes = impl.Surfaces->GetSurfaceCount();
-      }
-      else
-      {
-        this->CastingMeshes = 0;
-      }
-    }
-    catch (const std::invalid_argument& e)
-    {
-      this->LastError = std::string("meshes cast no shadows: ") + e.what();
-      this->CastingMeshes = 0;
-      vtkErrorMacro(<< this->LastError);
-    }
-    ++this->SurfaceSetBuilds;
-  }
 }
 
 void vtkDeepShadowPass::UpdateOtherVolumeShadows(vtkRenderer* renderer,

@@ -142,9 +142,6 @@ protected:
   void RenderMerged(const vtkRenderState* state, vtkDeepShadowVolumeMapper* merging,
     const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& guests,
     const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& peeled);
-  /** The casting meshes in world coordinates, gathered again only when one of them changed. */
-  void UpdateCastingSurfaces(
-    const std::vector<std::pair<vtkActor*, vtkDeepShadowPolyDataMapper*>>& meshes);
   /** Brings each receiver's grid of the other volumes' shadows up to date and hands it over. */
   void UpdateOtherVolumeShadows(vtkRenderer* renderer,
     const std::vector<std::pair<vtkVolume*, vtkDeepShadowVolumeMapper*>>& shadowing,

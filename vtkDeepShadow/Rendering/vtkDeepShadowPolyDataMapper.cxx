@@ -528,6 +528,10 @@ public:
     }
     this->Mapper = mapper;
     this->Slot = &slot;
+    // The volume keeps the surfaces that cast into it (ParaView's Shadowed Surfaces, set by
+    // its representation): the frame hands them back, or the structures would lose them.
+    this->Frame.Surfaces = mapper->GetCastingSurfaces();
+    this->Frame.SurfaceHolder = mapper;
     mapper->SetPassFrame(&this->Frame);
     this->Frame.Source = mapper->PrepareShadows(renderer, volume);
     this->Frame.SourceTechnique = this->Frame.Source ? mapper->GetShadowTechnique() : nullptr;

@@ -703,6 +703,11 @@ void vtkDeepShadowVolumeMapper::SetPassFrame(deepshadow::PassFrame* frame)
   }
 }
 
+std::shared_ptr<const deepshadow::SurfaceSet> vtkDeepShadowVolumeMapper::GetCastingSurfaces() const
+{
+  return this->Impl->Surfaces;
+}
+
 void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

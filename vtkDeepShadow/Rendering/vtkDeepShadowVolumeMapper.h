@@ -69,6 +69,7 @@ struct LabelMap;
 struct PassFrame;
 struct RayCastFrame;
 struct ShadowContext;
+class SurfaceSet;
 }
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
@@ -302,6 +303,10 @@ public:
    *   onto the screen.
    */
   void SetPassFrame(deepshadow::PassFrame* frame);
+#ifndef __VTK_WRAP__
+  /** The surfaces casting shadows onto the volume, as the last frame left them (null: none). */
+  std::shared_ptr<const deepshadow::SurfaceSet> GetCastingSurfaces() const;
+#endif
 
   /**
    * Used by vtkDeepShadowPass before opaque geometry is drawn, with its frame set: brings the
