@@ -189,8 +189,9 @@ case "$what" in
   gui)
     cat "$out/gui-report.txt" 2>/dev/null || true
     grep -q "^representation 'Shadowed Volume'$" "$out/gui-report.txt" &&
-      grep -q "^technique 'dsm'$" "$out/gui-report.txt" ||
-      { echo "the GUI did not show a Shadowed Volume: FAILED"; exit 1; }
+      grep -q "^technique 'dsm'$" "$out/gui-report.txt" &&
+      grep -q "^surface 'Shadowed Surface'$" "$out/gui-report.txt" ||
+      { echo "the GUI did not show a Shadowed Volume and a Shadowed Surface: FAILED"; exit 1; }
     compare drawn "$out/gui.png" 0.3
     ;;
 esac
