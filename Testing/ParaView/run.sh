@@ -30,7 +30,7 @@ trap 'kill $xvfb 2>/dev/null || true' EXIT
     if [ "$ranks" = 1 ]; then
       timeout -k 5 300 pvbatch "$here/shadowed_volume.py" "$plugin" "$@"
     else
-      timeout -k 5 300 mpirun -np "$ranks" pvbatch "$here/shadowed_volume.py" "$plugin" "$@"
+      timeout -k 5 300 mpirun --oversubscribe -np "$ranks" pvbatch "$here/shadowed_volume.py" "$plugin" "$@"
     fi
   }
   surfaces() { timeout -k 5 300 pvbatch "$here/shadowed_surfaces.py" "$plugin" "$@"; }
@@ -83,6 +83,11 @@ trap 'kill $xvfb 2>/dev/null || true' EXIT
       draw 2 "$out/dsm-2.png" "Shadowed Volume" dsm | tee "$out/dsm-2.log"
       grep -Eq "shadow exchange: [1-9][0-9]* bytes" "$out/dsm-2.log" ||
         { echo "two ranks with dsm exchanged nothing: FAILED"; exit 1; }
+      # Eight ranks (oversubscribed): the totals scanned along the light, and gathered.
+      draw 8 "$out/none-8.png" "Shadowed Volume" none
+      draw 8 "$out/dsm-8.png" "Shadowed Volume" dsm | tee "$out/dsm-8.log"
+      draw 8 "$out/dsm-8-gather.png" "Shadowed Volume" dsm 0 gather | tee "$out/dsm-8-gather.log"
+      draw 8 "$out/rays-8.png" "Shadowed Volume" rays > "$out/rays-8.log" 2>&1
       # Shadow rays are not exchanged: said, once, and each piece shadows itself only.
       draw 1 "$out/rays-1.png" "Shadowed Volume" rays
       draw 2 "$out/rays-2.png" "Shadowed Volume" rays > "$out/rays-2.log" 2>&1
@@ -185,6 +190,26 @@ case "$what" in
       exit 1
     fi
     compare drawn "$out/plane-2.png" 0.2 # measured: 25.5 %
+    # Eight ranks against one: with dsm, at most 1 % of pixels beyond 8/255 more than the
+    # bricks' split costs unshadowed (measured: 0.00 % against 0.16 %) ...
+    split=$(compare diff "$out/none-8.png" "$out/none-1.png" 1 1 | sed -E 's/.* ([0-9.]+)% of pixels.*/\1/')
+    limit=$(awk -v s="$split" 'BEGIN { print (s + 1) / 100 }')
+    compare diff "$out/dsm-8.png" "$out/dsm-1.png" 0.01 "$limit"
+    # ... which pieces that shadow themselves only exceed (measured: 3.1 %) ...
+    if compare diff "$out/rays-8.png" "$out/rays-1.png" 0.01 "$limit"; then
+      echo "the comparison passes pieces that shadow themselves only: FAILED"
+      exit 1
+    fi
+    # ... gathered instead of scanned, the same picture.
+    compare diff "$out/dsm-8-gather.png" "$out/dsm-8.png" 0 0
+    # Bytes a rank receives: scanned, 3 maps at 8 ranks against 1 at 2 (and the boxes, 40
+    # bytes from each other rank: 3.0002x); gathered, 7 maps.
+    bytes() { sed -nE 's/^shadow exchange: ([0-9]+) bytes.*/\1/p' "$1"; }
+    awk -v two="$(bytes "$out/dsm-2.log")" -v scan="$(bytes "$out/dsm-8.log")" -v gather="$(bytes "$out/dsm-8-gather.log")" 'BEGIN {
+      printf "bytes received by a rank: 2 ranks %d, 8 ranks scanned %d (%.4fx), gathered %d (%.4fx)\n",
+        two, scan, scan / two, gather, gather / two
+      exit !(two > 0 && scan <= 3.001 * two && gather > 6.9 * two) }' ||
+      { echo "the scan's bytes at 8 ranks are not 3x those at 2: FAILED"; exit 1; }
     ;;
   gui)
     cat "$out/gui-report.txt" 2>/dev/null || true

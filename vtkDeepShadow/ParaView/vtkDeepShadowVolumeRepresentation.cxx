@@ -69,6 +69,26 @@ public:
     all.resize(local.size() * static_cast<size_t>(controller->GetNumberOfProcesses()));
     return controller->AllGather(local.data(), all.data(), static_cast<vtkIdType>(local.size())) != 0;
   }
+  bool CanSendReceive() override { return vtkMultiProcessController::GetGlobalController() != nullptr; }
+  bool SendReceive(int to, const std::vector<float>& send, int from, std::vector<float>& received, bool sendFirst,
+    int tag) override
+  {
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const int messageTag = ScanTag + tag;
+    auto sent = [&] {
+      return to < 0 || controller->Send(send.data(), static_cast<vtkIdType>(send.size()), to, messageTag) != 0;
+    };
+    auto arrived = [&] {
+      return from < 0 ||
+        (controller->Receive(received.data(), static_cast<vtkIdType>(received.size()), from, messageTag) != 0 &&
+          controller->GetCommunicator()->GetCount() == static_cast<vtkIdType>(received.size()));
+    };
+    return sendFirst ? sent() && arrived() : arrived() && sent();
+  }
+
+private:
+  // Apart from ParaView's own tags on the global controller.
+  static constexpr int ScanTag = 0x5D5C00;
 };
 vtkStandardNewMacro(vtkDeepShadowMPIBrickExchange);
 
@@ -342,6 +362,7 @@ int vtkDeepShadowVolumeRepresentation::ProcessViewRequest(
   }
   if (request == vtkPVView::REQUEST_RENDER())
   {
+    this->GatherExchangeStatistics();
     this->ChooseShadowLights();
     this->ShareShadowsAcrossRanks();
     this->UpdateGround();
@@ -416,14 +437,51 @@ int vtkDeepShadowVolumeRepresentation::GetShadowBuilds()
   return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetShadowBuilds();
 }
 
+void vtkDeepShadowVolumeRepresentation::GatherExchangeStatistics()
+{
+  // Collective (every rank's REQUEST_RENDER): the largest of what each rank's last frame
+  // moved, which differs between ranks under the scan (the first brick along the light
+  // receives nothing); the client reads rank 0's properties.
+  const double mine[3] = { static_cast<double>(this->Exchange->GetLastBytes()),
+    static_cast<double>(this->Exchange->GetLastMessages()), this->Exchange->GetLastMilliseconds() };
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    controller->AllReduce(mine, this->ExchangeLargest, 3, vtkCommunicator::MAX_OP);
+  }
+  else
+  {
+    std::copy(mine, mine + 3, this->ExchangeLargest);
+  }
+}
+
 double vtkDeepShadowVolumeRepresentation::GetShadowExchangeBytes()
 {
-  return static_cast<double>(this->Exchange->GetLastBytes());
+  return this->ExchangeLargest[0];
+}
+
+int vtkDeepShadowVolumeRepresentation::GetShadowExchangeMessages()
+{
+  return static_cast<int>(this->ExchangeLargest[1]);
 }
 
 double vtkDeepShadowVolumeRepresentation::GetShadowExchangeMilliseconds()
 {
-  return this->Exchange->GetLastMilliseconds();
+  return this->ExchangeLargest[2];
+}
+
+void vtkDeepShadowVolumeRepresentation::SetShadowExchangeScan(int scan)
+{
+  if ((scan != 0) != this->Exchange->GetScan())
+  {
+    this->Exchange->SetScan(scan != 0);
+    this->Modified();
+  }
+}
+
+int vtkDeepShadowVolumeRepresentation::GetShadowExchangeScan()
+{
+  return this->Exchange->GetScan() ? 1 : 0;
 }
 
 const char* vtkDeepShadowVolumeRepresentation::GetShadowStatistics()

@@ -87,13 +87,26 @@ public:
 
   ///@{
   /**
-   * Under MPI (mpirun -np N pvbatch), what this rank's light-space technique gathered from the
-   * others at the last frame (vtkDeepShadowBrickExchange): bytes received, and milliseconds.
-   * 0 on one rank, or when the pieces shadow themselves only (said once: a technique that is
-   * not exchanged, or a rank without a piece).
+   * Under MPI (mpirun -np N pvbatch), what the light-space technique's exchange between the
+   * ranks' bricks (vtkDeepShadowBrickExchange) cost at the frame before the last render: the
+   * largest over the ranks of the bytes and messages a rank received, and of the milliseconds
+   * it spent (gathered at each render's start, so that no rank waits after drawing). 0 on one
+   * rank, or when the pieces shadow themselves only (said once: a technique that is not
+   * exchanged, or a rank without a piece).
    */
   double GetShadowExchangeBytes();
+  int GetShadowExchangeMessages();
   double GetShadowExchangeMilliseconds();
+  ///@}
+
+  ///@{
+  /**
+   * Whether the ranks scan their light-space totals along each light (on, the default:
+   * ceil(log2 ranks) messages of one map per rank and light) or gather every rank's (ranks - 1
+   * maps). The pictures are the same; off is for comparing.
+   */
+  void SetShadowExchangeScan(int scan);
+  int GetShadowExchangeScan();
   ///@}
   /**
    * The technique's statistics of the last frame on this rank (vtkDeepShadowTechnique::
@@ -132,6 +145,7 @@ private:
   void UpdateGround();
   /** Collective (every rank updates): how many ranks hold no piece of the volume. */
   void CountPieces();
+  void GatherExchangeStatistics();
   /** Gives a light-space technique the ranks' exchange, or says why the pieces cannot share. */
   void ShareShadowsAcrossRanks();
   /** At the renderer's start: the visible Shadowed Surfaces cast into the volume's structures. */
@@ -145,6 +159,7 @@ private:
   bool SaidGroundAlone = false;
   int RanksWithoutPiece = 0;
   vtkSmartPointer<vtkDeepShadowBrickExchange> Exchange; // the ranks' bricks (MPI)
+  double ExchangeLargest[3] = { 0.0, 0.0, 0.0 }; // bytes, messages, ms: GatherExchangeStatistics
   std::string SaidAlone; // why the pieces of an MPI run shadow themselves only: said once
   vtkRenderer* Renderer = nullptr; // the view's, while the representation is in one
   std::string TechniqueName = "dsm";

@@ -9,9 +9,13 @@
  *      ranks;
  *   2. after building its maps, reads each texel's total transmittance through its own brick
  *      (its lookup at the far end of the texel's ray);
- *   3. gathers every brick's totals and multiplies, per texel, those of the bricks that lie
- *      between it and the light (deepshadow::UpstreamTransmittance) into its lookups.
- * Both gathers are collective: every brick's mapper must draw every frame (ParaView's view
+ *   3. multiplies, per texel, the totals of the bricks that lie between it and the light into
+ *      its lookups. With point-to-point messages (SendReceive) and Scan on, as a prefix
+ *      product along each light's order of the bricks (deepshadow::LightOrder and
+ *      ExclusiveProductScan): ceil(log2 bricks) messages of one map each, received per brick
+ *      and light. Otherwise, or where the bricks have no order (overlapping boxes), by
+ *      gathering every brick's totals (deepshadow::UpstreamTransmittance): bricks - 1 maps.
+ * Every exchange is collective: every brick's mapper must draw every frame (ParaView's view
  * does; a rank without a piece must not take part, see vtkDeepShadowVolumeRepresentation).
  * A subclass moves the bytes: vtkDeepShadowMPIBrickExchange over a vtkMultiProcessController
  * in the ParaView module, an in-process store in the tests.
@@ -41,21 +45,55 @@ public:
    */
   virtual bool AllGather(const std::vector<float>& local, std::vector<float>& all) = 0;
 
+  /**
+   * Whether this exchange has SendReceive (the base class has not: the bricks then gather).
+   * It must answer the same on every brick.
+   */
+  virtual bool CanSendReceive() { return false; }
+  /**
+   * Point to point: sends `send` to brick `to` and receives `received.size()` values from
+   * brick `from` (-1: none), sending first when `sendFirst`; `tag` tells apart a frame's
+   * messages. Blocking sends and receives are enough: the scan pairs them. False if a
+   * message failed.
+   */
+  virtual bool SendReceive(
+    int to, const std::vector<float>& send, int from, std::vector<float>& received, bool sendFirst, int tag);
+
   ///@{
-  /** What the last frame's exchanges cost: bytes sent and received by this brick, and time. */
+  /**
+   * Whether the totals are scanned along each light (when CanSendReceive) rather than
+   * gathered. On by default; off to compare (the pictures are the same).
+   */
+  vtkSetMacro(Scan, bool);
+  vtkGetMacro(Scan, bool);
+  vtkBooleanMacro(Scan, bool);
+  ///@}
+
+  ///@{
+  /**
+   * What the last frame's exchanges cost this brick: bytes and messages received from other
+   * bricks (it sends as many bytes as it receives, summed over the bricks), the time spent in
+   * them, and whether its totals were scanned (false: gathered).
+   */
   vtkGetMacro(LastBytes, long long);
+  vtkGetMacro(LastMessages, int);
   vtkGetMacro(LastMilliseconds, double);
+  vtkGetMacro(LastScanned, bool);
   ///@}
   /** Called by the technique around one frame's exchanges. */
   void BeginFrame();
-  void Account(long long bytes, double milliseconds);
+  void Account(long long bytes, int messages, double milliseconds);
+  void SetLastScanned(bool scanned) { this->LastScanned = scanned; }
 
 protected:
   vtkDeepShadowBrickExchange() = default;
   ~vtkDeepShadowBrickExchange() override = default;
 
+  bool Scan = true;
   long long LastBytes = 0;
+  int LastMessages = 0;
   double LastMilliseconds = 0.0;
+  bool LastScanned = false;
 
 private:
   vtkDeepShadowBrickExchange(const vtkDeepShadowBrickExchange&) = delete;

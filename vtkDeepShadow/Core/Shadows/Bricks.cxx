@@ -107,4 +107,116 @@ std::vector<float> UpstreamTransmittance(const std::vector<float>& totals, size_
   return upstream;
 }
 
+namespace
+{
+// Appends `bricks` to `order` as the light's rays cross them: splits them by an axis-aligned
+// plane that no brick straddles (a kd partition, as ParaView's ordered compositing cuts a
+// volume, always has one) and puts the light's side first, recursively. A ray that crosses
+// two bricks crosses the plane that first separates them once, from the light's side. False
+// if some set of bricks has no such plane.
+bool AppendInLightOrder(const std::vector<BrickBox>& boxes, const std::vector<int>& bricks, const Light& light,
+  double tolerance, std::vector<int>& order)
+{
+  if (bricks.size() <= 1)
+  {
+    order.insert(order.end(), bricks.begin(), bricks.end());
+    return true;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int candidate : bricks)
+    {
+      const double plane = boxes[static_cast<size_t>(candidate)].Max[axis];
+      std::vector<int> low, high;
+      for (int b : bricks)
+      {
+        const BrickBox& box = boxes[static_cast<size_t>(b)];
+        if (box.Max[axis] <= plane + tolerance)
+        {
+          low.push_back(b);
+        }
+        else if (box.Min[axis] >= plane - tolerance)
+        {
+          high.push_back(b);
+        }
+      }
+      if (low.empty() || high.empty() || low.size() + high.size() != bricks.size())
+      {
+        continue;
+      }
+      // Rays parallel to the plane, or from a light on it, cross no brick of both sides.
+      const double lightBelow =
+        light.Positional ? plane - light.Position[axis] : light.FocalPoint[axis] - light.Position[axis];
+      const bool lowFirst = lightBelow >= 0.0;
+      return AppendInLightOrder(boxes, lowFirst ? low : high, light, tolerance, order) &&
+        AppendInLightOrder(boxes, lowFirst ? high : low, light, tolerance, order);
+    }
+  }
+  return false;
+}
+}
+
+std::vector<int> LightOrder(const std::vector<BrickBox>& boxes, const Light& light, double tolerance)
+{
+  std::vector<int> valid, invalid;
+  for (int b = 0; b < static_cast<int>(boxes.size()); ++b)
+  {
+    (boxes[static_cast<size_t>(b)].IsValid() ? valid : invalid).push_back(b);
+  }
+  std::vector<int> order;
+  if (!AppendInLightOrder(boxes, valid, light, tolerance, order))
+  {
+    return {};
+  }
+  // Empty bricks last: nothing of theirs lies in front of anything.
+  order.insert(order.end(), invalid.begin(), invalid.end());
+  return order;
+}
+
+int ScanRounds(int bricks)
+{
+  int rounds = 0;
+  while ((1 << rounds) < bricks)
+  {
+    ++rounds;
+  }
+  return rounds;
+}
+
+bool ExclusiveProductScan(const std::vector<int>& order, int self, const std::vector<float>& local, int tag,
+  const ScanMessage& message, std::vector<float>& upstream)
+{
+  const auto found = std::find(order.begin(), order.end(), self);
+  if (found == order.end())
+  {
+    return false;
+  }
+  const int position = static_cast<int>(found - order.begin());
+  const int bricks = static_cast<int>(order.size());
+  std::vector<float> inclusive = local;
+  upstream.assign(local.size(), 1.0f);
+  std::vector<float> received(local.size());
+  for (int round = 0, stride = 1; stride < bricks; ++round, stride *= 2)
+  {
+    const int to = position + stride < bricks ? order[static_cast<size_t>(position + stride)] : -1;
+    const int from = position >= stride ? order[static_cast<size_t>(position - stride)] : -1;
+    // Blocks of `stride` positions alternate: one sends first, the next receives first, so
+    // every send meets a receive that is already waiting.
+    const bool sendFirst = (position / stride) % 2 == 0;
+    if (!message(to, inclusive, from, received, sendFirst, tag + round))
+    {
+      return false;
+    }
+    if (from >= 0)
+    {
+      for (size_t i = 0; i < local.size(); ++i)
+      {
+        upstream[i] *= received[i];
+        inclusive[i] *= received[i];
+      }
+    }
+  }
+  return true;
+}
+
 }

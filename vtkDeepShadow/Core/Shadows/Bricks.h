@@ -17,6 +17,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace deepshadow
@@ -59,6 +60,40 @@ VTKDEEPSHADOWCORE_EXPORT BrickOrder OrderTowardLight(
 VTKDEEPSHADOWCORE_EXPORT std::vector<float> UpstreamTransmittance(const std::vector<float>& totals,
   size_t perBrick, int self, const std::vector<BrickBox>& boxes, const Light& light,
   double tolerance, bool& overlapping);
+
+/**
+ * The bricks in the order `light`'s rays cross them, nearest the light first: every ray that
+ * crosses two bricks crosses the earlier one first. Found as the kd tree the boxes form (an
+ * axis plane that no box straddles splits them, recursively; a kd partition always has one,
+ * whereas choosing any separating plane per pair, as OrderTowardLight does, can make cycles
+ * between bricks no ray crosses together). Empty when no such tree exists (overlapping
+ * bricks, a pinwheel): the bricks then gather instead. Invalid boxes (empty ranks) come last.
+ */
+VTKDEEPSHADOWCORE_EXPORT std::vector<int> LightOrder(
+  const std::vector<BrickBox>& boxes, const Light& light, double tolerance);
+
+/**
+ * One step of a scan between bricks: send `send` to brick `to` and receive `received.size()`
+ * values from brick `from` (-1: none), sending first when `sendFirst` (the scan alternates it
+ * so that blocking sends and receives pair up without waiting along a chain); `tag` tells a
+ * frame's messages apart. False if a message failed.
+ */
+using ScanMessage = std::function<bool(
+  int to, const std::vector<float>& send, int from, std::vector<float>& received, bool sendFirst, int tag)>;
+
+/** How many rounds a scan of `bricks` takes: ceil(log2 bricks). */
+VTKDEEPSHADOWCORE_EXPORT int ScanRounds(int bricks);
+
+/**
+ * Collective over the bricks of `order`: the product, value by value, of the `local` values
+ * of the bricks before `self` in `order` (1 for the first), Hillis and Steele's scan. In round
+ * r the brick at position p sends its running product of the 2^r bricks up to it to position
+ * p + 2^r and multiplies in what p - 2^r sent: an inclusive product (what it sends on) and an
+ * exclusive one (its answer), so nothing is divided. ScanRounds messages at most, each way.
+ * `tag` is the first of the ScanRounds tags it uses.
+ */
+VTKDEEPSHADOWCORE_EXPORT bool ExclusiveProductScan(const std::vector<int>& order, int self,
+  const std::vector<float>& local, int tag, const ScanMessage& message, std::vector<float>& upstream);
 
 }
 #endif

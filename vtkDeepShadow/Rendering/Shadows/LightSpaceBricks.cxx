@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 
 namespace deepshadow
 {
@@ -23,9 +24,30 @@ double NowMilliseconds()
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// What each brick sends at the start of a frame: its box, then the map's shape.
+// What each brick sends at the start of a frame: its box, then the map's shape, then a
+// signature of its lights (the scan's order depends on them: bricks must agree).
 constexpr size_t BoxValues = 6;
 constexpr size_t ShapeValues = 3;
+constexpr size_t FrameValues = BoxValues + ShapeValues + 1;
+
+// 24 bits of the lights' placement, exact as a float.
+float LightSignature(const std::vector<Light>& lights)
+{
+  std::uint32_t hash = 2166136261u; // FNV-1a
+  for (const Light& light : lights)
+  {
+    const float values[7] = { light.Positional ? 1.0f : 0.0f, static_cast<float>(light.Position.x),
+      static_cast<float>(light.Position.y), static_cast<float>(light.Position.z),
+      static_cast<float>(light.FocalPoint.x), static_cast<float>(light.FocalPoint.y),
+      static_cast<float>(light.FocalPoint.z) };
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
+    for (size_t i = 0; i < sizeof(values); ++i)
+    {
+      hash = (hash ^ bytes[i]) * 16777619u;
+    }
+  }
+  return static_cast<float>(hash & 0xFFFFFFu);
+}
 
 // Texel rays and boxes are in world units: boxes that share a face agree on it to float
 // precision of their coordinates.
@@ -48,7 +70,7 @@ vtkDeepShadowBrickExchange* LightSpaceBricks::GetExchange() const
 }
 
 bool LightSpaceBricks::BeginFrame(
-  CasterBounds& bounds, int mapSize, int lights, int channels, std::string& problem)
+  CasterBounds& bounds, int mapSize, const std::vector<Light>& slotLights, int channels, std::string& problem)
 {
   // Until this frame is known to exchange: back to the brick's own faces, a change if it
   // exchanged before.
@@ -71,19 +93,21 @@ bool LightSpaceBricks::BeginFrame(
   }
   std::vector<float> mine{ static_cast<float>(local.Min.x), static_cast<float>(local.Min.y),
     static_cast<float>(local.Min.z), static_cast<float>(local.Max.x), static_cast<float>(local.Max.y),
-    static_cast<float>(local.Max.z), static_cast<float>(mapSize), static_cast<float>(lights),
-    static_cast<float>(channels) };
+    static_cast<float>(local.Max.z), static_cast<float>(mapSize), static_cast<float>(slotLights.size()),
+    static_cast<float>(channels), LightSignature(slotLights) };
   std::vector<float> all;
   const double start = NowMilliseconds();
   const bool gathered = this->Exchanger->AllGather(mine, all);
-  this->Exchanger->Account(static_cast<long long>(all.size() * sizeof(float)), NowMilliseconds() - start);
   const size_t bricks = static_cast<size_t>(this->Exchanger->GetNumberOfBricks());
+  this->Exchanger->Account(static_cast<long long>((bricks - 1) * mine.size() * sizeof(float)),
+    static_cast<int>(bricks - 1), NowMilliseconds() - start);
   if (!gathered || all.size() != bricks * mine.size())
   {
     problem = "the bricks' boxes could not be gathered";
     return false;
   }
   this->Boxes.assign(bricks, BrickBox{});
+  this->LightsAgree = true;
   BrickBox everything;
   for (size_t b = 0; b < bricks; ++b)
   {
@@ -94,6 +118,7 @@ bool LightSpaceBricks::BeginFrame(
         std::to_string(b) + ")";
       return false;
     }
+    this->LightsAgree = this->LightsAgree && v[FrameValues - 1] == mine[FrameValues - 1];
     this->Boxes[b] = BrickBox{ glm::dvec3(v[0], v[1], v[2]), glm::dvec3(v[3], v[4], v[5]) };
     everything = everything.Union(this->Boxes[b]);
   }
@@ -143,36 +168,31 @@ void LightSpaceBricks::ReadTotals(
 bool LightSpaceBricks::Exchange(vtkOpenGLRenderWindow* window, const std::vector<Light>& slotLights,
   int facesPerLight, std::string& problem)
 {
-  std::vector<float> all;
-  const double start = NowMilliseconds();
-  const bool gathered = this->Exchanger->AllGather(this->Totals, all);
-  this->Exchanger->Account(static_cast<long long>(all.size() * sizeof(float)), NowMilliseconds() - start);
-  const size_t bricks = this->Boxes.size();
-  if (!gathered || all.size() != bricks * this->Totals.size())
-  {
-    problem = "the bricks' light-space totals could not be gathered";
-    return false;
-  }
-  // Per light (slot): its faces' texels of every brick, then their product in front of ours.
+  // Per light (slot): its faces' texels.
   const size_t perFace = static_cast<size_t>(this->Size) * this->Size * this->Channels;
   const size_t perSlot = perFace * facesPerLight;
+  const size_t slots = std::min(slotLights.size(), perSlot ? this->Totals.size() / perSlot : 0);
   const double tolerance = SharedFaceTolerance(this->LastUnion);
-  std::vector<float> upstream(this->Totals.size(), 1.0f);
-  this->Overlap = false;
-  for (size_t slot = 0; slot < slotLights.size() && (slot + 1) * perSlot <= this->Totals.size(); ++slot)
+  // Scanned along each light's order of the bricks where every brick can: the decision
+  // rests on what every brick gathered at BeginFrame, so all take the same path.
+  std::vector<std::vector<int>> orders;
+  bool scan = this->Exchanger->GetScan() && this->Exchanger->CanSendReceive() && this->LightsAgree;
+  for (size_t slot = 0; slot < slots && scan; ++slot)
   {
-    std::vector<float> light(bricks * perSlot);
-    for (size_t b = 0; b < bricks; ++b)
-    {
-      const float* from = all.data() + b * this->Totals.size() + slot * perSlot;
-      std::copy(from, from + perSlot, light.begin() + static_cast<std::ptrdiff_t>(b * perSlot));
-    }
-    bool overlapping = false;
-    const std::vector<float> product =
-      UpstreamTransmittance(light, perSlot, this->LocalBrick, this->Boxes, slotLights[slot], tolerance, overlapping);
-    std::copy(product.begin(), product.end(), upstream.begin() + static_cast<std::ptrdiff_t>(slot * perSlot));
-    this->Overlap = this->Overlap || overlapping;
+    orders.push_back(LightOrder(this->Boxes, slotLights[slot], tolerance));
+    scan = !orders.back().empty();
   }
+  std::vector<float> upstream(this->Totals.size(), 1.0f);
+  const double start = NowMilliseconds();
+  const bool exchanged =
+    scan ? this->Scan(orders, perSlot, upstream) : this->Gather(slotLights, slots, perSlot, tolerance, upstream);
+  this->Exchanger->Account(0, 0, NowMilliseconds() - start);
+  if (!exchanged)
+  {
+    problem = "the bricks' light-space totals could not be exchanged";
+    return false;
+  }
+  this->Exchanger->SetLastScanned(scan);
   if (upstream == this->Upstream && this->Texture && this->TextureSize == this->Size &&
     this->TextureLayers == this->Layers)
   {
@@ -210,6 +230,67 @@ bool LightSpaceBricks::Exchange(vtkOpenGLRenderWindow* window, const std::vector
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   units->Free(unit);
   this->Version += 1.0;
+  return true;
+}
+
+bool LightSpaceBricks::Scan(const std::vector<std::vector<int>>& orders, size_t perSlot, std::vector<float>& upstream)
+{
+  vtkDeepShadowBrickExchange* exchanger = this->Exchanger;
+  long long bytes = 0;
+  int messages = 0;
+  const ScanMessage message = [&](int to, const std::vector<float>& send, int from, std::vector<float>& received,
+                                bool sendFirst, int tag) {
+    bytes += from >= 0 ? static_cast<long long>(received.size() * sizeof(float)) : 0;
+    messages += from >= 0 ? 1 : 0;
+    return exchanger->SendReceive(to, send, from, received, sendFirst, tag);
+  };
+  // An empty brick casts nothing, whatever its lookups read.
+  const bool empty = !this->Boxes[static_cast<size_t>(this->LocalBrick)].IsValid();
+  const int rounds = ScanRounds(static_cast<int>(this->Boxes.size()));
+  for (size_t slot = 0; slot < orders.size(); ++slot)
+  {
+    const auto from = this->Totals.begin() + static_cast<std::ptrdiff_t>(slot * perSlot);
+    const std::vector<float> local = empty ? std::vector<float>(perSlot, 1.0f) : std::vector<float>(from, from + static_cast<std::ptrdiff_t>(perSlot));
+    std::vector<float> product;
+    if (!ExclusiveProductScan(orders[slot], this->LocalBrick, local, static_cast<int>(slot) * rounds, message, product))
+    {
+      return false;
+    }
+    std::copy(product.begin(), product.end(), upstream.begin() + static_cast<std::ptrdiff_t>(slot * perSlot));
+  }
+  exchanger->Account(bytes, messages, 0.0);
+  this->Overlap = false; // the bricks had an order
+  return true;
+}
+
+bool LightSpaceBricks::Gather(const std::vector<Light>& slotLights, size_t slots, size_t perSlot, double tolerance,
+  std::vector<float>& upstream)
+{
+  std::vector<float> all;
+  const bool gathered = this->Exchanger->AllGather(this->Totals, all);
+  const size_t bricks = this->Boxes.size();
+  if (!gathered || all.size() != bricks * this->Totals.size())
+  {
+    return false;
+  }
+  this->Exchanger->Account(static_cast<long long>((bricks - 1) * this->Totals.size() * sizeof(float)),
+    static_cast<int>(bricks - 1), 0.0);
+  // Per light (slot): every brick's texels, then their product in front of ours.
+  this->Overlap = false;
+  for (size_t slot = 0; slot < slots; ++slot)
+  {
+    std::vector<float> light(bricks * perSlot);
+    for (size_t b = 0; b < bricks; ++b)
+    {
+      const float* from = all.data() + b * this->Totals.size() + slot * perSlot;
+      std::copy(from, from + perSlot, light.begin() + static_cast<std::ptrdiff_t>(b * perSlot));
+    }
+    bool overlapping = false;
+    const std::vector<float> product =
+      UpstreamTransmittance(light, perSlot, this->LocalBrick, this->Boxes, slotLights[slot], tolerance, overlapping);
+    std::copy(product.begin(), product.end(), upstream.begin() + static_cast<std::ptrdiff_t>(slot * perSlot));
+    this->Overlap = this->Overlap || overlapping;
+  }
   return true;
 }
 

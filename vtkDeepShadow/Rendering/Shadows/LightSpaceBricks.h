@@ -1,7 +1,7 @@
 // Internal: a light-space technique's side of vtkDeepShadowBrickExchange. It gathers the
 // bricks' boxes (the light faces are fitted to their union), reads back the brick's total
-// transmittance per texel, gathers every brick's, and keeps the product of those in front
-// of this brick (deepshadow::UpstreamTransmittance) in a texture that
+// transmittance per texel, and keeps the product of the totals of the bricks in front of this
+// one (scanned along each light's order of the bricks, or gathered) in a texture that
 // Shaders/Shadows/LightSpace.glsl multiplies into every lookup (LIGHT_SPACE_UPSTREAM).
 #ifndef vtkDeepShadowLightSpaceBricks_h
 #define vtkDeepShadowLightSpaceBricks_h
@@ -33,11 +33,12 @@ public:
 
   /**
    * Start of a frame (collective): gathers every brick's box with the map's shape (size,
-   * lights, channels). True if this frame exchanges: every brick then replaces `bounds`
+   * lights, channels) and a signature of its lights. True if this frame exchanges: every brick then replaces `bounds`
    * (its own casters) by the union of the bricks' boxes. False: `bounds` is left alone, and
    * `problem` says why if something is wrong (bricks that disagree on the map's shape).
    */
-  bool BeginFrame(CasterBounds& bounds, int mapSize, int lights, int channels, std::string& problem);
+  bool BeginFrame(
+    CasterBounds& bounds, int mapSize, const std::vector<Light>& slotLights, int channels, std::string& problem);
   /** Whether the current frame exchanges (the lookup then multiplies the upstream texture). */
   bool Exchanging() const { return this->Active; }
   /** Whether the bricks' union changed at the last BeginFrame (the maps must be rebuilt). */
@@ -49,8 +50,9 @@ public:
    */
   void ReadTotals(vtkOpenGLRenderWindow* window, unsigned int totals, int size, int layers, int channels);
   /**
-   * Collective: gathers the totals, multiplies per light (slot) those of the bricks in front,
-   * and uploads the product when it changed. False (and `problem`) if the exchange failed.
+   * Collective: multiplies per light (slot) the totals of the bricks in front, scanned or
+   * gathered, and uploads the product when it changed. False (and `problem`) if the exchange
+   * failed.
    */
   bool Exchange(vtkOpenGLRenderWindow* window, const std::vector<Light>& slotLights, int facesPerLight,
     std::string& problem);
@@ -65,10 +67,16 @@ public:
   void Release();
 
 private:
+  // The two ways to the product; `upstream` holds every slot's.
+  bool Scan(const std::vector<std::vector<int>>& orders, size_t perSlot, std::vector<float>& upstream);
+  bool Gather(const std::vector<Light>& slotLights, size_t slots, size_t perSlot, double tolerance,
+    std::vector<float>& upstream);
+
   vtkSmartPointer<vtkDeepShadowBrickExchange> Exchanger;
   bool Active = false;
   bool UnionMoved = false;
   bool Overlap = false;
+  bool LightsAgree = false;
   int LocalBrick = 0;
   std::vector<BrickBox> Boxes;
   BrickBox LastUnion;

@@ -88,6 +88,17 @@ int BytesPerTexel(unsigned int format)
       return 16;
   }
 }
+
+// The lights of the technique's slots, in slot order.
+std::vector<deepshadow::Light> SlotLights(const deepshadow::ShadowContext& context, const deepshadow::ShadowSlots& slots)
+{
+  std::vector<deepshadow::Light> lights;
+  for (int slot = 0; slot < slots.Count(); ++slot)
+  {
+    lights.push_back(context.Lights[static_cast<size_t>(slots.Light(slot))]);
+  }
+  return lights;
+}
 }
 
 vtkDeepShadowLightSpaceTechnique::vtkDeepShadowLightSpaceTechnique()
@@ -150,7 +161,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   // With other bricks, every brick's faces see the union of their boxes (collective).
   std::string problem;
   const bool exchanging = maps.Bricks.BeginFrame(
-    bounds, self->MapSize, slots.Count(), self->GetParameters().IsColored() ? 3 : 1, problem);
+    bounds, self->MapSize, SlotLights(context, slots), self->GetParameters().IsColored() ? 3 : 1, problem);
   if (problem != maps.BrickProblem && !problem.empty())
   {
     vtkWarningWithObjectMacro(self, << "shadows are not shared between bricks: " << problem);
@@ -402,13 +413,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
     self->LastPasses.emplace_back("light-space-totals");
     maps.Bricks.ReadTotals(context.Window, maps.Totals, self->MapSize, layers, channels);
   }
-  std::vector<deepshadow::Light> slotLights;
-  for (int slot = 0; slot < slots.Count(); ++slot)
-  {
-    slotLights.push_back(context.Lights[static_cast<size_t>(slots.Light(slot))]);
-  }
   std::string problem;
-  if (!maps.Bricks.Exchange(context.Window, slotLights, maps.FacesPerLight, problem))
+  if (!maps.Bricks.Exchange(context.Window, SlotLights(context, slots), maps.FacesPerLight, problem))
   {
     self->LastError = problem;
     return false;

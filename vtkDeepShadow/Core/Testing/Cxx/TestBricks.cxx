@@ -5,6 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <random>
+#include <thread>
+#include <tuple>
 
 using namespace deepshadow;
 
@@ -26,6 +32,77 @@ Light Positional(const glm::dvec3& at)
   light.Position = at;
   return light;
 }
+
+// A kd partition of the box [0, 4]^3 into `bricks` boxes (as ParaView's ordered compositing
+// cuts a volume): the largest box is split across its longest axis at a random place.
+std::vector<BrickBox> KdBricks(int bricks, std::mt19937& random)
+{
+  std::vector<BrickBox> boxes{ BrickBox{ glm::dvec3(0.0), glm::dvec3(4.0) } };
+  std::uniform_real_distribution<double> where(0.3, 0.7);
+  while (static_cast<int>(boxes.size()) < bricks)
+  {
+    auto largest = std::max_element(boxes.begin(), boxes.end(), [](const BrickBox& a, const BrickBox& b) {
+      const glm::dvec3 da = a.Max - a.Min, db = b.Max - b.Min;
+      return da.x * da.y * da.z < db.x * db.y * db.z;
+    });
+    const glm::dvec3 size = largest->Max - largest->Min;
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    BrickBox high = *largest;
+    const double cut = largest->Min[axis] + where(random) * size[axis];
+    largest->Max[axis] = cut;
+    high.Min[axis] = cut;
+    boxes.push_back(high);
+  }
+  return boxes;
+}
+
+// Messages between threads, one per brick, as MPI's blocking send and receive behave: a
+// send waits until its receiver has taken it.
+class Mailboxes
+{
+public:
+  bool Message(int self, int to, const std::vector<float>& send, int from, std::vector<float>& received,
+    bool sendFirst, int tag)
+  {
+    if (sendFirst && to >= 0)
+    {
+      this->Send(self, to, tag, send);
+    }
+    if (from >= 0)
+    {
+      this->Receive(from, self, tag, received);
+    }
+    if (!sendFirst && to >= 0)
+    {
+      this->Send(self, to, tag, send);
+    }
+    return true;
+  }
+  std::map<int, long long> ReceivedValues; // by brick
+
+private:
+  void Send(int from, int to, int tag, const std::vector<float>& values)
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const auto key = std::make_tuple(from, to, tag);
+    this->Posted[key] = values;
+    this->Changed.notify_all();
+    this->Changed.wait(lock, [&] { return this->Posted.count(key) == 0; });
+  }
+  void Receive(int from, int to, int tag, std::vector<float>& values)
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const auto key = std::make_tuple(from, to, tag);
+    this->Changed.wait(lock, [&] { return this->Posted.count(key) != 0; });
+    values = this->Posted[key];
+    this->Posted.erase(key);
+    this->ReceivedValues[to] += static_cast<long long>(values.size());
+    this->Changed.notify_all();
+  }
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  std::map<std::tuple<int, int, int>, std::vector<float>> Posted;
+};
 
 // Two bricks sharing the face z = 0: below [0,1]^2 x [-1, 0], above [0,1]^2 x [0, 1].
 const BrickBox Below{ { 0.0, 0.0, -1.0 }, { 1.0, 1.0, 0.0 } };
@@ -96,4 +173,133 @@ TEST(Bricks, UnionIgnoresMissingBricks)
   EXPECT_EQ(both.Min, glm::dvec3(0.0, 0.0, -1.0));
   EXPECT_EQ(both.Max, glm::dvec3(1.0, 1.0, 1.0));
   EXPECT_FALSE(BrickBox{}.IsValid());
+}
+
+// Where a ray origin + t direction (t > 0) is inside `box`: [enter, leave], empty if enter >= leave.
+std::pair<double, double> Crossing(const glm::dvec3& origin, const glm::dvec3& direction, const BrickBox& box)
+{
+  double enter = 0.0, leave = 1e300;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (direction[axis] == 0.0)
+    {
+      if (origin[axis] < box.Min[axis] || origin[axis] > box.Max[axis])
+      {
+        return { 0.0, 0.0 };
+      }
+      continue;
+    }
+    double a = (box.Min[axis] - origin[axis]) / direction[axis];
+    double b = (box.Max[axis] - origin[axis]) / direction[axis];
+    enter = std::max(enter, std::min(a, b));
+    leave = std::min(leave, std::max(a, b));
+  }
+  return { enter, leave };
+}
+
+TEST(Bricks, ScanAndGatherAreBeerLambertAlongEveryRay)
+{
+  // A homogeneous medium cut into a kd partition of bricks, each brick a thread. A light
+  // texel is a ray: a brick's total there is exp(-sigma x its length in the brick). Along
+  // every ray, what a brick it crosses receives must be exp(-sigma x the length before it):
+  // from the gather (UpstreamTransmittance) and from the scan along LightOrder, whose every
+  // brick receives at most ceil(log2 bricks) messages.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double sigma = 0.4;
+  const int rays = 64;
+  for (int bricks : { 1, 2, 3, 5, 8, 13, 32 })
+  {
+    const std::vector<BrickBox> boxes = KdBricks(bricks, random);
+    for (int trial = 0; trial < 6; ++trial)
+    {
+      const glm::dvec3 v(unit(random), unit(random), unit(random));
+      const bool positional = trial % 2 == 0;
+      // A positional light inside the volume on every other such trial.
+      const Light light = positional ? Positional(2.0 + (trial % 4 ? 1.2 : 4.0) * v) : Directional(v);
+      std::vector<glm::dvec3> origins, directions;
+      for (int r = 0; r < rays; ++r)
+      {
+        const glm::dvec3 target(2.0 + 2.0 * unit(random), 2.0 + 2.0 * unit(random), 2.0 + 2.0 * unit(random));
+        const glm::dvec3 direction =
+          positional ? glm::normalize(target - light.Position) : glm::normalize(light.FocalPoint - light.Position);
+        origins.push_back(positional ? light.Position : target - 100.0 * direction);
+        directions.push_back(direction);
+      }
+      std::vector<float> totals(static_cast<size_t>(rays * bricks));
+      std::vector<std::pair<double, double>> crossings(totals.size());
+      for (int b = 0; b < bricks; ++b)
+      {
+        for (int r = 0; r < rays; ++r)
+        {
+          const auto c = Crossing(origins[r], directions[r], boxes[b]);
+          crossings[b * rays + r] = c;
+          totals[b * rays + r] = static_cast<float>(std::exp(-sigma * std::max(0.0, c.second - c.first)));
+        }
+      }
+      const std::vector<int> order = LightOrder(boxes, light, 1e-9);
+      ASSERT_EQ(order.size(), boxes.size()) << bricks << " bricks: no order";
+      Mailboxes mail;
+      std::vector<std::vector<float>> scanned(static_cast<size_t>(bricks));
+      std::vector<int> succeeded(static_cast<size_t>(bricks), 0);
+      std::vector<std::thread> threads;
+      for (int b = 0; b < bricks; ++b)
+      {
+        threads.emplace_back([&, b] {
+          const std::vector<float> local(totals.begin() + b * rays, totals.begin() + (b + 1) * rays);
+          const ScanMessage message = [&mail, b](int to, const std::vector<float>& send, int from,
+                                        std::vector<float>& received, bool sendFirst, int tag) {
+            return mail.Message(b, to, send, from, received, sendFirst, tag);
+          };
+          succeeded[static_cast<size_t>(b)] =
+            ExclusiveProductScan(order, b, local, 100, message, scanned[static_cast<size_t>(b)]) ? 1 : 0;
+        });
+      }
+      for (std::thread& thread : threads)
+      {
+        thread.join();
+      }
+      int checked = 0;
+      for (int b = 0; b < bricks; ++b)
+      {
+        ASSERT_TRUE(succeeded[static_cast<size_t>(b)]);
+        bool overlapping = false;
+        const std::vector<float> gathered = UpstreamTransmittance(totals, rays, b, boxes, light, 1e-9, overlapping);
+        EXPECT_LE(mail.ReceivedValues[b], static_cast<long long>(ScanRounds(bricks) * rays));
+        for (int r = 0; r < rays; ++r)
+        {
+          const auto mine = crossings[b * rays + r];
+          if (mine.second - mine.first < 1e-6)
+          {
+            continue; // this ray does not light the brick
+          }
+          double before = 0.0;
+          for (int other = 0; other < bricks; ++other)
+          {
+            const auto c = crossings[other * rays + r];
+            before += other != b && c.second - c.first > 0.0 && c.second <= mine.first + 1e-9 ? c.second - c.first : 0.0;
+          }
+          const double expected = std::exp(-sigma * before);
+          EXPECT_NEAR(scanned[static_cast<size_t>(b)][r], expected, 1e-5)
+            << bricks << " bricks, brick " << b << ", ray " << r << (positional ? " positional" : "");
+          EXPECT_NEAR(gathered[r], expected, 1e-5) << bricks << " bricks, brick " << b << ", ray " << r;
+          ++checked;
+        }
+      }
+      EXPECT_GE(checked, rays); // every ray lights some brick
+    }
+  }
+  EXPECT_EQ(ScanRounds(1), 0);
+  EXPECT_EQ(ScanRounds(2), 1);
+  EXPECT_EQ(ScanRounds(8), 3);
+  EXPECT_EQ(ScanRounds(1024), 10);
+}
+
+TEST(Bricks, OverlappingBricksHaveNoLightOrder)
+{
+  const BrickBox ghost{ { 0.0, 0.0, -1.0 }, { 1.0, 1.0, 0.1 } };
+  EXPECT_TRUE(LightOrder({ ghost, Above }, Directional({ 0.0, 0.0, -1.0 }), 1e-6).empty());
+  // Sharing a face within the tolerance, an empty brick last.
+  const std::vector<int> order = LightOrder({ Below, BrickBox{}, Above }, Directional({ 0.0, 0.0, -1.0 }), 1e-6);
+  EXPECT_EQ(order, (std::vector<int>{ 2, 0, 1 }));
 }

@@ -9,7 +9,8 @@
 // RMSE 0.0031 at step 0.25) + 1/255 (2/255 for the binary shadow map; measured 0.0033 to
 // 0.0055); the same without the exchange must fail (0.045 to 0.062: the floor is lit); the
 // floor under the ball darkens; what the exchange moved is counted. A frame with nothing
-// changed rebuilds nothing and moves the same bytes.
+// changed rebuilds nothing and moves the same bytes. The totals are scanned along the light
+// (vtkDeepShadowBrickExchange::SendReceive); gathered instead, the picture is the same.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowBrickExchange.h"
 #include "vtkDeepShadowLightSpaceTechnique.h"
@@ -21,6 +22,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <tuple>
 
 using deepshadow::testing::Check;
 using deepshadow::testing::Grab;
@@ -29,16 +31,18 @@ using deepshadow::testing::WithinTolerance;
 
 namespace
 {
-// What every brick last sent, by kind: the frame's first gather (box and shape, 9 values)
-// and the totals.
+// What every brick last sent, by kind: the frame's first gather (box, shape and lights, 10
+// values), the totals, and the scan's messages (by sender, receiver and tag).
 struct Store
 {
   std::map<int, std::vector<float>> Boxes;
   std::map<int, std::vector<float>> Totals;
+  std::map<std::tuple<int, int, int>, std::vector<float>> Messages;
 };
 
-// An exchange within one process: a brick's gather returns what the others last sent, and
-// for a brick that has not drawn yet what it would send with nothing: no box, totals of 1.
+// An exchange within one process: a brick's gather, or a message it receives, is what the
+// others last sent, and for a brick that has not drawn yet what it would send with nothing:
+// no box, totals of 1.
 class InProcessExchange : public vtkDeepShadowBrickExchange
 {
 public:
@@ -52,7 +56,7 @@ public:
   int GetLocalBrick() override { return this->Brick; }
   bool AllGather(const std::vector<float>& local, std::vector<float>& all) override
   {
-    const bool box = local.size() == 9;
+    const bool box = local.size() == 10;
     auto& posted = box ? this->Shared->Boxes : this->Shared->Totals;
     posted[this->Brick] = local;
     all.clear();
@@ -71,6 +75,26 @@ public:
       else
       {
         all.insert(all.end(), local.size(), 1.0f);
+      }
+    }
+    return true;
+  }
+  bool CanSendReceive() override { return true; }
+  bool SendReceive(int to, const std::vector<float>& send, int from, std::vector<float>& received, bool,
+    int tag) override
+  {
+    if (to >= 0)
+    {
+      this->Shared->Messages[std::make_tuple(this->Brick, to, tag)] = send;
+    }
+    if (from >= 0)
+    {
+      auto found = this->Shared->Messages.find(std::make_tuple(from, this->Brick, tag));
+      const bool sent = found != this->Shared->Messages.end() && found->second.size() == received.size();
+      std::fill(received.begin(), received.end(), 1.0f);
+      if (sent)
+      {
+        received = found->second;
       }
     }
     return true;
@@ -191,6 +215,21 @@ int TestBricksShareShadows(int, char*[])
            lowerTechnique->GetBuildCount() + upperTechnique->GetBuildCount() == builds) && ok;
     ok = Check((what + ": an unchanged frame gathers the same bytes").c_str(),
            lowerExchange->GetLastBytes() == bytes && bytes > 0) && ok;
+
+    // The totals were scanned along the light (the upper brick first: it receives nothing);
+    // gathered instead, the picture is the same.
+    ok = Check((what + ": scanned, the upper brick first").c_str(),
+           lowerExchange->GetLastScanned() && upperExchange->GetLastScanned() &&
+             lowerExchange->GetLastMessages() == 2 && upperExchange->GetLastMessages() == 1) && ok;
+    lowerExchange->ScanOff();
+    upperExchange->ScanOff();
+    scene.Window->Render(); // the lower brick has not seen the upper one's gathered totals yet
+    scene.Window->Render();
+    const deepshadow::Image gathered = Grab(scene.Window);
+    std::printf("%s: gathered, the lower brick received %lld bytes in %d messages\n", name,
+      lowerExchange->GetLastBytes(), lowerExchange->GetLastMessages());
+    ok = Check((what + ": gathered instead of scanned, the same picture").c_str(),
+           !lowerExchange->GetLastScanned() && deepshadow::Compare(gathered, shared, 0.0).RMSE == 0.0) && ok;
   }
 
   // Bricks that overlap (a ghost layer) have no order: each casts no shadow on the other,
