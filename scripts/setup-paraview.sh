@@ -7,6 +7,8 @@
 #     prefix, $DEEPSHADOW_PVSDK (default /opt/deepshadow-pvsdk), never installed; the SDK's
 #     CMake targets find their libraries relative to it, so the runtime's files are linked in;
 #   - Xvfb and Open MPI (Debian's pvbatch needs an X server, even offscreen);
+#   - Qt 5's development files: the plugin's Properties-panel editors build against
+#     ParaView's pqComponents;
 #   - $DEEPSHADOW_PVSDK/env.sh, to source before cmake, pvbatch or mpirun.
 set -euo pipefail
 sdk=${DEEPSHADOW_PVSDK:-/opt/deepshadow-pvsdk}
@@ -15,7 +17,8 @@ sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 
 packages=(paraview xvfb openmpi-bin libopenmpi-dev python3-dev python3-numpy
-  imagemagick) # import: the GUI test's screenshot of the whole screen
+  imagemagick # import: the GUI test's screenshot of the whole screen
+  qtbase5-dev qttools5-dev libqt5opengl5-dev) # the Properties panel's editors (pqComponents)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

@@ -1,7 +1,9 @@
 """Run by the paraview GUI (--script): loads the DeepShadow plugin as Tools > Manage Plugins
 would, shows a Wavelet as a "Shadowed Volume" above a Plane shown as "Shadowed Surface", and
 writes what the application sees to the file named by DEEPSHADOW_GUI_REPORT: the
-representations and the volume's shadow properties."""
+representations and the volume's shadow properties. With DEEPSHADOW_GUI_SHOW=panel the volume
+is selected instead, with a cached technique and a parameter, so that its Properties panel
+shows the technique menu and the parameter form."""
 import os
 
 from paraview.simple import (ColorBy, GetOpacityTransferFunction, LoadPlugin, Plane, Render, ResetCamera,
@@ -19,7 +21,11 @@ display.ShadowTechnique = "dsm"
 ground = Plane(Origin=[-20, -11, -20], Point1=[20, -11, -20], Point2=[-20, -11, 20])
 surface = Show(ground)
 surface.Representation = "Shadowed Surface"
-SetActiveSource(ground)
+panel = os.environ.get("DEEPSHADOW_GUI_SHOW") == "panel"
+if panel:
+    display.ShadowTechnique = "dsm-cached"
+    display.ShadowParameters = "epsilon=0.05"
+SetActiveSource(wavelet if panel else ground)
 ResetCamera()
 Render()
 with open(os.environ["DEEPSHADOW_GUI_REPORT"], "w") as report:
@@ -27,3 +33,4 @@ with open(os.environ["DEEPSHADOW_GUI_REPORT"], "w") as report:
     report.write(f"technique {display.ShadowTechnique}\n")
     report.write(f"lights {display.ShadowLights}\n")
     report.write(f"surface {surface.Representation}\n")
+    report.write(f"parameters '{display.ShadowParameters}'\n")

@@ -2,7 +2,7 @@
 # The ParaView tests (ctest label "paraview"): pvbatch with the DeepShadow plugin, one MPI
 # rank and two, under a private Xvfb. Exit 77 (skipped) when the plugin is not built
 # (scripts/build-paraview-plugin.sh builds it; scripts/test.sh does so first).
-#   run.sh SOURCE_DIR OUT_DIR plugin|ranks|gui
+#   run.sh SOURCE_DIR OUT_DIR plugin|ranks|gui|panel
 set -euo pipefail
 source_dir=$1
 out=$2
@@ -18,6 +18,7 @@ compare() { env -u PYTHONPATH /usr/bin/python3 "$here/compare.py" "$@"; }
 mkdir -p "$out"
 
 # shellcheck source=xvfb.sh
+[ "$what" = panel ] && export DEEPSHADOW_XVFB_SCREEN=1024x2200
 . "$here/xvfb.sh"
 trap 'kill $xvfb 2>/dev/null || true' EXIT
 
@@ -101,20 +102,22 @@ trap 'kill $xvfb 2>/dev/null || true' EXIT
       echo "two ranks with a Shadowed Surface: said $said time(s)"
       [ "$said" = 1 ] || { echo "not said once: FAILED"; exit 1; }
       ;;
-    gui)
+    gui | panel)
       # The desktop application, in a home of its own (no welcome dialog, nothing left in
-      # the user's settings): it runs gui.py, then the whole screen is captured.
+      # the user's settings): it runs gui.py, then the whole screen is captured. "panel":
+      # the volume selected, on a screen tall enough for its whole Properties panel.
       export HOME="$out/home" XDG_RUNTIME_DIR="$out/runtime"
       mkdir -p "$HOME/.config/ParaView" "$XDG_RUNTIME_DIR"
       chmod 700 "$XDG_RUNTIME_DIR"
       printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' > "$HOME/.config/ParaView/ParaView5.11.0.ini"
+      [ "$what" = panel ] && printf '[MainWindow]\nSize=@Size(1024 2200)\n' >> "$HOME/.config/ParaView/ParaView5.11.0.ini"
       rm -f "$out/gui-report.txt"
-      DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" DEEPSHADOW_GUI_REPORT="$out/gui-report.txt" \
+      DEEPSHADOW_PARAVIEW_PLUGIN="$plugin" DEEPSHADOW_GUI_REPORT="$out/gui-report.txt" DEEPSHADOW_GUI_SHOW="$what" \
         timeout -k 5 120 paraview --script="$here/gui.py" > "$out/paraview.log" 2>&1 &
       gui=$!
       for _ in $(seq 600); do [ -s "$out/gui-report.txt" ] && break; sleep 0.1; done
       sleep 3 # the first frame drawn
-      import -window root "$out/gui.png"
+      import -window root "$out/$what.png"
       kill "$gui" 2>/dev/null || true
       wait "$gui" 2>/dev/null || true
       ;;
@@ -218,5 +221,14 @@ case "$what" in
       grep -q "^surface 'Shadowed Surface'$" "$out/gui-report.txt" ||
       { echo "the GUI did not show a Shadowed Volume and a Shadowed Surface: FAILED"; exit 1; }
     compare drawn "$out/gui.png" 0.3
+    ;;
+  panel)
+    cat "$out/gui-report.txt" 2>/dev/null || true
+    grep -q "^technique 'dsm-cached'$" "$out/gui-report.txt" &&
+      grep -q "^parameters 'epsilon=0.05'$" "$out/gui-report.txt" ||
+      { echo "the GUI did not take the technique and parameters: FAILED"; exit 1; }
+    grep -q "pqDeepShadow" "$out/paraview.log" &&
+      { echo "the panel's editors complained (paraview.log): FAILED"; exit 1; }
+    compare drawn "$out/panel.png" 0.3
     ;;
 esac

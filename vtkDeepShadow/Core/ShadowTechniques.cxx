@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -273,6 +274,35 @@ double DeepShadowMapError(const ShadowParameters& p, const StatedErrorCase&)
   return p.Epsilon * std::max(1, p.Clusters);
 }
 
+// What a menu shows (ParaView's technique list): a label and the group it is listed under.
+void LabelTechniques(std::vector<ShadowTechniqueInfo>& list)
+{
+  static const std::map<std::string, std::pair<const char*, const char*>> labels{
+    { "none", { "", "No shadows" } },
+    { "rays", { "Exact", "Shadow rays" } },
+    { "rays-opaque", { "Exact", "Shadow rays, opaque occluders" } },
+    { "rays-color", { "Exact", "Shadow rays, coloured" } },
+    { "shadowmap", { "Maps", "Shadow map" } },
+    { "rmsm", { "Maps", "Resolution-matched shadow map" } },
+    { "dsm", { "Deep maps", "Deep shadow map" } },
+    { "dsm-color", { "Deep maps", "Deep shadow map, coloured" } },
+    { "dsm-clustered", { "Deep maps", "Deep shadow maps, clustered" } },
+    { "dsm-fixed", { "Deep maps", "Deep shadow map, fixed budget" } },
+    { "dsm3", { "Approximate", "Opacity levels" } },
+    { "fom", { "Approximate", "Fourier opacity map" } },
+    { "avsm", { "Approximate", "Adaptive volumetric shadow map" } },
+    { "slices", { "Approximate", "Uniform opacity slices" } },
+    { "moments", { "Approximate", "Power-moment transmittance" } },
+    { "cssm", { "Approximate", "Coloured stochastic shadow map" } },
+  };
+  for (ShadowTechniqueInfo& technique : list)
+  {
+    const auto found = labels.find(technique.Name);
+    technique.Group = found != labels.end() ? found->second.first : "Approximate";
+    technique.Label = found != labels.end() ? found->second.second : technique.Name;
+  }
+}
+
 // The techniques, in the order the tool lists them. A technique is one entry here (and its
 // GPU class, which registers itself with vtkDeepShadowTechniqueFactory under the same kind).
 std::vector<ShadowTechniqueInfo> MakeTechniques()
@@ -464,6 +494,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     return 4 * static_cast<std::uint64_t>(layout.AtlasSize) * layout.AtlasSize + 4 * cells * faces;
   };
   list.push_back(rmsm);
+  LabelTechniques(list);
   return list;
 }
 }
@@ -708,6 +739,23 @@ std::vector<std::string> ShadowTechniqueNames()
     }
   }
   return names;
+}
+
+const std::vector<std::string>& ShadowTechniqueGroups()
+{
+  static const std::vector<std::string> groups{ "Exact", "Maps", "Deep maps", "Approximate" };
+  return groups;
+}
+
+std::string ShadowTechniqueLabel(const std::string& name)
+{
+  bool cached = false;
+  const ShadowTechniqueInfo* technique = FindShadowTechnique(name, &cached);
+  if (!technique)
+  {
+    return "";
+  }
+  return technique->Label + (cached ? ", cached" : "") + " (" + name + ")";
 }
 
 }

@@ -75,6 +75,8 @@ struct VTKDEEPSHADOWCORE_EXPORT ShadowTechniqueInfo
 {
   std::string Name;    // none, rays, rays-opaque, ..., without "-cached"
   std::string Summary; // --help: what it is
+  std::string Label;   // what a menu shows: "Deep shadow map"
+  std::string Group;   // a menu's heading: "Exact", "Maps", "Deep maps", "Approximate"
   ShadowKind Kind = ShadowKind::None;
   bool Opaque = false;
   bool Colored = false;
@@ -143,6 +145,10 @@ VTKDEEPSHADOWCORE_EXPORT const ShadowTechniqueInfo& ShadowTechniqueOf(const Shad
 VTKDEEPSHADOWCORE_EXPORT const ShadowParameterInfo* FindShadowParameter(const std::string& key);
 /** Every name the tool accepts: none, then each technique and its -cached variant. */
 VTKDEEPSHADOWCORE_EXPORT std::vector<std::string> ShadowTechniqueNames();
+/** The menu headings of ShadowTechniqueInfo::Group, in menu order. */
+VTKDEEPSHADOWCORE_EXPORT const std::vector<std::string>& ShadowTechniqueGroups();
+/** What a menu shows for `name`: "Deep shadow map, cached (dsm-cached)"; empty if unknown. */
+VTKDEEPSHADOWCORE_EXPORT std::string ShadowTechniqueLabel(const std::string& name);
 
 }
 #endif

@@ -1,5 +1,6 @@
 #include "vtkDeepShadowVolumeRepresentation.h"
 
+#include "Core/ShadowParameterText.h"
 #include "Core/ShadowTechniques.h"
 #include "PassFrame.h"
 #include "vtkDeepShadowBrickExchange.h"
@@ -137,7 +138,7 @@ void vtkDeepShadowVolumeRepresentation::SetShadowTechnique(const char* name)
   if (text != this->TechniqueName)
   {
     this->TechniqueName = text;
-    this->ApplyTechnique();
+    this->TechniqueChanged = true;
     this->Modified();
   }
 }
@@ -148,7 +149,7 @@ void vtkDeepShadowVolumeRepresentation::SetShadowParameters(const char* text)
   if (value != this->ParameterText)
   {
     this->ParameterText = value;
-    this->ApplyTechnique();
+    this->TechniqueChanged = true;
     this->Modified();
   }
 }
@@ -167,36 +168,14 @@ bool vtkDeepShadowVolumeRepresentation::ApplyTechnique()
   if (technique)
   {
     parameters = technique->DefaultParameters(cached);
-    // KEY=VALUE pairs, separated by spaces or commas (a value's own commas, as in
-    // levels=0.1,0.5,0.9, stay with it: a piece without '=' continues the previous value).
-    std::string text = this->ParameterText;
-    for (char& c : text)
-    {
-      c = c == '\t' || c == '\n' ? ' ' : c;
-    }
-    std::istringstream words(text);
-    std::string word;
     std::vector<std::pair<std::string, std::string>> pairs;
-    while (words >> word)
+    try
     {
-      std::istringstream pieces(word);
-      std::string piece;
-      while (std::getline(pieces, piece, ','))
-      {
-        const size_t equals = piece.find('=');
-        if (equals != std::string::npos)
-        {
-          pairs.emplace_back(piece.substr(0, equals), piece.substr(equals + 1));
-        }
-        else if (!pairs.empty() && !piece.empty())
-        {
-          pairs.back().second += "," + piece;
-        }
-        else if (!piece.empty())
-        {
-          this->Error = "shadow parameter '" + piece + "' has no value (KEY=VALUE)";
-        }
-      }
+      pairs = deepshadow::SplitShadowParameterText(this->ParameterText);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      this->Error = e.what();
     }
     for (const auto& [key, value] : pairs)
     {
@@ -363,6 +342,13 @@ int vtkDeepShadowVolumeRepresentation::ProcessViewRequest(
   if (request == vtkPVView::REQUEST_RENDER())
   {
     this->GatherExchangeStatistics();
+    // The technique and its parameters are checked together, once both are set: the panel
+    // sets the technique, then drops the parameters the new one does not read.
+    if (this->TechniqueChanged)
+    {
+      this->TechniqueChanged = false;
+      this->ApplyTechnique();
+    }
     this->ChooseShadowLights();
     this->ShareShadowsAcrossRanks();
     this->UpdateGround();

@@ -32,17 +32,18 @@ public:
 
   /**
    * The shadow technique by registry name: "none", "dsm" (the default), "rays",
-   * "dsm-color-cached", ... (deepshadow::ShadowTechniqueNames()). An unknown name is one
-   * error; the technique in use stays.
+   * "dsm-color-cached", ... (deepshadow::ShadowTechniqueNames()). Applied with the
+   * parameters at the next render, so that the two can change together: an unknown name is
+   * one error then; the technique in use stays.
    */
   void SetShadowTechnique(const char* name);
   const char* GetShadowTechnique() const { return this->TechniqueName.c_str(); }
 
   /**
    * The technique's parameters as KEY=VALUE pairs separated by spaces or commas, with the
-   * tool's keys and ranges ("epsilon=0.01 mapsize=1024"); empty: the technique's defaults. A
-   * key the technique does not read, or a value out of range, is one error naming it; the
-   * technique in use stays.
+   * tool's keys and ranges ("epsilon=0.01 shadow-map-size=1024"); empty: the technique's
+   * defaults. A key the technique does not read, or a value out of range, is one error naming
+   * it at the next render; the technique in use stays.
    */
   void SetShadowParameters(const char* text);
   const char* GetShadowParameters() const { return this->ParameterText.c_str(); }
@@ -164,6 +165,7 @@ private:
   vtkRenderer* Renderer = nullptr; // the view's, while the representation is in one
   std::string TechniqueName = "dsm";
   std::string ParameterText;
+  bool TechniqueChanged = false; // applied at the next render (ApplyTechnique)
   std::string Error;
   std::string StatisticsText; // GetShadowStatistics()'s
 };

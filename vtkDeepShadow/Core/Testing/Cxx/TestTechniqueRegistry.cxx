@@ -1,11 +1,13 @@
-// The technique registry (ShadowTechniques.h): names, defaults and ranges agree with each
+// The technique registry (ShadowTechniques.h): names, labels, defaults and ranges agree with each
 // other and with ShadowParameters, so that the tool, Validate() and the twins read one table.
+#include "Core/ShadowParameterText.h"
 #include "Core/ShadowTechniques.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 
 using namespace deepshadow;
 
@@ -70,4 +72,37 @@ TEST(TechniqueRegistry, OneRangeRefusesWhatTheToolRefuses)
   EXPECT_EQ(FindShadowParameter("cssm-offsets")->Check({ 9.0 }), "cssm-offsets must be 7, 13 or 21");
   EXPECT_EQ(FindShadowParameter("pcf")->Parse("poisson"), std::vector<double>{ 3.0 });
   EXPECT_EQ(FindShadowParameter("bias")->Check({ -1.0 }), "bias must not be negative");
+}
+
+TEST(TechniqueRegistry, EveryTechniqueHasAMenuLabelAndGroup)
+{
+  const auto& groups = deepshadow::ShadowTechniqueGroups();
+  for (const deepshadow::ShadowTechniqueInfo& technique : deepshadow::ShadowTechniques())
+  {
+    EXPECT_FALSE(technique.Label.empty()) << technique.Name;
+    if (technique.Kind == deepshadow::ShadowKind::None)
+    {
+      EXPECT_TRUE(technique.Group.empty());
+      continue;
+    }
+    EXPECT_NE(std::find(groups.begin(), groups.end(), technique.Group), groups.end()) << technique.Name;
+    EXPECT_NE(technique.Label, technique.Name) << technique.Name << ": no label of its own";
+  }
+  EXPECT_EQ(deepshadow::ShadowTechniqueLabel("dsm"), "Deep shadow map (dsm)");
+  EXPECT_EQ(deepshadow::ShadowTechniqueLabel("dsm-cached"), "Deep shadow map, cached (dsm-cached)");
+  EXPECT_EQ(deepshadow::ShadowTechniqueLabel("none-cached"), "");
+  EXPECT_EQ(deepshadow::ShadowTechniqueLabel("nope"), "");
+}
+
+TEST(TechniqueRegistry, ParameterTextSplitsAndEditsPairs)
+{
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(deepshadow::SplitShadowParameterText("epsilon=0.01, shadow-map-size=1024\topacity-levels=0.1,0.5,0.9"),
+    (Pairs{ { "epsilon", "0.01" }, { "shadow-map-size", "1024" }, { "opacity-levels", "0.1,0.5,0.9" } }));
+  EXPECT_TRUE(deepshadow::SplitShadowParameterText("  ").empty());
+  EXPECT_THROW(deepshadow::SplitShadowParameterText("0.5 epsilon=1"), std::invalid_argument);
+  EXPECT_EQ(deepshadow::SetShadowParameterInText("epsilon=0.01,layers=4", "layers", "8"), "epsilon=0.01 layers=8");
+  EXPECT_EQ(deepshadow::SetShadowParameterInText("epsilon=0.01", "layers", "8"), "epsilon=0.01 layers=8");
+  EXPECT_EQ(deepshadow::SetShadowParameterInText("epsilon=0.01 layers=8", "epsilon", ""), "layers=8");
+  EXPECT_EQ(deepshadow::SetShadowParameterInText("", "pcf", "3x3"), "pcf=3x3");
 }
