@@ -144,10 +144,16 @@ bool AppendInLightOrder(const std::vector<BrickBox>& boxes, const std::vector<in
       {
         continue;
       }
-      // Rays parallel to the plane, or from a light on it, cross no brick of both sides.
+      // Rays parallel to the plane, or from a light on it, cross no brick of both sides: a
+      // prefix product would still multiply one side's totals into the other's texels that
+      // straddle the plane, which the gather leaves out (UpstreamTransmittance): no order.
       const double lightBelow =
         light.Positional ? plane - light.Position[axis] : light.FocalPoint[axis] - light.Position[axis];
-      const bool lowFirst = lightBelow >= 0.0;
+      if (lightBelow == 0.0)
+      {
+        return false;
+      }
+      const bool lowFirst = lightBelow > 0.0;
       return AppendInLightOrder(boxes, lowFirst ? low : high, light, tolerance, order) &&
         AppendInLightOrder(boxes, lowFirst ? high : low, light, tolerance, order);
     }

@@ -67,7 +67,8 @@ VTKDEEPSHADOWCORE_EXPORT std::vector<float> UpstreamTransmittance(const std::vec
  * axis plane that no box straddles splits them, recursively; a kd partition always has one,
  * whereas choosing any separating plane per pair, as OrderTowardLight does, can make cycles
  * between bricks no ray crosses together). Empty when no such tree exists (overlapping
- * bricks, a pinwheel): the bricks then gather instead. Invalid boxes (empty ranks) come last.
+ * bricks, a pinwheel) or a plane of it is parallel to the light's rays (a light along an
+ * axis): the bricks then gather instead. Invalid boxes (empty ranks) come last.
  */
 VTKDEEPSHADOWCORE_EXPORT std::vector<int> LightOrder(
   const std::vector<BrickBox>& boxes, const Light& light, double tolerance);

@@ -295,10 +295,15 @@ TEST(Bricks, ScanAndGatherAreBeerLambertAlongEveryRay)
   EXPECT_EQ(ScanRounds(1024), 10);
 }
 
-TEST(Bricks, OverlappingBricksHaveNoLightOrder)
+TEST(Bricks, OverlappingOrParallelBricksHaveNoLightOrder)
 {
   const BrickBox ghost{ { 0.0, 0.0, -1.0 }, { 1.0, 1.0, 0.1 } };
   EXPECT_TRUE(LightOrder({ ghost, Above }, Directional({ 0.0, 0.0, -1.0 }), 1e-6).empty());
+  // Side by side under a light straight down: no ray crosses both, and no order is given
+  // (the bricks gather, which leaves them out of each other's product).
+  const BrickBox west{ { -1.0, 0.0, 0.0 }, { 0.0, 1.0, 1.0 } };
+  EXPECT_TRUE(LightOrder({ west, Above }, Directional({ 0.0, 0.0, -1.0 }), 1e-6).empty());
+  EXPECT_EQ(LightOrder({ west, Above }, Directional({ 0.3, 0.0, -1.0 }), 1e-6), (std::vector<int>{ 0, 1 }));
   // Sharing a face within the tolerance, an empty brick last.
   const std::vector<int> order = LightOrder({ Below, BrickBox{}, Above }, Directional({ 0.0, 0.0, -1.0 }), 1e-6);
   EXPECT_EQ(order, (std::vector<int>{ 2, 0, 1 }));
