@@ -250,9 +250,12 @@ bool LightSpaceBricks::Scan(const std::vector<std::vector<int>>& orders, size_t 
   for (size_t slot = 0; slot < orders.size(); ++slot)
   {
     const auto from = this->Totals.begin() + static_cast<std::ptrdiff_t>(slot * perSlot);
-    const std::vector<float> local = empty ? std::vector<float>(perSlot, 1.0f) : std::vector<float>(from, from + static_cast<std::ptrdiff_t>(perSlot));
+    const std::vector<float> local = empty
+      ? std::vector<float>(perSlot, 1.0f)
+      : std::vector<float>(from, from + static_cast<std::ptrdiff_t>(perSlot));
     std::vector<float> product;
-    if (!ExclusiveProductScan(orders[slot], this->LocalBrick, local, static_cast<int>(slot) * rounds, message, product))
+    const int tag = static_cast<int>(slot) * rounds; // each slot's rounds their own tags
+    if (!ExclusiveProductScan(orders[slot], this->LocalBrick, local, tag, message, product))
     {
       return false;
     }
