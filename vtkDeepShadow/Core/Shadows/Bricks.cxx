@@ -42,6 +42,14 @@ int SeparatingAxis(const BrickBox& a, const BrickBox& b, double tolerance, doubl
   }
   return -1;
 }
+
+// Positive where `light` lies below the plane x[axis] = plane (its rays cross it upwards),
+// negative above, 0 where no ray crosses it: a directional light's rays come from the side
+// they travel away from; a positional light sits on one side.
+double LightBelowPlane(const Light& light, int axis, double plane)
+{
+  return light.Positional ? plane - light.Position[axis] : light.FocalPoint[axis] - light.Position[axis];
+}
 }
 
 bool BricksOverlap(const BrickBox& a, const BrickBox& b, double tolerance)
@@ -60,10 +68,7 @@ BrickOrder OrderTowardLight(const BrickBox& a, const BrickBox& b, const Light& l
   {
     return BrickOrder::Unordered;
   }
-  // How far the light is below the plane: a directional light's rays come from the side
-  // they travel away from; a positional light sits on one side.
-  const double lightBelow = light.Positional ? plane - light.Position[axis]
-                                             : light.FocalPoint[axis] - light.Position[axis];
+  const double lightBelow = LightBelowPlane(light, axis, plane);
   if (lightBelow == 0.0)
   {
     // Rays parallel to the plane (or from a light on it) stay on one side of it: none
@@ -147,8 +152,7 @@ bool AppendInLightOrder(const std::vector<BrickBox>& boxes, const std::vector<in
       // Rays parallel to the plane, or from a light on it, cross no brick of both sides: a
       // prefix product would still multiply one side's totals into the other's texels that
       // straddle the plane, which the gather leaves out (UpstreamTransmittance): no order.
-      const double lightBelow =
-        light.Positional ? plane - light.Position[axis] : light.FocalPoint[axis] - light.Position[axis];
+      const double lightBelow = LightBelowPlane(light, axis, plane);
       if (lightBelow == 0.0)
       {
         return false;
