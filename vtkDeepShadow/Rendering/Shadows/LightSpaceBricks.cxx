@@ -175,17 +175,19 @@ bool LightSpaceBricks::Exchange(vtkOpenGLRenderWindow* window, const std::vector
   const double tolerance = SharedFaceTolerance(this->LastUnion);
   // Scanned along each light's order of the bricks where every brick can: the decision
   // rests on what every brick gathered at BeginFrame, so all take the same path.
-  std::vector<std::vector<int>> orders;
   bool scan = this->Exchanger->GetScan() && this->Exchanger->CanSendReceive() && this->LightsAgree;
-  for (size_t slot = 0; slot < slots && scan; ++slot)
+  if (scan)
   {
-    orders.push_back(LightOrder(this->Boxes, slotLights[slot], tolerance));
-    scan = !orders.back().empty();
+    this->UpdateOrders(slotLights, slots, tolerance);
+    for (const std::vector<int>& order : this->Orders)
+    {
+      scan = scan && !order.empty();
+    }
   }
   std::vector<float> upstream(this->Totals.size(), 1.0f);
   const double start = NowMilliseconds();
-  const bool exchanged =
-    scan ? this->Scan(orders, perSlot, upstream) : this->Gather(slotLights, slots, perSlot, tolerance, upstream);
+  const bool exchanged = scan ? this->Scan(this->Orders, perSlot, upstream)
+                              : this->Gather(slotLights, slots, perSlot, tolerance, upstream);
   this->Exchanger->Account(0, 0, NowMilliseconds() - start);
   if (!exchanged)
   {
@@ -231,6 +233,33 @@ bool LightSpaceBricks::Exchange(vtkOpenGLRenderWindow* window, const std::vector
   units->Free(unit);
   this->Version += 1.0;
   return true;
+}
+
+void LightSpaceBricks::UpdateOrders(const std::vector<Light>& slotLights, size_t slots, double tolerance)
+{
+  // The kd tree is rebuilt for each light (O(bricks^2) splits tried at each level): only when
+  // the boxes or a light moved, not every frame.
+  std::vector<double> key;
+  for (const BrickBox& box : this->Boxes)
+  {
+    key.insert(key.end(), { box.Min.x, box.Min.y, box.Min.z, box.Max.x, box.Max.y, box.Max.z });
+  }
+  for (size_t slot = 0; slot < slots; ++slot)
+  {
+    const Light& light = slotLights[slot];
+    key.insert(key.end(), { light.Positional ? 1.0 : 0.0, light.Position.x, light.Position.y, light.Position.z,
+                            light.FocalPoint.x, light.FocalPoint.y, light.FocalPoint.z });
+  }
+  if (key == this->OrdersKey)
+  {
+    return;
+  }
+  this->OrdersKey = std::move(key);
+  this->Orders.clear();
+  for (size_t slot = 0; slot < slots; ++slot)
+  {
+    this->Orders.push_back(LightOrder(this->Boxes, slotLights[slot], tolerance));
+  }
 }
 
 bool LightSpaceBricks::Scan(const std::vector<std::vector<int>>& orders, size_t perSlot, std::vector<float>& upstream)

@@ -67,6 +67,8 @@ public:
   void Release();
 
 private:
+  /** Each slot's LightOrder of the bricks, again only when the boxes or its light changed. */
+  void UpdateOrders(const std::vector<Light>& slotLights, size_t slots, double tolerance);
   // The two ways to the product; `upstream` holds every slot's.
   bool Scan(const std::vector<std::vector<int>>& orders, size_t perSlot, std::vector<float>& upstream);
   bool Gather(const std::vector<Light>& slotLights, size_t slots, size_t perSlot, double tolerance,
@@ -79,6 +81,8 @@ private:
   bool LightsAgree = false;
   int LocalBrick = 0;
   std::vector<BrickBox> Boxes;
+  std::vector<std::vector<int>> Orders; // per slot (UpdateOrders)
+  std::vector<double> OrdersKey;        // the boxes and slot lights they were found for
   BrickBox LastUnion;
   int Size = 0;
   int Layers = 0;
