@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -274,33 +273,13 @@ double DeepShadowMapError(const ShadowParameters& p, const StatedErrorCase&)
   return p.Epsilon * std::max(1, p.Clusters);
 }
 
-// What a menu shows (ParaView's technique list): a label and the group it is listed under.
-void LabelTechniques(std::vector<ShadowTechniqueInfo>& list)
+// What a menu shows for it (ParaView's technique list): the group it is listed under, one of
+// ShadowTechniqueGroups() ("" for none), and a label.
+ShadowTechniqueInfo Menu(ShadowTechniqueInfo info, const char* group, const char* label)
 {
-  static const std::map<std::string, std::pair<const char*, const char*>> labels{
-    { "none", { "", "No shadows" } },
-    { "rays", { "Exact", "Shadow rays" } },
-    { "rays-opaque", { "Exact", "Shadow rays, opaque occluders" } },
-    { "rays-color", { "Exact", "Shadow rays, coloured" } },
-    { "shadowmap", { "Maps", "Shadow map" } },
-    { "rmsm", { "Maps", "Resolution-matched shadow map" } },
-    { "dsm", { "Deep maps", "Deep shadow map" } },
-    { "dsm-color", { "Deep maps", "Deep shadow map, coloured" } },
-    { "dsm-clustered", { "Deep maps", "Deep shadow maps, clustered" } },
-    { "dsm-fixed", { "Deep maps", "Deep shadow map, fixed budget" } },
-    { "dsm3", { "Approximate", "Opacity levels" } },
-    { "fom", { "Approximate", "Fourier opacity map" } },
-    { "avsm", { "Approximate", "Adaptive volumetric shadow map" } },
-    { "slices", { "Approximate", "Uniform opacity slices" } },
-    { "moments", { "Approximate", "Power-moment transmittance" } },
-    { "cssm", { "Approximate", "Coloured stochastic shadow map" } },
-  };
-  for (ShadowTechniqueInfo& technique : list)
-  {
-    const auto found = labels.find(technique.Name);
-    technique.Group = found != labels.end() ? found->second.first : "Approximate";
-    technique.Label = found != labels.end() ? found->second.second : technique.Name;
-  }
+  info.Group = group;
+  info.Label = label;
+  return info;
 }
 
 // The techniques, in the order the tool lists them. A technique is one entry here (and its
@@ -308,15 +287,16 @@ void LabelTechniques(std::vector<ShadowTechniqueInfo>& list)
 std::vector<ShadowTechniqueInfo> MakeTechniques()
 {
   std::vector<ShadowTechniqueInfo> list;
-  list.push_back(Technique("none", "default", ShadowKind::None, {}, {}));
-  list.push_back(Rays("rays", "translucent shadow rays", false, false,
-    { { "", true }, { ":shadow-step-factor=0.5" }, { ":shadow-step-factor=2" },
-      { ":shadow-step-factor=4" }, { "-cached", true }, { "-cached:shadow-volume-size=64" },
-      { "-cached:shadow-volume-size=256" } }));
+  list.push_back(Menu(Technique("none", "default", ShadowKind::None, {}, {}), "", "No shadows"));
+  list.push_back(Menu(Rays("rays", "translucent shadow rays", false, false,
+                        { { "", true }, { ":shadow-step-factor=0.5" }, { ":shadow-step-factor=2" },
+                          { ":shadow-step-factor=4" }, { "-cached", true }, { "-cached:shadow-volume-size=64" },
+                          { "-cached:shadow-volume-size=256" } }),
+    "Exact", "Shadow rays"));
   auto opaque = Rays("rays-opaque", "", true, false, { { "" } });
   opaque.Binary = true;
-  list.push_back(opaque);
-  list.push_back(Rays("rays-color", "coloured", false, true, { { "" } }));
+  list.push_back(Menu(opaque, "Exact", "Shadow rays, opaque occluders"));
+  list.push_back(Menu(Rays("rays-color", "coloured", false, true, { { "" } }), "Exact", "Shadow rays, coloured"));
 
   auto map = LightSpaceMap(Technique("shadowmap", "", ShadowKind::ShadowMap, { "pcf", "bias" },
     { { "", true }, { ":shadow-map-size=256" }, { ":shadow-map-size=1024" },
@@ -326,7 +306,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   map.LookupTexels = 2.5; // PCF 3x3 around the nearest texel
   map.MakeShadow = MakeTwin<ShadowMapShadow>;
   map.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 4; };
-  list.push_back(map);
+  list.push_back(Menu(map, "Maps", "Shadow map"));
 
   for (const bool colored : { false, true })
   {
@@ -346,7 +326,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
       // Chunked: a start entry, and at most the pool the layers would take (automatic).
       return (colored ? 16 : 8) * static_cast<std::uint64_t>(p.Layers) + (p.ChunkNodes > 0 ? 4 : 0);
     };
-    list.push_back(dsm);
+    list.push_back(Menu(dsm, "Deep maps", colored ? "Deep shadow map, coloured" : "Deep shadow map"));
   }
   // Clustered deep shadow maps (paper 000, section 4): at most 4 maps of 256^2 per light, the
   // memory of one 512^2 map, each fitted to a cluster of the volume's objects.
@@ -365,7 +345,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   clustered.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 8 * static_cast<std::uint64_t>(p.Layers) * static_cast<std::uint64_t>(std::max(1, p.Clusters));
   };
-  list.push_back(clustered);
+  list.push_back(Menu(clustered, "Deep maps", "Deep shadow maps, clustered"));
 
   // Deep shadow maps at a fixed memory budget: per texel the smallest bound whose nodes fit.
   auto fixed = LightSpaceMap(Technique("dsm-fixed", "deep shadow map, fixed budget", FixedBudgetKind,
@@ -381,7 +361,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   fixed.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return static_cast<std::uint64_t>(FixedBudgetBits(p)) / 8;
   };
-  list.push_back(fixed);
+  list.push_back(Menu(fixed, "Deep maps", "Deep shadow map, fixed budget"));
 
   auto levels = LightSpaceMap(Technique("dsm3", "opacity levels", ShadowKind::OpacityLevels,
     { "opacity-levels" }, { { "", true }, { ":shadow-map-size=256" }, { "-cached" } }));
@@ -393,7 +373,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   };
   levels.MakeShadow = MakeTwin<OpacityLevelsShadow>;
   levels.TexelBytes = [](const ShadowParameters&) -> std::uint64_t { return 16; };
-  list.push_back(levels);
+  list.push_back(Menu(levels, "Approximate", "Opacity levels"));
 
   // Fourier opacity maps (Jansen and Bavoil 2010), a rival at a fixed number of bits per texel.
   auto fourier = LightSpaceMap(Technique("fom", "Fourier opacity map", FourierOpacityKind, { "fom-terms" },
@@ -408,7 +388,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   fourier.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 16 * static_cast<std::uint64_t>(FourierLayers(FourierTerms(p)));
   };
-  list.push_back(fourier);
+  list.push_back(Menu(fourier, "Approximate", "Fourier opacity map"));
 
   // Adaptive volumetric shadow maps (Salvi et al. 2010), a rival at a fixed number of nodes.
   auto adaptive = LightSpaceMap(Technique("avsm", "adaptive volumetric shadow map", AdaptiveVolumetricKind,
@@ -425,7 +405,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   adaptive.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 8 * static_cast<std::uint64_t>(AdaptiveNodes(p));
   };
-  list.push_back(adaptive);
+  list.push_back(Menu(adaptive, "Approximate", "Adaptive volumetric shadow map"));
 
   // Uniform opacity slices (Kim and Neumann 2001), the simplest rival at a fixed number of
   // bits per texel.
@@ -443,7 +423,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   sliced.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return static_cast<std::uint64_t>(OpacitySliceCount(p));
   };
-  list.push_back(sliced);
+  list.push_back(Menu(sliced, "Approximate", "Uniform opacity slices"));
 
   // Power moments (MBOIT, Muenstermann et al. 2018), a rival at a fixed number of bits per texel.
   auto powers = LightSpaceMap(Technique("moments", "power-moment transmittance", PowerMomentKind,
@@ -458,7 +438,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   powers.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 16 * static_cast<std::uint64_t>(PowerMomentLayers(PowerMomentCount(p)));
   };
-  list.push_back(powers);
+  list.push_back(Menu(powers, "Approximate", "Power-moment transmittance"));
 
   auto cssm = LightSpaceMap(Technique("cssm", "coloured stochastic shadow map",
     ShadowKind::Stochastic, { "cssm-offsets", "cssm-seed", "cssm-photons" },
@@ -475,7 +455,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
   cssm.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
     return 16 * static_cast<std::uint64_t>(p.Photons);
   };
-  list.push_back(cssm);
+  list.push_back(Menu(cssm, "Approximate", "Coloured stochastic shadow map"));
 
   // Resolution-matched shadow maps (paper 004): pages of a virtual map, where pixels need them.
   auto rmsm = Technique("rmsm", "resolution-matched shadow map", ShadowKind::ResolutionMatched,
@@ -493,8 +473,7 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
     const std::uint64_t cells = static_cast<std::uint64_t>(layout.TableSize()) * layout.TableSize();
     return 4 * static_cast<std::uint64_t>(layout.AtlasSize) * layout.AtlasSize + 4 * cells * faces;
   };
-  list.push_back(rmsm);
-  LabelTechniques(list);
+  list.push_back(Menu(rmsm, "Maps", "Resolution-matched shadow map"));
   return list;
 }
 }
