@@ -22,8 +22,42 @@ PackedLight PackLight(const Light& light)
   return packed;
 }
 
+namespace
+{
+bool Looped(const Light& light, bool isotropic)
+{
+  return !isotropic || light.Positional || light.ShadowAttenuation != 0.0;
+}
+}
+
+std::vector<int> LoopedLights(const std::vector<Light>& lights, bool isotropic)
+{
+  std::vector<int> looped;
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    if (Looped(lights[i], isotropic))
+    {
+      looped.push_back(static_cast<int>(i));
+    }
+  }
+  return looped;
+}
+
+glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights, bool isotropic)
+{
+  glm::dvec3 sum(0.0);
+  for (const Light& light : lights)
+  {
+    if (!Looped(light, isotropic))
+    {
+      sum += light.Diffuse;
+    }
+  }
+  return glm::vec3(sum);
+}
+
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,
-  const Material& material, bool volume)
+  const Material& material, bool volume, bool isotropic)
 {
   int fromEye = -1;
   for (size_t i = 0; volume && i < lights.size(); ++i)
@@ -52,7 +86,9 @@ void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vt
     coneCos.push_back(packed.ConeCos);
     exponent.push_back(packed.Exponent);
   }
-  sink.Set("u_lightCount", static_cast<int>(lights.size()));
+  const std::vector<int> looped = LoopedLights(lights, isotropic);
+  sink.Set("u_lightLoopCount", static_cast<int>(looped.size()));
+  sink.Set("u_lightLoop", looped);
   sink.Set("u_lightPositional", positional);
   sink.Set("u_lightPosition", positions);
   sink.Set("u_lightDirection", directions);

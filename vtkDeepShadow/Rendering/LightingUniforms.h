@@ -37,10 +37,21 @@ PackedLight PackLight(const Light& light);
 /**
  * Lights in world space (in the order given), ambient light, two-sided lighting, material.
  * `volume`: a volume's samples are shaded, with a lone headlight from the eye
- * (Light::ShadedFromEye); meshes shade every directional light as one.
+ * (Light::ShadedFromEye); meshes shade every directional light as one. `isotropic`: lit
+ * without a normal (the Isotropic feature), so the loop visits only LoopedLights.
  */
 void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vtkRenderer* renderer,
-  const Material& material, bool volume);
+  const Material& material, bool volume, bool isotropic = false);
+
+/**
+ * The lights Lighting.glsl's loop visits (u_lightLoop): all, or, lit isotropically, only those
+ * whose share differs between samples (positional, or casting a shadow). A directional light
+ * that casts none gives every sample the same share without a normal: the Isotropic feature
+ * adds their summed diffuse (UnloopedDiffuse) once, instead of a loop pass per light (with
+ * ParaView's light kit, one pass for its key light instead of five).
+ */
+std::vector<int> LoopedLights(const std::vector<Light>& lights, bool isotropic);
+glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights, bool isotropic);
 
 }
 #endif

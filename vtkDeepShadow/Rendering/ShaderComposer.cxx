@@ -107,6 +107,12 @@ ShaderFeature VTKShadingShaderFeature(int path, bool reflection)
     "#define VTK_SHADING_PATH " + std::to_string(path) + "\n#define VTK_SHADING_REFLECTION " + (reflection ? "1" : "0"));
 }
 
+ShaderFeature LightingShaderFeature(bool positional, bool fromEye)
+{
+  return WithDefines("Lighting", vtkDeepShadowFeatureLighting,
+    std::string("#define POSITIONAL_LIGHTS ") + (positional ? "1" : "0") + "\n#define LIGHT_FROM_EYE " + (fromEye ? "1" : "0"));
+}
+
 ShaderFeature VolumeSegmentsShaderFeature(int segments)
 {
   std::string outputs = "#define SEGMENT_OUTPUTS";

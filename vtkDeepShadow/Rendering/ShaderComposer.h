@@ -62,6 +62,12 @@ ShaderFeature TranslucentLayersShaderFeature(int layers, int segmentSlices);
  * reflected light or VTK 9.1's half vector (VTK_SHADING_REFLECTION).
  */
 ShaderFeature VTKShadingShaderFeature(int path, bool reflection);
+/**
+ * The Lighting feature without the code no light of the frame needs: a positional light's
+ * (POSITIONAL_LIGHTS 0) and the lone headlight shaded from the eye (LIGHT_FROM_EYE 0). The
+ * embedded Lighting keeps both (the meshes' shader).
+ */
+ShaderFeature LightingShaderFeature(bool positional, bool fromEye);
 /** The VolumeSegments feature: the march written as `segments` pieces (Rendering/Translucency). */
 ShaderFeature VolumeSegmentsShaderFeature(int segments);
 

@@ -123,7 +123,7 @@ bool Normals(const Frame& f)
 
 void BindLighting(const Frame& f, UniformSink& sink)
 {
-  SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property), true);
+  SetLightingUniforms(sink, f.Context.Lights, f.Renderer, adapter::MakeMaterial(f.Property), true, !Normals(f));
   if (Normals(f))
   {
     const VolumeShading& shading = f.Context.Shading;
@@ -226,7 +226,16 @@ std::vector<VolumeFeature> ShadingFeatures()
         sink.Set("u_opaqueDepth", f.Opaque->GetDepth()->GetTextureUnit());
       },
       [](const Frame& f) { f.Opaque->GetDepth()->Deactivate(); } },
-    { "Lighting", [](const Frame& f) { return f.Lit; }, nullptr, BindLighting, nullptr },
+    { "Lighting", [](const Frame& f) { return f.Lit; },
+      [](const Frame& f, ComposedFeatures& features) {
+        const std::vector<Light>& lights = f.Context.Lights;
+        const auto any = [&](bool Light::*field) {
+          return std::any_of(lights.begin(), lights.end(), [&](const Light& light) { return light.*field; });
+        };
+        features.Runtime["Lighting"] = LightingShaderFeature(any(&Light::Positional), any(&Light::ShadedFromEye));
+        features.Labels.emplace_back("Lighting");
+      },
+      BindLighting, nullptr },
     { "Gradient", Normals, nullptr, nullptr, nullptr },
     { "Phong", Normals, nullptr, nullptr, nullptr },
     { "UserShader", [](const Frame& f) { return f.UserCode != nullptr; },
@@ -245,6 +254,7 @@ std::vector<VolumeFeature> ShadingFeatures()
     { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         sink.Set("u_isotropicLightScale", static_cast<float>(IsotropicLightScale(f.Context.Lights)));
+        sink.Set("u_isotropicUnlooped", UnloopedDiffuse(f.Context.Lights, true));
       },
       nullptr },
     { "DatasetOpacity", [](const Frame& f) { return f.WorldToDataset.has_value(); }, nullptr,

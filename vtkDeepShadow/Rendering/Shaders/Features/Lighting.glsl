@@ -3,9 +3,20 @@
 // at a sample comes from Gradient (Phong of the gradient normal) or Isotropic (scattering
 // without a normal, for unshaded volumes that receive shadows); Shadow scales each light by
 // its visibility. Ambient light is never shadowed.
+//
+// What no light of the frame does is left out at composition (LightingShaderFeature): llvmpipe
+// runs a branch's code even where no pixel takes it, so a positional light's attenuation and
+// cone cost every directional light as well.
 //@Dec
+#ifndef POSITIONAL_LIGHTS
+#define POSITIONAL_LIGHTS 1 // 0: every light is directional
+#endif
+#ifndef LIGHT_FROM_EYE
+#define LIGHT_FROM_EYE 1    // 0: no light is shaded from the eye (u_lightFromEye is -1)
+#endif
 const int MaxLights = 8;
-uniform int u_lightCount;
+uniform int u_lightLoopCount;             // the lights the loop visits (deepshadow::LoopedLights)
+uniform int u_lightLoop[MaxLights];
 uniform int u_lightPositional[MaxLights];
 uniform vec3 u_lightPosition[MaxLights];   // positional lights
 uniform vec3 u_lightDirection[MaxLights];  // unit, towards the light (directional) or the
@@ -23,10 +34,15 @@ uniform vec4 u_material;                   // ambient, diffuse, specular, specul
 uniform int u_twoSidedLighting;
 
 // Towards light i from `p` (unit), and how far it is (1e30 for a directional light).
+bool lightPositional(int i)
+{
+  return POSITIONAL_LIGHTS != 0 && u_lightPositional[i] != 0;
+}
+
 vec3 towardsLight(int i, vec3 p, out float lightDistance)
 {
   lightDistance = 1e30;
-  if (u_lightPositional[i] == 0)
+  if (!lightPositional(i))
   {
     return u_lightDirection[i];
   }
@@ -59,12 +75,14 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
   vec3 litPosition = position; // where the lights are evaluated (shadows: at position)
   //DeepShadow::VTKShading::Start
   //DeepShadow::Shadow::Start
-  for (int i = 0; i < u_lightCount; ++i)
+  //DeepShadow::Isotropic::Start
+  for (int loop = 0; loop < u_lightLoopCount; ++loop)
   {
+    int i = u_lightLoop[loop];
     float lightDistance;
     vec3 toLight = towardsLight(i, litPosition, lightDistance);
     float attenuation = 1.0;
-    if (u_lightPositional[i] != 0)
+    if (lightPositional(i))
     {
       attenuation = 1.0 / (u_lightAttenuation[i].x + u_lightAttenuation[i].y * lightDistance +
                             u_lightAttenuation[i].z * lightDistance * lightDistance);
@@ -76,7 +94,7 @@ vec3 lightSample(vec3 color, vec3 index, vec3 position, vec3 toViewer)
     }
     vec3 shadowToLight = toLight; // shadows keep the light's own direction
     //DeepShadow::VTKShading::ShadowRay
-    if (i == u_lightFromEye && position != u_lightEye)
+    if (LIGHT_FROM_EYE != 0 && i == u_lightFromEye && position != u_lightEye)
     {
       toLight = normalize(u_lightEye - position);
     }

@@ -20,7 +20,7 @@ uniform mat4 u_lightingTransform; // paths 2 and 3: where a sample is lit, from 
   bool undefined = false;        // path 1: VTK takes pow() of a negative N.H
   litPosition = (u_lightingTransform * vec4(position, 1.0)).xyz;
 //@ShadowRay
-    if (u_lightPositional[i] != 0)
+    if (lightPositional(i))
     {
       shadowToLight = towardsLight(i, position, lightDistance); // the shadow ray leaves from the sample itself
     }
@@ -47,7 +47,7 @@ uniform mat4 u_lightingTransform; // paths 2 and 3: where a sample is lit, from 
 #endif
         float rDotV = -dot(halfway, normalize(toLight - 2.0 * reflectScale * normal));
 #if VTK_SHADING_PATH != 1
-        if (u_twoSidedLighting != 0 && u_lightPositional[i] != 0)
+        if (u_twoSidedLighting != 0 && lightPositional(i))
         {
           rDotV = abs(rDotV);
         }
