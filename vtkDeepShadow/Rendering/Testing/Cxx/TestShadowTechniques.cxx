@@ -7,6 +7,9 @@
 // and <= 3% of pixels beyond 24/255, because a feeler or light ray whose sample sits on the
 // threshold can fall either side in float and in double, which flips a whole shadow texel or
 // a pixel's visibility.
+//
+// Unshaded, a directional light that casts no shadow is added once, outside the lights' loop
+// (LoopedLights); without positional lights their code is not composed.
 #include "DeepShadowTestUtilities.h"
 #include "vtkDeepShadowRayTechnique.h"
 #include "vtkDeepShadowRenderWindow.h"
@@ -115,8 +118,22 @@ int TestShadowTechniques(int argc, char* argv[])
            (c.Binary ? 24.0 : 12.0) / 255.0, c.Binary ? 0.03 : 0.01) && ok;
     scene.Light->SetShadowAttenuation(1.0);
   }
+  // With the positional lights, their code is composed; without them it is left out, and the
+  // key light alone, casting none, leaves the lights' loop empty (its share added once).
+  const auto composed = [&](const char* define) {
+    return mapper->GetFragmentShaderSource().find(define) != std::string::npos;
+  };
+  ok = deepshadow::testing::Check("positional lights' code composed", composed("#define POSITIONAL_LIGHTS 1")) && ok;
   renderer->RemoveLight(point);
   renderer->RemoveLight(spot);
+  property->ShadeOff();
+  scene.Light->SetShadowAttenuation(0.0);
+  window->Render();
+  ok = WithinTolerance("the key light alone, unshaded, casting none", Grab(window),
+         deepshadow::testing::Reference(renderer, true), 2.0 / 255.0, 12.0 / 255.0, 0.01) && ok;
+  ok = deepshadow::testing::Check("directional lights only: no positional code",
+         composed("#define POSITIONAL_LIGHTS 0") && composed("#define LIGHT_FROM_EYE 0")) && ok;
+  scene.Light->SetShadowAttenuation(1.0);
   property->ShadeOn();
 
   mapper->SetShadowTechnique(cases[7].Technique);
