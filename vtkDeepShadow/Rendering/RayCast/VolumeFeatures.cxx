@@ -179,7 +179,11 @@ void BindUserShader(const Frame& f, UniformSink& sink)
 
 void ComposeShadow(const Frame& f, ComposedFeatures& features)
 {
-  features.Runtime["Shadow"] = ShaderFeature("Shadow", f.Technique->GetShaderFeatureSource());
+  // The slots (shadowed lights) known: the per-sample arrays sized and the loop unrolled.
+  const int slots = vtkDeepShadowTechnique::Internals::SlotCount(f.Technique);
+  const std::string defines = "//@Dec\n#define SHADOW_SLOTS " + std::to_string(slots) + "\n#define SHADOW_SLOT_ARRAY " +
+    std::to_string(std::max(slots, 1)) + "\n";
+  features.Runtime["Shadow"] = ShaderFeature("Shadow", defines + f.Technique->GetShaderFeatureSource());
   if (f.Technique->NeedsFeeler())
   {
     features.Enabled.insert("Feeler");

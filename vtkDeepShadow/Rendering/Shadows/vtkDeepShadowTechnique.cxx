@@ -610,6 +610,11 @@ void Internals::EndBuildPass(vtkDeepShadowTechnique* self, const deepshadow::Sha
   ++self->Impl->Passes;
 }
 
+int Internals::SlotCount(const vtkDeepShadowTechnique* self)
+{
+  return self->Impl->Slots.Count();
+}
+
 void Internals::Bind(vtkDeepShadowTechnique* self, deepshadow::UniformSink& sink,
   const deepshadow::ShadowContext& context, bool direct)
 {

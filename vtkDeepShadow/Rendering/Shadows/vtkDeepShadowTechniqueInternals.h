@@ -115,6 +115,8 @@ public:
 
   /** Brings the shadow structures up to date; false (and GetLastError()) on failure. */
   static bool Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext& context);
+  /** The lights given a shadow structure by the last Prepare() (u_shadowSlotCount). */
+  static int SlotCount(const vtkDeepShadowTechnique* self);
   /** Sets the lookup's uniforms and binds its textures on the ray caster's program. */
   static void Bind(vtkDeepShadowTechnique* self, deepshadow::UniformSink& sink,
     const deepshadow::ShadowContext& context, bool direct = false);

@@ -9,14 +9,22 @@
 // Each structure is looked up before the lights' loop, once per slot (Start): llvmpipe runs
 // the code of a branch not taken as well (masked), so a lookup inside the loop cost every
 // light, shadowed or not (ParaView's light kit: five lookups a sample for its key light's one).
+// The volumes' composer defines SHADOW_SLOTS (the technique's slots this frame) and
+// SHADOW_SLOT_ARRAY (at least 1), so that the loop is unrolled and the array holds no more than
+// the slots; llvmpipe keeps a dynamically indexed array in memory (the meshes' shader takes
+// the count from the uniform).
 //@Dec
+#ifndef SHADOW_SLOTS
+#define SHADOW_SLOTS u_shadowSlotCount
+#define SHADOW_SLOT_ARRAY MaxLights
+#endif
 uniform int u_shadowSlot[MaxLights];          // the light's shadow structure, -1: none
 uniform float u_shadowAttenuation[MaxLights]; // vtkLight::ShadowAttenuation
 uniform int u_shadowSlotCount;                // structures
 uniform int u_shadowSlotLight[MaxLights];     // the light of each
 //@Start
-  vec3 slotVisibility[MaxLights];
-  for (int s = 0; s < u_shadowSlotCount; ++s)
+  vec3 slotVisibility[SHADOW_SLOT_ARRAY];
+  for (int s = 0; s < SHADOW_SLOTS; ++s)
   {
     int i = u_shadowSlotLight[s];
     float lightDistance;
@@ -36,7 +44,7 @@ uniform int u_shadowSlotLight[MaxLights];     // the light of each
       //DeepShadow::MeshNormal::ShadowOffset
       //DeepShadow::Isosurface::ShadowOffset
       bool shadowed = u_shadowSlot[i] >= 0;
-      vec3 visibility = shadowed ? slotVisibility[u_shadowSlot[i]] : vec3(1.0);
+      vec3 visibility = shadowed ? slotVisibility[SHADOW_SLOT_ARRAY == 1 ? 0 : u_shadowSlot[i]] : vec3(1.0);
       //DeepShadow::OtherVolumeShadows::Impl
       if (shadowed)
       {
