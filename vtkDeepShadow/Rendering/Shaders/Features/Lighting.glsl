@@ -33,12 +33,12 @@ uniform vec3 u_ambientLight;
 uniform vec4 u_material;                   // ambient, diffuse, specular, specular power
 uniform int u_twoSidedLighting;
 
-// Towards light i from `p` (unit), and how far it is (1e30 for a directional light).
 bool lightPositional(int i)
 {
   return POSITIONAL_LIGHTS != 0 && u_lightPositional[i] != 0;
 }
 
+// Towards light i from `p` (unit), and how far it is (1e30 for a directional light).
 vec3 towardsLight(int i, vec3 p, out float lightDistance)
 {
   lightDistance = 1e30;
