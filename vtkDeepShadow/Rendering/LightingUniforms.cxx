@@ -43,12 +43,12 @@ std::vector<int> LoopedLights(const std::vector<Light>& lights, bool isotropic)
   return looped;
 }
 
-glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights, bool isotropic)
+glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights)
 {
   glm::dvec3 sum(0.0);
   for (const Light& light : lights)
   {
-    if (!Looped(light, isotropic))
+    if (!Looped(light, true))
     {
       sum += light.Diffuse;
     }

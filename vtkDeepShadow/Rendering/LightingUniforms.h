@@ -47,11 +47,12 @@ void SetLightingUniforms(UniformSink& sink, const std::vector<Light>& lights, vt
  * The lights Lighting.glsl's loop visits (u_lightLoop): all, or, lit isotropically, only those
  * whose share differs between samples (positional, or casting a shadow). A directional light
  * that casts none gives every sample the same share without a normal: the Isotropic feature
- * adds their summed diffuse (UnloopedDiffuse) once, instead of a loop pass per light (with
- * ParaView's light kit, one pass for its key light instead of five).
+ * adds their summed diffuse (UnloopedDiffuse: the isotropic lights LoopedLights leaves out)
+ * once, instead of a loop pass per light (with ParaView's light kit, one pass for its key
+ * light instead of five).
  */
 std::vector<int> LoopedLights(const std::vector<Light>& lights, bool isotropic);
-glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights, bool isotropic);
+glm::vec3 UnloopedDiffuse(const std::vector<Light>& lights);
 
 }
 #endif

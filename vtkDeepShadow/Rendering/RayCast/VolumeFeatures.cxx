@@ -258,7 +258,7 @@ std::vector<VolumeFeature> ShadingFeatures()
     { "Isotropic", [](const Frame& f) { return f.Lit && !Normals(f); }, nullptr,
       [](const Frame& f, UniformSink& sink) {
         sink.Set("u_isotropicLightScale", static_cast<float>(IsotropicLightScale(f.Context.Lights)));
-        sink.Set("u_isotropicUnlooped", UnloopedDiffuse(f.Context.Lights, true));
+        sink.Set("u_isotropicUnlooped", UnloopedDiffuse(f.Context.Lights));
       },
       nullptr },
     { "DatasetOpacity", [](const Frame& f) { return f.WorldToDataset.has_value(); }, nullptr,
