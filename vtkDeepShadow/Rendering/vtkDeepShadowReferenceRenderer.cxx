@@ -2,6 +2,7 @@
 
 #include "CoreAdapter.h"
 #include "Core/ReferenceRenderer.h"
+#include "Core/ShadowSubsampling.h"
 #include "Core/Shadows.h"
 #include "Volume/DrawnScalars.h"
 #include "vtkDeepShadowImageConversion.h"
@@ -408,7 +409,18 @@ bool vtkDeepShadowReferenceRenderer::Render(
   settings.SampleDistance = sampleDistance;
   try
   {
-    image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm, surfaceTerm);
+    if (this->ShadowSubsampling > 1)
+    {
+      if (shadowTerm || surfaceTerm || settings.Output != deepshadow::RenderOutput::Color)
+      {
+        throw std::invalid_argument("subsampled shadows are drawn as the colour only");
+      }
+      image = deepshadow::RenderShadowSubsampled(scene, settings, this->ShadowSubsampling, this->Threads);
+    }
+    else
+    {
+      image = deepshadow::ReferenceRenderer::Render(scene, settings, this->Threads, shadowTerm, surfaceTerm);
+    }
   }
   catch (const std::invalid_argument& e)
   {
@@ -437,4 +449,5 @@ void vtkDeepShadowReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GpuTwin: " << this->GpuTwin << "\n";
   os << indent << "Shadows: " << (this->Shadows == GroundTruthShadows ? "ground truth" : "technique") << "\n";
   os << indent << "Threads: " << this->Threads << "\n";
+  os << indent << "ShadowSubsampling: " << this->ShadowSubsampling << "\n";
 }

@@ -71,6 +71,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * 1 (default): shadows per sample. N > 1: the twin of a vtkDeepShadowVolumeMapper's
+   * interactive frame with InteractiveShadowSubsampling N (deepshadow::RenderShadowSubsampled:
+   * shadows from one ray per N x N pixels); a scene of one volume and no meshes only.
+   */
+  vtkSetClampMacro(ShadowSubsampling, int, 1, 16);
+  vtkGetMacro(ShadowSubsampling, int);
+  ///@}
+
+  ///@{
   /** Threads (0: all cores, or DEEPSHADOW_THREADS). */
   vtkSetClampMacro(Threads, int, 0, 1024);
   vtkGetMacro(Threads, int);
@@ -109,6 +119,7 @@ protected:
   bool GpuTwin = false;
   int Shadows = TechniqueShadows;
   int Threads = 0;
+  int ShadowSubsampling = 1;
   bool ReplaceNonFiniteScalars = false;
   std::string LastError;
 

@@ -448,6 +448,12 @@ bool vtkDeepShadowVolumeMapper::Prepare(vtkRenderer* renderer, vtkVolume* volume
 
   this->FillFrame(renderer, volume, frame, indexToWorld, stillStep, step, unitScale);
   frame.Context.LightLagDegrees = interactive ? this->InteractiveShadowLag : 0.0;
+  frame.Interactive = interactive;
+  // What the pass interleaves with this volume (translucent meshes, other volumes).
+  frame.Layers = this->Frame ? this->Frame->LayersFor(this) : nullptr;
+  frame.Segments = frame.Layers || !this->Frame
+    ? nullptr
+    : this->Frame->SegmentsFor(frame.Volume, frame.SegmentGuest);
   if (several && !this->UpdateComponents(window, property, step, uncorrected, unitScale, frame))
   {
     return false;
@@ -591,6 +597,8 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   if (technique)
   {
     context.Transfer = adapter::MakeTransferFunction(frame.Property, context.OpacityUnitScale);
+    // Shadows from the coarse grid while interacting: structures rebuilt as coarse.
+    context.RebuildCoarsening = deepshadow::ShadowSubsampling(frame, this->InteractiveShadowSubsampling);
     const bool prepared = vtkDeepShadowTechnique::Internals::Prepare(technique, context);
     const std::vector<std::string>& passes = technique->GetLastPasses();
     this->LastPasses.insert(this->LastPasses.end(), passes.begin(), passes.end());
@@ -633,21 +641,74 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   const deepshadow::OtherVolumeShadows* others =
     this->Frame ? this->Frame->OthersOnto(this) : nullptr;
   frame.Others = frame.Technique && others && others->Any() ? others : nullptr;
-  frame.Layers = this->Frame ? this->Frame->LayersFor(this) : nullptr;
-  frame.Segments = frame.Layers || !this->Frame
-    ? nullptr
-    : this->Frame->SegmentsFor(frame.Volume, frame.SegmentGuest);
 
+  if (frame.Opaque)
+  {
+    frame.Opaque->Capture(window, frame.X0, frame.Y0, frame.Width, frame.Height, false);
+  }
+  this->ShaderFeatures.clear();
+  std::function<void()> begin, end;
+  if (frame.Segments)
+  {
+    begin = [&] { frame.Segments->Begin(window, frame.SegmentGuest); };
+    end = [&] { frame.Segments->End(window); };
+  }
+  // With layers the shader composited the opaque image itself; segments are not colours.
+  const bool blend = !frame.Layers && !frame.Segments;
+
+  const int scale = frame.Technique ? deepshadow::ShadowSubsampling(frame, this->InteractiveShadowSubsampling) : 1;
+  if (scale > 1 && !impl.Ratio.Allocate(window, frame.Width, frame.Height, scale))
+  {
+    this->ReportError("no room for the coarse grid of shadows while interacting: shadows per sample");
+  }
+  else if (scale > 1)
+  {
+    // Shadows from a coarser grid while interacting: its rays into the target, then every
+    // pixel without the technique times their ratio.
+    if (!this->DrawPass(deepshadow::CoarsePassOf(frame, scale), impl.LastCoarseSource, false,
+          [&] { impl.Ratio.Begin(window); }, [&] { impl.Ratio.End(window); }))
+    {
+      return false;
+    }
+    this->LastPasses.emplace_back("ray-cast-coarse-shadows");
+    if (!this->DrawPass(deepshadow::FullPassOf(frame, scale, impl.Ratio), impl.LastSource, blend, begin, end))
+    {
+      return false;
+    }
+    this->LastPasses.emplace_back("ray-cast");
+    return true;
+  }
+  if (!this->DrawPass(frame, impl.LastSource, blend, begin, end))
+  {
+    return false;
+  }
+  this->LastPasses.emplace_back(frame.Segments ? "ray-cast-segments" : "ray-cast");
+  return true;
+}
+
+bool vtkDeepShadowVolumeMapper::DrawPass(const deepshadow::RayCastFrame& frame, std::string& lastSource,
+  bool blend, const std::function<void()>& begin, const std::function<void()>& end)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLRenderWindow* window = frame.Context.Window;
   // The shader for the features in use.
   const deepshadow::ComposedFeatures features = deepshadow::ComposeVolumeFeatures(frame);
   const std::string source = deepshadow::ComposeShader(vtkDeepShadowVolumeFS, features.Enabled, features.Runtime);
-  if (source != impl.LastSource)
+  if (source != lastSource)
   {
-    impl.LastSource = source;
-    this->FragmentShaderSource = source;
-    this->ShaderFeatures.assign(features.Enabled.begin(), features.Enabled.end());
-    this->ShaderFeatures.insert(this->ShaderFeatures.end(), features.Labels.begin(), features.Labels.end());
+    lastSource = source;
     ++this->ShaderCompositions;
+  }
+  this->FragmentShaderSource = source;
+  // What this frame's shaders are made of (both passes' features, once each).
+  std::vector<std::string> names(features.Enabled.begin(), features.Enabled.end());
+  names.insert(names.end(), features.Labels.begin(), features.Labels.end());
+  for (const std::string& name : names)
+  {
+    if (std::find(this->ShaderFeatures.begin(), this->ShaderFeatures.end(), name) == this->ShaderFeatures.end())
+    {
+      this->ShaderFeatures.push_back(name);
+    }
   }
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vtkDeepShadowVolumeVS, source.c_str(), "");
@@ -655,10 +716,6 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   {
     this->ReportError("the volume shader failed to compile (see the messages above)");
     return false;
-  }
-  if (frame.Opaque)
-  {
-    frame.Opaque->Capture(window, frame.X0, frame.Y0, frame.Width, frame.Height, false);
   }
 
   // Each feature's uniforms and textures, then the back faces of the box.
@@ -673,17 +730,8 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
       uniforms->SetUniforms(program);
     }
   }
-  std::function<void()> begin, end;
-  if (frame.Segments)
-  {
-    begin = [&] { frame.Segments->Begin(window, frame.SegmentGuest); };
-    end = [&] { frame.Segments->End(window); };
-  }
-  // With layers the shader composited the opaque image itself; segments are not colours.
-  const bool blend = !frame.Layers && !frame.Segments;
   const bool mirrored = glm::determinant(glm::dmat3(frame.Context.IndexToWorld)) < 0.0;
   impl.Box.Draw(window, program, blend, mirrored, begin, end);
-  this->LastPasses.emplace_back(frame.Segments ? "ray-cast-segments" : "ray-cast");
   deepshadow::UnbindVolumeFeatures(frame);
   return true;
 }
@@ -714,6 +762,7 @@ void vtkDeepShadowVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << " (0 = half the smallest spacing)\n";
   os << indent << "Jitter: " << this->UseJittering << " (seed " << this->JitterSeed << ")\n";
   os << indent << "InteractiveShadowLag: " << this->InteractiveShadowLag << " degrees\n";
+  os << indent << "InteractiveShadowSubsampling: " << this->InteractiveShadowSubsampling << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "TransferTableSize: " << this->TransferTableSize << "\n";

@@ -56,6 +56,7 @@
 #ifndef __VTK_WRAP__ // VTK's wrapper parser does not get through glm's templates
 #include <glm/mat4x4.hpp> // For glm::dmat4
 #endif
+#include <functional> // For std::function
 #include <memory> // For std::unique_ptr, std::shared_ptr
 #include <optional> // For std::optional
 #include <string> // For std::string
@@ -113,6 +114,27 @@ public:
    */
   vtkSetClampMacro(InteractiveShadowLag, double, 0.0, 90.0);
   vtkGetMacro(InteractiveShadowLag, double);
+  ///@}
+
+  ///@{
+  /**
+   * Shadows while interacting, looked up on a coarser grid: on the same interactive frames,
+   * an unshaded volume with a technique is drawn in two passes, one shadowed ray per N x N
+   * block of pixels (the shadowed colour over the unshadowed one, and the opacity, per ray)
+   * and then every pixel without any shadow lookup, its colour times that ratio interpolated
+   * from the four nearest blocks (Core/ShadowSubsampling.h). A shadow structure rebuilt on
+   * these frames (its light turned past InteractiveShadowLag) is built N times coarser (a
+   * light-space technique's maps N times smaller a side, down to 64 texels), as the rays
+   * that read it are N pixels apart. The volume keeps its full resolution; the shadows' own
+   * detail is that of the blocks until the next still frame, which is drawn per sample with
+   * the structures in full. On a CPU rasterizer a lookup per sample costs about as much as
+   * the sample, so this is what makes shadows cheap while the view moves. Shaded volumes,
+   * translucent meshes, other volumes along the rays, label maps, several components,
+   * isosurfaces and the user's shader code keep the lookup per sample. 1 (the default): per
+   * sample on every frame; [1, 16] (clamped).
+   */
+  vtkSetClampMacro(InteractiveShadowSubsampling, int, 1, 16);
+  vtkGetMacro(InteractiveShadowSubsampling, int);
   ///@}
 
   ///@{
@@ -391,6 +413,7 @@ protected:
 
   unsigned int JitterSeed = 0;
   double InteractiveShadowLag = 0.0;
+  int InteractiveShadowSubsampling = 1;
   double TerminationOpacity;
   bool EmptySpaceSkipping = true;
   int TransferTableSize = 4096;
@@ -444,8 +467,18 @@ private:
     const glm::dmat4& indexToWorld, double stillStep, double step, double unitScale);
   /** The lights and the technique's structures (the last part of Prepare). */
   bool PrepareLightsAndShadows(deepshadow::RayCastFrame& frame);
-  /** Composes the shader for the frame's features, binds them and casts the rays. */
+  /**
+   * Casts the rays: in one pass, or in the two of shadows on a coarser grid while
+   * interacting (InteractiveShadowSubsampling).
+   */
   bool Draw(deepshadow::RayCastFrame& frame);
+  /**
+   * One pass: composes the shader for the frame's features (`lastSource`: the pass's last
+   * composition, to count changes), binds them and draws the box; `begin` and `end` around
+   * the draw call (a render target).
+   */
+  bool DrawPass(const deepshadow::RayCastFrame& frame, std::string& lastSource, bool blend,
+    const std::function<void()>& begin, const std::function<void()>& end);
   /** Re-uploads the volume if the data changed (and then drops what was made from it). */
   bool UpdateVolume(vtkOpenGLRenderWindow* window, vtkImageData* input);
   /** The transfer table and the empty-space block map, if what they depend on changed. */

@@ -281,7 +281,7 @@ long long vtkDeepShadowVolumeMapper::GetHolderBytes() const
     (impl.GradientOpacity.GetTexture() ? impl.GradientOpacity.GetBytes() : 0) +
     (impl.Mask.GetTexture() ? impl.Mask.GetBytes() : 0) +
     (this->EmptySpaceSkipping ? impl.Occupancy.GetBytes() : 0) + impl.Bound.GetBytes() +
-    (surfaces ? impl.SurfacesGPU.GetBytes() : 0);
+    (surfaces ? impl.SurfacesGPU.GetBytes() : 0) + impl.Ratio.GetBytes();
 }
 
 void vtkDeepShadowVolumeMapper::UpdateComponentGradients(

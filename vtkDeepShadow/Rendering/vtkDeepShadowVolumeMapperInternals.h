@@ -14,6 +14,7 @@
 #include "Volume/OccupancyTexture.h"
 #include "Volume/TransferTableTexture.h"
 #include "Volume/TriangleHierarchy.h"
+#include "RayCast/SubsampledShadows.h"
 #include "RayCast/UserShaderCode.h"
 #include "Volume/VolumeTexture.h"
 
@@ -54,6 +55,8 @@ public:
   // Depth of the opaque geometry, copied from the framebuffer each frame that needs it.
   deepshadow::FramebufferCopy Opaque;
   deepshadow::BoxDrawer Box;
+  // The coarse pass's target of shadows while interacting (InteractiveShadowSubsampling).
+  deepshadow::ShadowRatioTarget Ratio;
   double EffectiveStep = 0.0; // world sample distance of the last frame
 
   // The polyhedral bounds as set (feature Bound).
@@ -61,7 +64,8 @@ public:
   // Surfaces that cast shadows onto the volume, in world space (uploaded by SurfacesGPU).
   std::shared_ptr<const deepshadow::SurfaceSet> Surfaces;
 
-  std::string LastSource;
+  std::string LastSource;       // the composed shader of the ray-cast pass
+  std::string LastCoarseSource; // of the coarse pass of shadows while interacting
 
   // The window the GPU resources were made in (AdoptWindow), if it still exists.
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
@@ -90,6 +94,7 @@ public:
     this->SurfacesGPU.Release(window);
     this->Opaque.Release(window);
     this->Box.Release();
+    this->Ratio.Release(window);
     this->EffectiveStep = 0.0;
     this->PreparedByPass = false;
   }

@@ -37,6 +37,7 @@ struct RayCastFrame
   bool Shade = false;      // the property's shading: gradient and Phong
   bool ShadowTerm = false; // vtkDeepShadowVolumeMapper::OutputShadowTerm
   bool Lit = false;        // lights are evaluated (shading, shadows or the shadow term)
+  bool Interactive = false; // the window asks for 1 frame a second or more (a moving view)
   ProjectionSettings Projection; // a projection blend mode (not Composite): unlit, unshadowed
   /** The technique whose structures are ready; null without one, or when it failed. */
   vtkDeepShadowTechnique* Technique = nullptr;
@@ -60,6 +61,20 @@ struct RayCastFrame
    */
   std::optional<glm::dmat3> WorldToDataset;
   double DatasetScale = 1.0; // the matrix's mean scale, which the tables are corrected for
+  /**
+   * Shadows while interacting, looked up on a coarser grid (RayCast/SubsampledShadows.h):
+   * which of its two passes this draw is, and the coarse texels the full pass reads.
+   */
+  enum class ShadowRatioPass
+  {
+    None,   // shadows per sample, as every still frame
+    Coarse, // the shadowed rays of the coarse grid (feature ShadowRatio)
+    Full    // every pixel without the technique, times the ratio (feature ShadowRatioApply)
+  };
+  ShadowRatioPass RatioPass = ShadowRatioPass::None;
+  int RatioScale = 1;                    // view pixels per coarse ray, along each axis
+  vtkTextureObject* RatioTexels = nullptr; // the coarse pass's targets, read by the full pass
+  vtkTextureObject* RatioGuides = nullptr;
 };
 
 }

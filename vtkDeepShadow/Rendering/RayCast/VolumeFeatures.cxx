@@ -1,6 +1,7 @@
 #include "RayCast/VolumeFeatures.h"
 
 #include "CoreAdapter.h"
+#include "Core/ShadowSubsampling.h"
 #include "GL/FramebufferCopy.h"
 #include "LightingUniforms.h"
 #include "Shadows/OtherVolumeShadows.h"
@@ -268,6 +269,22 @@ std::vector<VolumeFeature> ShadingFeatures()
       },
       nullptr },
     { "ShadowTerm", [](const Frame& f) { return f.ShadowTerm; }, nullptr, nullptr, nullptr },
+    { "ShadowRatio", [](const Frame& f) { return f.RatioPass == Frame::ShadowRatioPass::Coarse; }, nullptr,
+      [](const Frame& f, UniformSink& sink) { sink.Set("u_ratioScale", static_cast<float>(f.RatioScale)); },
+      nullptr },
+    { "ShadowRatioApply", [](const Frame& f) { return f.RatioPass == Frame::ShadowRatioPass::Full; }, nullptr,
+      [](const Frame& f, UniformSink& sink) {
+        f.RatioTexels->Activate();
+        sink.Set("u_shadowRatio", f.RatioTexels->GetTextureUnit());
+        f.RatioGuides->Activate();
+        sink.Set("u_ratioGuide", f.RatioGuides->GetTextureUnit());
+        sink.Set("u_ratioScale", static_cast<float>(f.RatioScale));
+        sink.Set("u_ratioGuideScale", static_cast<float>(ShadowRatioGuideScale));
+      },
+      [](const Frame& f) {
+        f.RatioTexels->Deactivate();
+        f.RatioGuides->Deactivate();
+      } },
     { "Hash", [](const Frame& f) { return f.Jitter; }, nullptr, nullptr, nullptr },
     { "Jitter", [](const Frame& f) { return f.Jitter; }, nullptr,
       [](const Frame& f, UniformSink& sink) { sink.Set("u_jitterSeed", f.JitterSeed); }, nullptr },

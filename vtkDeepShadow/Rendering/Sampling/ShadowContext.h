@@ -75,6 +75,14 @@ struct ShadowContext
    * that structure; 0 (still frames) rebuilds whenever a light moved.
    */
   double LightLagDegrees = 0.0;
+  /**
+   * Interactive frames with coarser shadows (vtkDeepShadowVolumeMapper::
+   * InteractiveShadowSubsampling N > 1): a structure that must be rebuilt is built N times
+   * coarser (a light-space technique's maps N times smaller a side, as the coarse rays are N
+   * pixels apart) and stays so while these frames last; the first frame without this builds it
+   * in full again. 1: full detail.
+   */
+  int RebuildCoarsening = 1;
   const BoundTextures* Bound = nullptr; // null: the volume fills its box
   const SurfaceTextures* Surfaces = nullptr; // null: only the volume casts shadows
   const SurfaceSet* CastingSurfaces = nullptr; // the same surfaces in world space (CPU side)

@@ -60,10 +60,13 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Projection::Dec
 //DeepShadow::UserShader::Dec
 //DeepShadow::DatasetOpacity::Dec
+//DeepShadow::ShadowRatio::Dec
+//DeepShadow::ShadowRatioApply::Dec
 
 void main()
 {
   vec2 pixel = gl_FragCoord.xy - u_viewport.xy;
+  //DeepShadow::ShadowRatio::Pixel
   vec2 ndc = 2.0 * pixel / u_viewport.zw - 1.0;
   vec3 rayOrigin = unproject(ndc, -1.0);
   vec3 rayDirection = normalize(unproject(ndc, 1.0) - rayOrigin);
@@ -95,6 +98,7 @@ void main()
   //DeepShadow::Isosurface::Init
   //DeepShadow::DatasetOpacity::Init
   //DeepShadow::UserShader::Init
+  //DeepShadow::ShadowRatio::Init
   for (int k = 0;; ++k)
   {
     float t = t0 + (float(k) + offset) * u_step;
@@ -125,10 +129,12 @@ void main()
       continue;
     }
     vec3 color = transfer.rgb;
+    //DeepShadow::ShadowRatio::Unlit
     //DeepShadow::Lighting::Impl
     //DeepShadow::LabelMap::Lit
     //DeepShadow::VolumeSegments::Impl
     //DeepShadow::UserShader::Sample
+    //DeepShadow::ShadowRatio::Impl
     compositeFrontToBack(accumulated, color, transfer.a);
   }
   //DeepShadow::TranslucentLayers::Exit
@@ -136,8 +142,10 @@ void main()
   //DeepShadow::Projection::Exit
   //DeepShadow::UserShader::Exit
   //DeepShadow::UserShader::ExitEnd
+  //DeepShadow::ShadowRatioApply::Exit
   // Premultiplied; blended with (ONE, ONE_MINUS_SRC_ALPHA), or replacing the pixel when the
   // translucent layers (and the opaque image behind them) are composited here.
   fragColor = accumulated;
+  //DeepShadow::ShadowRatio::Output
   //DeepShadow::UserShader::Output
 }

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <utility>
 
 namespace deepshadow
 {
@@ -66,8 +67,8 @@ bool Within(const glm::dvec3& built, const glm::dvec3& now, bool positional, dou
 }
 }
 
-bool ShadowSlots::Stale(
-  int slot, const ShadowContext& context, const std::vector<double>& parameters)
+ShadowSlots::BuildKey ShadowSlots::Current(
+  int slot, const ShadowContext& context, const std::vector<double>& parameters, bool& keeps) const
 {
   const deepshadow::Light& light = context.Lights[static_cast<size_t>(this->LightOfSlot[slot])];
   std::vector<double> shared = parameters;
@@ -82,25 +83,44 @@ bool ShadowSlots::Stale(
     }
   }
   const glm::dvec3 centre = glm::dvec3(context.IndexToWorld * glm::dvec4(0.5 * glm::dvec3(context.Dims - 1), 1.0));
+  keeps = false;
+  if (slot < static_cast<int>(this->Built.size()))
+  {
+    const BuildKey& built = this->Built[static_cast<size_t>(slot)];
+    const bool sameLight = built.Position == light.Position && built.FocalPoint == light.FocalPoint;
+    // (The same Shared holds the kind and the transform, so the centre is the build's.) A
+    // structure whose light moved lags it, and the next frame without a lag (a still frame)
+    // finds its light moved and rebuilds it.
+    keeps = !built.Shared.empty() && built.Shared == shared &&
+      (sameLight ||
+        (context.LightLagDegrees > 0.0 &&
+          Within(LightFrom(light.Positional, built.Position, built.FocalPoint, centre),
+            LightFrom(light.Positional, light.Position, light.FocalPoint, centre), light.Positional,
+            context.LightLagDegrees)));
+  }
+  return BuildKey{ shared, light.Position, light.FocalPoint };
+}
+
+bool ShadowSlots::WouldRebuild(int slot, const ShadowContext& context, const std::vector<double>& parameters) const
+{
+  bool keeps = false;
+  this->Current(slot, context, parameters, keeps);
+  return !keeps;
+}
+
+bool ShadowSlots::Stale(int slot, const ShadowContext& context, const std::vector<double>& parameters)
+{
+  bool keeps = false;
+  BuildKey now = this->Current(slot, context, parameters, keeps);
+  if (keeps)
+  {
+    return false;
+  }
   if (static_cast<int>(this->Built.size()) <= slot)
   {
     this->Built.resize(static_cast<size_t>(slot) + 1);
   }
-  BuildKey& built = this->Built[static_cast<size_t>(slot)];
-  const bool sameLight = built.Position == light.Position && built.FocalPoint == light.FocalPoint;
-  // (The same Shared holds the kind and the transform, so the centre is the build's.)
-  if (!built.Shared.empty() && built.Shared == shared &&
-    (sameLight ||
-      (context.LightLagDegrees > 0.0 &&
-        Within(LightFrom(light.Positional, built.Position, built.FocalPoint, centre),
-          LightFrom(light.Positional, light.Position, light.FocalPoint, centre), light.Positional,
-          context.LightLagDegrees))))
-  {
-    // Kept; a structure whose light moved lags it, and the next frame without a lag (a still
-    // frame) finds its light moved and rebuilds it.
-    return false;
-  }
-  built = BuildKey{ shared, light.Position, light.FocalPoint };
+  this->Built[static_cast<size_t>(slot)] = std::move(now);
   return true;
 }
 

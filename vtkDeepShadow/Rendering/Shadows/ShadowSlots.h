@@ -35,6 +35,8 @@ public:
    * the volume's centre since its build is kept.
    */
   bool Stale(int slot, const ShadowContext& context, const std::vector<double>& parameters);
+  /** Whether Stale() would say so now, remembering nothing. */
+  bool WouldRebuild(int slot, const ShadowContext& context, const std::vector<double>& parameters) const;
   /** Forget all builds (the storage was reallocated). */
   void Invalidate() { this->Built.clear(); }
 
@@ -45,6 +47,8 @@ private:
     glm::dvec3 Position{ 0.0 };
     glm::dvec3 FocalPoint{ 0.0 };
   };
+  /** What slot `slot`'s structure depends on now; `keeps`: whether its last build still serves. */
+  BuildKey Current(int slot, const ShadowContext& context, const std::vector<double>& parameters, bool& keeps) const;
   std::vector<int> LightOfSlot;
   std::vector<BuildKey> Built;
 };

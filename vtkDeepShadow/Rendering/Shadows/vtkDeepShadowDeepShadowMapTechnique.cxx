@@ -143,7 +143,7 @@ bool vtkDeepShadowDeepShadowMapTechnique::Hooks::AllocateStructures(
   long long start = 0;
   for (int slot = 0; slot < slots.Count(); ++slot)
   {
-    const size_t texels = static_cast<size_t>(self->GetFaceCount(slot)) * self->MapSize * self->MapSize;
+    const size_t texels = static_cast<size_t>(self->GetFaceCount(slot)) * self->GetBuiltMapSize() * self->GetBuiltMapSize();
     limits.push_back(deepshadow::ChunkPoolCapacity(texels, self->ChunkNodes, self->Colored, self->Layers, self->PoolMegabytes));
     start = std::max(start, deepshadow::ChunkPoolCapacity(texels, self->ChunkNodes, self->Colored, self->Layers, 0.0) / 8);
   }

@@ -44,6 +44,7 @@ public:
   deepshadow::ComputeProgram TotalsPass;
   unsigned int Totals = 0;
   int TotalsLayers = 0;
+  int TotalsSize = 0;
   std::string BrickProblem; // said once while it lasts
   bool SaidOverlap = false;  // the same
 
@@ -54,6 +55,7 @@ public:
       glDeleteTextures(1, &this->Totals);
       this->Totals = 0;
       this->TotalsLayers = 0;
+      this->TotalsSize = 0;
     }
     this->TotalsPass.Release();
     this->Bricks.Release();
@@ -147,6 +149,9 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   vtkDeepShadowLightSpaceTechnique* self = this->Self;
   Maps& maps = *self->LightMaps;
   maps.Window = context.Window;
+  // Coarser while interacting (GetBuildCoarsening): N times smaller a side, down to 64 texels.
+  const int coarsening = self->GetBuildCoarsening();
+  const int size = coarsening > 1 ? std::max(std::min(self->MapSize, 64), self->MapSize / coarsening) : self->MapSize;
   GLint maxSize = 0, maxLayers = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
@@ -161,7 +166,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   // With other bricks, every brick's faces see the union of their boxes (collective).
   std::string problem;
   const bool exchanging = maps.Bricks.BeginFrame(
-    bounds, self->MapSize, SlotLights(context, slots), self->GetParameters().IsColored() ? 3 : 1, problem);
+    bounds, size, SlotLights(context, slots), self->GetParameters().IsColored() ? 3 : 1, problem);
   if (problem != maps.BrickProblem && !problem.empty())
   {
     vtkWarningWithObjectMacro(self, << "shadows are not shared between bricks: " << problem);
@@ -202,7 +207,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   }
   const unsigned int format = self->GetTexelFormat();
   const int layersPerFace = this->GetLayersPerFace(context);
-  const bool sameShape = maps.Texture && maps.Size == self->MapSize && maps.Format == format &&
+  const bool sameShape = maps.Texture && maps.Size == size && maps.Format == format &&
     maps.LayersPerFace == layersPerFace;
   // Grow only: fewer shadow-casting lights keep the others' maps (not between bricks, whose
   // layers must agree whatever each brick drew before).
@@ -228,17 +233,17 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
     // active unit and what its textures are bound to (ParaView warns every frame when they
     // change behind it).
     maps.Texture = deepshadow::NewArrayTexture(
-      context.Window, format, self->MapSize, self->MapSize, static_cast<int>(layers));
+      context.Window, format, size, size, static_cast<int>(layers));
     if (glGetError() != GL_NO_ERROR)
     {
       self->LastError = "the GL could not allocate " +
-        std::to_string(layers * self->MapSize * self->MapSize * BytesPerTexel(format)) +
+        std::to_string(layers * size * size * BytesPerTexel(format)) +
         " bytes of light-space maps";
       deepshadow::DeleteTexture(maps.Texture);
       return false;
     }
     maps.Format = format;
-    maps.Size = self->MapSize;
+    maps.Size = size;
     maps.Slabs = slabs;
     maps.FacesPerLight = facesPerLight;
     maps.LayersPerFace = layersPerFace;
@@ -256,6 +261,11 @@ long long vtkDeepShadowLightSpaceTechnique::GetStructureBytes() const
   }
   return static_cast<long long>(maps.Size) * maps.Size * maps.Slabs * maps.FacesPerLight *
     maps.LayersPerFace * BytesPerTexel(maps.Format);
+}
+
+int vtkDeepShadowLightSpaceTechnique::GetBuiltMapSize() const
+{
+  return this->LightMaps->Size;
 }
 
 double vtkDeepShadowLightSpaceTechnique::GetCasterRadius() const
@@ -281,7 +291,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
     return false;
   }
   deepshadow::UniformSink sink(&maps.Build);
-  maps.Build.Set("u_size", self->MapSize);
+  maps.Build.Set("u_size", maps.Size);
   maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
   maps.Build.Set("u_lightDepthRange", static_cast<float>(deepshadow::LightDepthRange(maps.CasterRadius)));
   this->SetBuildUniforms(sink, context);
@@ -289,7 +299,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
   if (defers)
   {
     // Room for every texel of a face.
-    const GLsizeiptr bytes = sizeof(GLuint) * (1 + static_cast<GLsizeiptr>(self->MapSize) * self->MapSize);
+    const GLsizeiptr bytes = sizeof(GLuint) * (1 + static_cast<GLsizeiptr>(maps.Size) * maps.Size);
     GLint64 allocated = 0;
     if (!maps.Deferred)
     {
@@ -327,7 +337,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, maps.Deferred);
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(deferred), &deferred);
       }
-      maps.Build.Dispatch(glm::ivec3(self->MapSize, self->MapSize, 1), glm::ivec3(8, 8, 1));
+      maps.Build.Dispatch(glm::ivec3(maps.Size, maps.Size, 1), glm::ivec3(8, 8, 1));
       self->LastPasses.emplace_back("light-space-build");
       if (defers)
       {
@@ -378,7 +388,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
   }
   const int layers = slots.Count() * maps.FacesPerLight;
   const int channels = self->GetParameters().IsColored() ? 3 : 1;
-  if (!rebuilt.empty() || !maps.Totals || maps.TotalsLayers != layers)
+  if (!rebuilt.empty() || !maps.Totals || maps.TotalsLayers != layers || maps.TotalsSize != maps.Size)
   {
     // This brick's total per texel: the technique's own lookup beyond the texel ray's end.
     const std::string lookup = deepshadow::LightSpaceSource(maps.Faces) + self->GetMapLookupSource();
@@ -386,7 +396,7 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
     {
       return false;
     }
-    if (!maps.Totals || maps.TotalsLayers != layers)
+    if (!maps.Totals || maps.TotalsLayers != layers || maps.TotalsSize != maps.Size)
     {
       if (maps.Totals)
       {
@@ -397,21 +407,22 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::ExchangeStructures(deepshadow::Sha
       const int unit = units->Allocate();
       context.Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
       glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Totals);
-      glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, self->MapSize, self->MapSize, layers);
+      glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_RGBA32F, maps.Size, maps.Size, layers);
       glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
       units->Free(unit);
       maps.TotalsLayers = layers;
+      maps.TotalsSize = maps.Size;
     }
     deepshadow::UniformSink sink(&maps.TotalsPass);
     this->BindLookup(sink, context);
     maps.TotalsPass.Set("u_slots", slots.Count());
     glBindImageTexture(0, maps.Totals, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    maps.TotalsPass.Dispatch(glm::ivec3(self->MapSize, self->MapSize, layers), glm::ivec3(8, 8, 1));
+    maps.TotalsPass.Dispatch(glm::ivec3(maps.Size, maps.Size, layers), glm::ivec3(8, 8, 1));
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     self->UnbindLookup();
     Internals::EndBuildPass(self, context);
     self->LastPasses.emplace_back("light-space-totals");
-    maps.Bricks.ReadTotals(context.Window, maps.Totals, self->MapSize, layers, channels);
+    maps.Bricks.ReadTotals(context.Window, maps.Totals, maps.Size, layers, channels);
   }
   std::string problem;
   if (!maps.Bricks.Exchange(context.Window, SlotLights(context, slots), maps.FacesPerLight, problem))
@@ -469,7 +480,7 @@ void vtkDeepShadowLightSpaceTechnique::Hooks::BindLookup(
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps.Texture);
   sink.Set("u_shadowMap", maps.Unit);
   deepshadow::SetLightSpaceFaceUniforms(
-    sink, maps.Faces, static_cast<float>(self->MapSize), maps.FacesPerLight, maps.LayersPerFace);
+    sink, maps.Faces, static_cast<float>(maps.Size), maps.FacesPerLight, maps.LayersPerFace);
   maps.Clusters.SetLookupUniforms(sink, maps.Faces);
   if (maps.Bricks.Exchanging())
   {
@@ -507,7 +518,8 @@ void vtkDeepShadowLightSpaceTechnique::AddStatistics(Statistics& statistics) con
     faces += count;
   }
   statistics.emplace_back("clusters", faces);
-  statistics.emplace_back("cluster_texels", faces * this->MapSize * this->MapSize);
+  statistics.emplace_back("cluster_texels", faces * this->LightMaps->Size * this->LightMaps->Size);
+  statistics.emplace_back("map_size", this->LightMaps->Size);
 }
 
 void vtkDeepShadowLightSpaceTechnique::PrintSelf(ostream& os, vtkIndent indent)

@@ -62,6 +62,13 @@ public:
   vtkGetMacro(ClusterDistance, double);
   ///@}
 
+  /**
+   * Texels per side of the maps in use: MapSize, or MapSize / N (down to 64) when rebuilt
+   * while interacting with coarser shadows (vtkDeepShadowVolumeMapper::
+   * InteractiveShadowSubsampling N); 0 before the first build. The statistic "map_size".
+   */
+  int GetBuiltMapSize() const;
+
   /** Clustered faces per shadowed light in the last frame (0 when not clustered). */
   std::vector<int> GetClusterCounts() const;
 
@@ -104,9 +111,11 @@ protected:
 
   // ---- vtkDeepShadowTechnique ----
   int GetMaxShadowLights() const override { return 4; }
+  /** Maps N times smaller while interacting, when a light moved past the lag. */
+  bool CoarsensWhileInteracting() const override { return true; }
   long long GetStructureBytes() const override;
 #ifndef __VTK_WRAP__
-  /** clusters (faces over all shadowed lights, 0 unclustered) and cluster_texels. */
+  /** clusters (faces over all shadowed lights, 0 unclustered), cluster_texels and map_size. */
   void AddStatistics(Statistics& statistics) const override;
 #endif
   std::string GetLookupSource() const override;

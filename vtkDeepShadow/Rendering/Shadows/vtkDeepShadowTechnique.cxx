@@ -193,6 +193,11 @@ void vtkDeepShadowTechnique::FillParameters(deepshadow::ShadowParameters& parame
   parameters.VolumeSize = this->ShadowVolumeSize;
 }
 
+int vtkDeepShadowTechnique::GetBuildCoarsening() const
+{
+  return this->Impl->Coarsening;
+}
+
 double Internals::FeelerStep(
   const vtkDeepShadowTechnique* self, const deepshadow::ShadowContext& context)
 {
@@ -236,16 +241,28 @@ bool Internals::Prepare(vtkDeepShadowTechnique* self, deepshadow::ShadowContext&
                                     << " cast no shadow (" << self->GetName() << ")");
   }
   impl.DroppedSaid = dropped;
-  if (!impl.TechniqueHooks->AllocateStructures(context, impl.Slots))
-  {
-    impl.Slots.Invalidate();
-    return false;
-  }
   std::vector<double> key = self->GetStructureKey();
   key.insert(key.end(), { self->StepFactor, self->Threshold, static_cast<double>(self->ThresholdMode),
     colored ? 1.0 : 0.0, impl.SkipEmpty ? 1.0 : 0.0 });
   const std::vector<double> transferKey = context.TransferKey(colored);
   key.insert(key.end(), transferKey.begin(), transferKey.end());
+  // Coarser structures while interacting: built so when one must be rebuilt, kept so while the
+  // frames last; a frame without them builds in full (the allocation changes, so every slot).
+  bool coarse = false;
+  if (context.RebuildCoarsening > 1 && self->CoarsensWhileInteracting())
+  {
+    coarse = impl.Coarsening > 1;
+    for (int slot = 0; slot < impl.Slots.Count() && !coarse; ++slot)
+    {
+      coarse = impl.Slots.WouldRebuild(slot, context, key);
+    }
+  }
+  impl.Coarsening = coarse ? context.RebuildCoarsening : 1;
+  if (!impl.TechniqueHooks->AllocateStructures(context, impl.Slots))
+  {
+    impl.Slots.Invalidate();
+    return false;
+  }
   std::set<int> rebuilt;
   std::vector<int> stale;
   for (int slot = 0; slot < impl.Slots.Count(); ++slot)

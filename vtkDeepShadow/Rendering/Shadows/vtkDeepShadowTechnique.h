@@ -208,6 +208,12 @@ protected:
   /** The parameters only its lookup depends on (a cache depends on them too). */
   virtual std::vector<double> GetLookupKey() const { return {}; }
   virtual long long GetStructureBytes() const { return 0; }
+  /**
+   * Whether its structures can be built coarser while interacting
+   * (vtkDeepShadowVolumeMapper::InteractiveShadowSubsampling); then GetBuildCoarsening()
+   * says how much.
+   */
+  virtual bool CoarsensWhileInteracting() const { return false; }
 #ifndef __VTK_WRAP__
   /** Appends this technique's statistics (see GetStatistics(); an override calls its parent's first). */
   virtual void AddStatistics(Statistics&) const {}
@@ -230,6 +236,10 @@ protected:
   class Hooks;
 
   // ---- Helpers for techniques ----
+
+  /** How many times coarser this frame's structures are built: 1, or the
+   * ShadowContext's RebuildCoarsening (see CoarsensWhileInteracting()). */
+  int GetBuildCoarsening() const;
 
   /** Sets `member` to `value` clamped to [low, high] (NaN to low), warning if it clamped. */
   template <typename T>

@@ -164,6 +164,8 @@ public:
   deepshadow::ShadowSlots Slots;
   // Shadow-casting lights left without a slot at the last warning (said once while it lasts).
   int DroppedSaid = 0;
+  // How many times coarser the structures are built (ShadowContext::RebuildCoarsening).
+  int Coarsening = 1;
   // Build timing of the current Prepare.
   double PassStart = 0.0;
   double PassMilliseconds = 0.0;

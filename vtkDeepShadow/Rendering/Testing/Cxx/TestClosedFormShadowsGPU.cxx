@@ -28,6 +28,7 @@
 #include "vtkPoints.h"
 #include "vtkProperty.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace cf = deepshadow::closedform;
@@ -285,19 +286,41 @@ bool BallOverGround(const std::string& name, const glm::dvec3& color)
 }
 
 // 2. The slab seen edge-on along +y, lit at 30 degrees in the x-z plane: its own samples.
-bool SlabEdgeOn(const std::string& name)
+// With `subsampling` > 0, the same slab drawn white and unshaded on an interactive frame,
+// its shadows from one ray per `subsampling` x `subsampling` pixels
+// (InteractiveShadowSubsampling): lit isotropically with ambient A, a pixel is its
+// coverage times A + (1 - A) V, V constant along the view ray, so V is read back from the
+// colour; besides the rule's tolerance the ratio's bilinear interpolation between rays h
+// apart may add |V''| h^2 / 8 <= (sigma / cos 30)^2 h^2 / 8. `technique` false: the control,
+// drawn without one.
+bool SlabEdgeOn(const std::string& name, int subsampling = 0, bool technique = true)
 {
   const auto slab = cf::Slab(0.06);
   const deepshadow::Light light = cf::Directional({ std::sin(cf::Pi / 6.0), 0.0, std::cos(cf::Pi / 6.0) });
   Stage stage({ 19.5, 19.5, 19.5 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 }, 20.0);
   const deepshadow::ShadowParameters p = Spec(name);
-  vtkDeepShadowVolumeMapper* mapper = stage.AddVolume(*slab, Make(p), true, true);
+  const bool interacting = subsampling > 0;
+  vtkDeepShadowVolumeMapper* mapper =
+    stage.AddVolume(*slab, technique ? Make(p) : nullptr, true, !interacting);
+  constexpr double ambient = 0.2;
+  if (interacting)
+  {
+    vtkVolumeProperty* property = vtkVolume::SafeDownCast(stage.Renderer->GetVolumes()->GetLastProp())->GetProperty();
+    property->GetRGBTransferFunction()->AddRGBPoint(0.0, 1.0, 1.0, 1.0);
+    property->GetRGBTransferFunction()->AddRGBPoint(1.0, 1.0, 1.0, 1.0);
+    property->SetAmbient(ambient);
+    mapper->SetInteractiveShadowSubsampling(subsampling);
+    stage.Window->SetDesiredUpdateRate(5.0);
+  }
   stage.Renderer->AddLight(LightOf(light));
   stage.Window->Render();
   const deepshadow::Image picture = deepshadow::testing::Grab(stage.Window);
   // Every view ray crosses the slab's 39 units along y: its opacity composites the term.
   const double coverage = 1.0 - cf::Transmittance(0.06, 1.0, 39.0);
   const double cell = p.Cached ? 39.0 / (deepshadow::ShadowVolumeDims(slab->Grid->GetDims(), p.VolumeSize).x - 1) : 0.0;
+  const double h = subsampling * 40.0 / stage.Size;
+  const double sigmaAlongZ = -std::log(1.0 - 0.06) / std::cos(cf::Pi / 6.0);
+  const double interpolation = sigmaAlongZ * sigmaAlongZ * h * h / 8.0;
   Tally tally;
   for (int y = 0; y < stage.Size; ++y)
     for (int x = 0; x < stage.Size; ++x)
@@ -305,11 +328,31 @@ bool SlabEdgeOn(const std::string& name)
       const glm::dvec3 at = stage.OnPlane(x, y, 1, 19.5);
       if (at.x > 5.0 && at.x < 23.0 && at.z > 9.0 && at.z < 30.0)
       {
-        Judge(tally, *slab, p, light, at, cell, picture.At(x, y) / coverage, (Extra + KnownSlabLeak(name)) / coverage);
+        const double extra = (Extra + KnownSlabLeak(name)) / coverage;
+        const glm::dvec3 seen = picture.At(x, y) / coverage;
+        if (interacting)
+        {
+          Judge(tally, *slab, p, light, at, cell, (seen - ambient) / (1.0 - ambient),
+            extra / (1.0 - ambient) + interpolation);
+        }
+        else
+        {
+          Judge(tally, *slab, p, light, at, cell, seen, extra);
+        }
       }
     }
+  const std::string what = name + ", slab edge-on (its own samples" +
+    (interacting ? ", while interacting, a ray per " + std::to_string(subsampling) + "^2 pixels" : "") +
+    (technique ? ")" : "): drawn without it");
+  if (!technique)
+  {
+    // The control: the check fails on a picture without shadows.
+    return Check(what + " fails", !Report(what, tally, 1500));
+  }
+  const std::vector<std::string>& passes = mapper->GetLastPasses();
+  const bool coarse = std::find(passes.begin(), passes.end(), "ray-cast-coarse-shadows") != passes.end();
   return Check(name + ": no mapper error", mapper->GetLastError().empty()) &&
-    Report(name + ", slab edge-on (its own samples)", tally, 1500);
+    Check(name + ": the coarse pass ran while interacting", coarse == interacting) && Report(what, tally, 1500);
 }
 
 // 3 and 4. A medium filling [0, 40]^3 that casts through a shadow property and is not drawn;
@@ -415,6 +458,18 @@ int TestClosedFormShadowsGPU(int, char*[])
   {
     ok = SlabEdgeOn(name) && ok;
   }
+  // Shadows while interacting from a coarser grid, for the grey translucent techniques: a
+  // binary technique's edge is a step, which rays h apart spread over h, and a coloured one
+  // casts the drawn (here white) colour, which is not the body's.
+  for (const std::string& name : cf::RegistryTechniques())
+  {
+    const deepshadow::ShadowParameters p = Spec(name);
+    if (!cf::IsBinary(p) && !p.IsColored())
+    {
+      ok = SlabEdgeOn(name, 4) && ok;
+    }
+  }
+  ok = SlabEdgeOn("dsm", 4, false) && ok;
   for (const char* name : { "rays", "dsm", "dsm:chunk-nodes=2", "dsm3", "cssm", "shadowmap", "rays-opaque" })
   {
     ok = MediumOntoPlane(name, false, black) && ok;

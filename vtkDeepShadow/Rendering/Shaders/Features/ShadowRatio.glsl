@@ -1,0 +1,24 @@
+// Feature ShadowRatio: the coarse pass of shadows while interacting
+// (vtkDeepShadowVolumeMapper::InteractiveShadowSubsampling; deepshadow::MakeShadowRatioTexel
+// and RenderShadowSubsampled in Core/ShadowSubsampling.h are the CPU twin). One ray per
+// u_ratioScale x u_ratioScale block of the view's pixels, through the block's centre, marched
+// shadowed as usual; it writes, per channel, its shadowed composite over the composite of the
+// samples' colours before lighting (what the full pass draws) and its opacity, and that
+// unlit composite itself. Drawn into targets of the coarse grid's size, not blended;
+// ShadowRatioApply reads them.
+//@Dec
+uniform float u_ratioScale;
+layout(location = 1) out vec4 ratioGuide;
+//@Pixel
+  pixel = gl_FragCoord.xy * u_ratioScale; // the block's centre, in the view's pixels
+//@Init
+  vec3 unlitAccumulated = vec3(0.0);
+//@Unlit
+    vec3 unlitColor = color;
+//@Impl
+    unlitAccumulated += (1.0 - accumulated.a) * transfer.a * unlitColor;
+//@Output
+  fragColor = vec4(mix(vec3(1.0), accumulated.rgb / max(unlitAccumulated, vec3(1e-30)),
+                     greaterThan(unlitAccumulated, vec3(1e-6))),
+    accumulated.a);
+  ratioGuide = vec4(unlitAccumulated, 0.0);
