@@ -15,10 +15,11 @@
 // pass's own colour, so it costs the march nothing. The picture keeps the full resolution of
 // the volume; only the shadows' own detail is coarser.
 //
-// An unshaded volume (the case this serves: ParaView's default) is lit isotropically with a
-// technique and emits its colour without one; since the lights add linearly, its shadowed
-// colour along a ray is its emitted colour times the weighted mean of (A + B V) over the
-// samples, which the ratio is, exactly, where neighbouring rays see the same shadows.
+// An unshaded volume (ParaView's default) is lit isotropically with a technique and emits its
+// colour without one; since the lights add linearly, its shadowed colour along a ray is its
+// emitted colour times the weighted mean of (A + B V) over the samples, which the ratio is,
+// exactly, where neighbouring rays see the same shadows. A shaded volume's ratio is of its
+// shadowed lighting over the same lighting without shadows, which the full pass draws.
 #ifndef deepshadow_ShadowSubsampling_h
 #define deepshadow_ShadowSubsampling_h
 

@@ -113,6 +113,11 @@ ShaderFeature LightingShaderFeature(bool positional, bool fromEye)
     std::string("#define POSITIONAL_LIGHTS ") + (positional ? "1" : "0") + "\n#define LIGHT_FROM_EYE " + (fromEye ? "1" : "0"));
 }
 
+ShaderFeature ShadowRatioShaderFeature(bool shaded)
+{
+  return WithDefines("ShadowRatio", vtkDeepShadowFeatureShadowRatio, shaded ? "#define SHADOW_RATIO_SHADED" : "");
+}
+
 ShaderFeature VolumeSegmentsShaderFeature(int segments)
 {
   std::string outputs = "#define SEGMENT_OUTPUTS";

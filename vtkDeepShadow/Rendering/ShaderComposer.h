@@ -68,6 +68,12 @@ ShaderFeature VTKShadingShaderFeature(int path, bool reflection);
  * embedded Lighting keeps both (the meshes' shader).
  */
 ShaderFeature LightingShaderFeature(bool positional, bool fromEye);
+/**
+ * The ShadowRatio feature (the coarse pass of shadows while interacting), for a shaded volume
+ * (SHADOW_RATIO_SHADED: the unshadowed colour is the sample lit with its shadows off) or not
+ * (the sample's colour before lighting).
+ */
+ShaderFeature ShadowRatioShaderFeature(bool shaded);
 /** The VolumeSegments feature: the march written as `segments` pieces (Rendering/Translucency). */
 ShaderFeature VolumeSegmentsShaderFeature(int segments);
 

@@ -119,18 +119,18 @@ public:
   ///@{
   /**
    * Shadows while interacting, looked up on a coarser grid: on the same interactive frames,
-   * an unshaded volume with a technique is drawn in two passes, one shadowed ray per N x N
-   * block of pixels (the shadowed colour over the unshadowed one, and the opacity, per ray)
-   * and then every pixel without any shadow lookup, its colour times that ratio interpolated
-   * from the four nearest blocks (Core/ShadowSubsampling.h). A shadow structure rebuilt on
+   * a volume with a technique is drawn in two passes, one shadowed ray per N x N block of
+   * pixels (the shadowed colour over the unshadowed one, and the opacity, per ray) and then
+   * every pixel without any shadow lookup (lit, if shaded, by the same lights), its colour
+   * times that ratio interpolated from the four nearest blocks (Core/ShadowSubsampling.h). A shadow structure rebuilt on
    * these frames (its light turned past InteractiveShadowLag) is built N times coarser (a
    * light-space technique's maps N times smaller a side, down to 64 texels), as the rays
    * that read it are N pixels apart. The volume keeps its full resolution; the shadows' own
    * detail is that of the blocks until the next still frame, which is drawn per sample with
    * the structures in full. On a CPU rasterizer a lookup per sample costs about as much as
-   * the sample, so this is what makes shadows cheap while the view moves. Shaded volumes,
-   * translucent meshes, other volumes along the rays, label maps, several components,
-   * isosurfaces and the user's shader code keep the lookup per sample. 1 (the default): per
+   * the sample, so this is what makes shadows cheap while the view moves. Translucent
+   * meshes, other volumes along the rays, label maps, several components, isosurfaces, the
+   * user's shader code and the shadow term keep the lookup per sample. 1 (the default): per
    * sample on every frame; [1, 16] (clamped).
    */
   vtkSetClampMacro(InteractiveShadowSubsampling, int, 1, 16);

@@ -13,10 +13,6 @@ namespace deepshadow
 std::string WhyShadowsPerSample(const RayCastFrame& frame)
 {
   const ShadowContext& context = frame.Context;
-  if (frame.Shade)
-  {
-    return "a shaded volume";
-  }
   if (frame.ShadowTerm)
   {
     return "the shadow term is drawn";
@@ -62,7 +58,7 @@ RayCastFrame FullPassOf(const RayCastFrame& frame, int scale, const ShadowRatioT
   full.RatioGuides = target.GetGuides();
   full.Technique = nullptr;
   full.Others = nullptr;
-  full.Lit = false; // unshaded (WhyShadowsPerSample): the colour, unlit
+  full.Lit = frame.Shade; // lit without shadows, or (unshaded) the colour
   return full;
 }
 

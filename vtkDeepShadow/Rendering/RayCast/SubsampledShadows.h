@@ -22,9 +22,9 @@ namespace deepshadow
 
 /**
  * Why `frame` (interactive, with a technique) cannot take its shadows from the coarse grid,
- * or "" when it can: an unshaded volume of one component composited alone (no translucent
- * meshes, no other volume interleaved, no shader code of the user's, no label map or
- * isosurface, the colour not the shadow term). The others keep a lookup per sample.
+ * or "" when it can: a volume of one component composited alone (no translucent meshes, no
+ * other volume interleaved, no shader code of the user's, no label map or isosurface, the
+ * colour not the shadow term). The others keep a lookup per sample.
  */
 std::string WhyShadowsPerSample(const RayCastFrame& frame);
 
@@ -39,8 +39,8 @@ class ShadowRatioTarget;
 /** `frame` as its coarse pass draws it, one ray per `scale` x `scale` pixels (feature ShadowRatio). */
 RayCastFrame CoarsePassOf(const RayCastFrame& frame, int scale);
 /**
- * `frame` as its full pass draws it: without the technique (and so unlit: unshaded), times
- * the ratio `target` holds (feature ShadowRatioApply).
+ * `frame` as its full pass draws it: without the technique (shaded, lit by the same lights;
+ * unshaded, its colour), times the ratio `target` holds (feature ShadowRatioApply).
  */
 RayCastFrame FullPassOf(const RayCastFrame& frame, int scale, const ShadowRatioTarget& target);
 

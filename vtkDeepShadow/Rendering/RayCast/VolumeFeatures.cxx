@@ -269,7 +269,11 @@ std::vector<VolumeFeature> ShadingFeatures()
       },
       nullptr },
     { "ShadowTerm", [](const Frame& f) { return f.ShadowTerm; }, nullptr, nullptr, nullptr },
-    { "ShadowRatio", [](const Frame& f) { return f.RatioPass == Frame::ShadowRatioPass::Coarse; }, nullptr,
+    { "ShadowRatio", [](const Frame& f) { return f.RatioPass == Frame::ShadowRatioPass::Coarse; },
+      [](const Frame& f, ComposedFeatures& features) {
+        features.Runtime["ShadowRatio"] = ShadowRatioShaderFeature(Normals(f));
+        features.Labels.emplace_back("ShadowRatio");
+      },
       [](const Frame& f, UniformSink& sink) { sink.Set("u_ratioScale", static_cast<float>(f.RatioScale)); },
       nullptr },
     { "ShadowRatioApply", [](const Frame& f) { return f.RatioPass == Frame::ShadowRatioPass::Full; }, nullptr,

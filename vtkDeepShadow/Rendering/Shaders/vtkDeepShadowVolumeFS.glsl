@@ -54,13 +54,13 @@ void compositeFrontToBack(inout vec4 accumulated, vec3 color, float alpha)
 //DeepShadow::Bound::Dec
 //DeepShadow::Surfaces::Dec
 //DeepShadow::Feeler::Dec
+//DeepShadow::ShadowRatio::Dec
 //DeepShadow::Lighting::Dec
 //DeepShadow::TranslucentLayers::Dec
 //DeepShadow::VolumeSegments::Dec
 //DeepShadow::Projection::Dec
 //DeepShadow::UserShader::Dec
 //DeepShadow::DatasetOpacity::Dec
-//DeepShadow::ShadowRatio::Dec
 //DeepShadow::ShadowRatioApply::Dec
 
 void main()

@@ -2,11 +2,14 @@
 // (vtkDeepShadowVolumeMapper::InteractiveShadowSubsampling; deepshadow::MakeShadowRatioTexel
 // and RenderShadowSubsampled in Core/ShadowSubsampling.h are the CPU twin). One ray per
 // u_ratioScale x u_ratioScale block of the view's pixels, through the block's centre, marched
-// shadowed as usual; it writes, per channel, its shadowed composite over the composite of the
-// samples' colours before lighting (what the full pass draws) and its opacity, and that
-// unlit composite itself. Drawn into targets of the coarse grid's size, not blended;
-// ShadowRatioApply reads them.
+// shadowed as usual; it writes, per channel, its shadowed composite over the composite of
+// what the full pass draws without the technique (an unshaded sample's colour before lighting;
+// a shaded one lit with its shadows off: SHADOW_RATIO_SHADED, lightSample again with
+// g_shadowsOff), its opacity, and that unshadowed composite itself. Drawn into targets of the
+// coarse grid's size, not blended; ShadowRatioApply reads them.
 //@Dec
+#define SHADOW_RATIO_PASS
+bool g_shadowsOff = false; // Shadow.glsl: every light unshadowed
 uniform float u_ratioScale;
 layout(location = 1) out vec4 ratioGuide;
 //@Pixel
@@ -14,7 +17,13 @@ layout(location = 1) out vec4 ratioGuide;
 //@Init
   vec3 unlitAccumulated = vec3(0.0);
 //@Unlit
+#ifdef SHADOW_RATIO_SHADED
+    g_shadowsOff = true;
+    vec3 unlitColor = lightSample(color, index, rayOrigin + receiverT * rayDirection, -rayDirection);
+    g_shadowsOff = false;
+#else
     vec3 unlitColor = color;
+#endif
 //@Impl
     unlitAccumulated += (1.0 - accumulated.a) * transfer.a * unlitColor;
 //@Output

@@ -44,6 +44,9 @@ uniform int u_shadowSlotLight[MaxLights];     // the light of each
       //DeepShadow::MeshNormal::ShadowOffset
       //DeepShadow::Isosurface::ShadowOffset
       bool shadowed = u_shadowSlot[i] >= 0;
+#ifdef SHADOW_RATIO_PASS
+      shadowed = shadowed && !g_shadowsOff; // the coarse pass's unshadowed colour (ShadowRatio)
+#endif
       vec3 visibility = shadowed ? slotVisibility[SHADOW_SLOT_ARRAY == 1 ? 0 : u_shadowSlot[i]] : vec3(1.0);
       //DeepShadow::OtherVolumeShadows::Impl
       if (shadowed)
