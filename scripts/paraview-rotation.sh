@@ -2,8 +2,11 @@
 # Benchmark: ParaView frames while rotating (interactive renders) and after (still renders),
 # with ParaView's default light kit, on the Colin27 brain MRI (181x217x181, mricron-data) at
 # 500x500: ParaView's Volume, the Shadowed Volume without a technique, and with dsm at
-# ShadowInteractiveLag 0 and at its default, and dsm-cached. Unshaded (ParaView's default), or
-# shaded with SHADE=1. Needs the plugin (scripts/build-paraview-plugin.sh).
+# ShadowInteractiveLag 0 and at its default, and dsm-cached, each at the default
+# ShadowInteractiveSubsampling (8) and, for dsm and dsm-cached at the default lag, at 1 (a
+# lookup per sample while interacting). Unshaded (ParaView's default), or shaded with SHADE=1
+# (shaded volumes look their shadows up per sample). Needs the plugin
+# (scripts/build-paraview-plugin.sh).
 #   [SHADE=1] scripts/paraview-rotation.sh [FRAMES [DEGREES]]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -34,9 +37,11 @@ PY
 . "$sdk/env.sh"
 export DISPLAY=$display
 run() { pvbatch "$root/Testing/ParaView/rotation.py" "$plugin" "$work/brain.vti" "$@" "$frames" "$degrees" 2>&1 |
-  grep -E "interactive .* ms" || { echo "pvbatch failed: $*" >&2; exit 1; }; }
+  grep -E "interactive .* ms|frames:" || { echo "pvbatch failed: $*" >&2; exit 1; }; }
 run "Volume" none 0
 run "Shadowed Volume" none 0
 run "Shadowed Volume" dsm 0
 run "Shadowed Volume" dsm 10
 run "Shadowed Volume" dsm-cached 10
+SUBSAMPLING=1 run "Shadowed Volume" dsm 10
+SUBSAMPLING=1 run "Shadowed Volume" dsm-cached 10

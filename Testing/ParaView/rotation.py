@@ -5,7 +5,10 @@ LAG (ShadowInteractiveLag, degrees) are the latter's. Each frame turns the camer
 (default 2.5) and renders it as an interactive render (what ParaView's GUI does while the
 mouse moves); then still renders, each after a turn (what it does when the mouse is let go).
 Prints one line: representation, technique, lag, interactive and still milliseconds (means),
-and the shadow builds counted over each. SHADE=1 in the environment shades the volume."""
+the shadow builds counted over each, and the maps' size after each (ShadowInteractiveSubsampling
+N rebuilds them N times coarser while interacting). SHADE=1 in the environment shades the volume;
+SUBSAMPLING=N sets ShadowInteractiveSubsampling (default: the representation's); FRAME_TIMES=1
+also prints each interactive frame's milliseconds."""
 import os
 import sys
 import time
@@ -29,6 +32,8 @@ display.Shade = int(os.environ.get("SHADE", "0"))  # ParaView's default: unshade
 if representation == "Shadowed Volume":
     display.ShadowTechnique = technique
     display.ShadowInteractiveLag = float(lag)
+    if "SUBSAMPLING" in os.environ:
+        display.ShadowInteractiveSubsampling = int(os.environ["SUBSAMPLING"])
 view.CameraPosition = [0, -400, 150]
 view.CameraFocalPoint = [0, 0, 0]
 view.CameraViewUp = [0, 0, 1]
@@ -45,6 +50,15 @@ def builds():
     return int(display.GetPropertyValue("ShadowBuilds"))
 
 
+def map_size():
+    """The light-space maps' texels a side (the technique's statistic map_size), or 0."""
+    if representation != "Shadowed Volume":
+        return 0
+    display.UpdatePropertyInformation()
+    pairs = dict(p.split("=", 1) for p in str(display.GetPropertyValue("ShadowStatistics")).split() if "=" in p)
+    return int(float(pairs.get("map_size", 0)))
+
+
 def timed(render):
     start = time.perf_counter()
     render()
@@ -57,13 +71,19 @@ for _ in range(frames):
     camera.Azimuth(degrees)
     interactive.append(timed(view.InteractiveRender))
 built = builds() - first
+if os.environ.get("FRAME_TIMES"):
+    print("frames:", " ".join("%.0f" % t for t in interactive))
+interactive_maps = map_size()
 still = []
 first = builds()
 for _ in range(5):
     camera.Azimuth(degrees)
     still.append(timed(view.StillRender))
 still_built = builds() - first
-print("%s %s lag %s: interactive %.1f ms, still %.1f ms; shadow builds: %d in %d interactive frames of %g degrees, "
-      "%d in 5 still frames" % (
+still_maps = map_size()
+print("%s %s lag %s%s: interactive %.1f ms, still %.1f ms; shadow builds: %d in %d interactive frames of %g degrees, "
+      "%d in 5 still frames; maps %d texels a side after them, %d after the still ones" % (
           representation, technique if representation != "Volume" else "-", lag if representation != "Volume" else "-",
-          sum(interactive) / len(interactive), sum(still) / len(still), built, frames, degrees, still_built))
+          ", subsampling %d" % display.ShadowInteractiveSubsampling if representation != "Volume" else "",
+          sum(interactive) / len(interactive), sum(still) / len(still), built, frames, degrees, still_built,
+          interactive_maps, still_maps))

@@ -175,6 +175,9 @@ case "$what" in
     grep -q "shadow builds: 4 in 4 interactive frames" "$out/rotation-0.log" &&
       grep -q "shadow builds: 0 in 4 interactive frames of 2 degrees, 5 in 5 still frames" "$out/rotation-10.log" ||
       { echo "interactive renders did not keep (lag 10) or rebuild (lag 0) the key light's shadow: FAILED"; exit 1; }
+    # Rebuilt while interacting at ShadowInteractiveSubsampling's default (8): maps 512 / 8.
+    grep -q "maps 64 texels a side after them, 512 after the still ones" "$out/rotation-0.log" ||
+      { echo "interactive rebuilds were not 8 times coarser, or the still ones not in full: FAILED"; exit 1; }
     compare drawn "$out/example.png" 0.05
     grep -q "representation 'Shadowed Volume', technique 'dsm'" "$out/state.log" ||
       { echo "the state file did not restore a Shadowed Volume: FAILED"; exit 1; }

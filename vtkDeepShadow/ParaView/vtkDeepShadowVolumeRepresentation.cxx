@@ -42,6 +42,8 @@ namespace
 {
 // ShadowInteractiveLag's default (degrees; the XML's default_values says the same).
 constexpr double DefaultInteractiveLag = 10.0;
+// ShadowInteractiveSubsampling's default (pixels a coarse ray; the XML's default_values too).
+constexpr int DefaultInteractiveSubsampling = 8;
 
 // The bricks of an MPI run: one per rank of ParaView's global controller.
 class vtkDeepShadowMPIBrickExchange : public vtkDeepShadowBrickExchange
@@ -117,6 +119,7 @@ vtkDeepShadowVolumeRepresentation::vtkDeepShadowVolumeRepresentation()
   // and VTK's shading depends on each rank's box (seams between the pieces of MPI ranks).
   mapper->SetShadingModelToBlinnPhong();
   mapper->SetInteractiveShadowLag(DefaultInteractiveLag);
+  mapper->SetInteractiveShadowSubsampling(DefaultInteractiveSubsampling);
   this->VolumeMapper = mapper;
   this->Exchange = vtkSmartPointer<vtkDeepShadowMPIBrickExchange>::New();
   this->Casting = vtkSmartPointer<vtkDeepShadowCastingMeshes>::New();
@@ -418,6 +421,21 @@ double vtkDeepShadowVolumeRepresentation::GetShadowInteractiveLag()
   return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetInteractiveShadowLag();
 }
 
+void vtkDeepShadowVolumeRepresentation::SetShadowInteractiveSubsampling(int pixels)
+{
+  auto* mapper = vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper);
+  if (pixels != mapper->GetInteractiveShadowSubsampling())
+  {
+    mapper->SetInteractiveShadowSubsampling(pixels);
+    this->Modified();
+  }
+}
+
+int vtkDeepShadowVolumeRepresentation::GetShadowInteractiveSubsampling()
+{
+  return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetInteractiveShadowSubsampling();
+}
+
 int vtkDeepShadowVolumeRepresentation::GetShadowBuilds()
 {
   return vtkDeepShadowVolumeMapper::SafeDownCast(this->VolumeMapper)->GetShadowBuilds();
@@ -528,4 +546,5 @@ void vtkDeepShadowVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowLights: " << (this->ShadowLights ? "all" : "the brightest") << "\n";
   os << indent << "ShadowGround: " << this->ShadowGround << "\n";
   os << indent << "ShadowInteractiveLag: " << this->GetShadowInteractiveLag() << " degrees\n";
+  os << indent << "ShadowInteractiveSubsampling: " << this->GetShadowInteractiveSubsampling() << "\n";
 }

@@ -82,6 +82,14 @@ public:
    */
   void SetShadowInteractiveLag(double degrees);
   double GetShadowInteractiveLag();
+  /**
+   * While the view is interacted with, the volume's shadows come from one ray per N x
+   * N pixels, and structures rebuilt meanwhile are N times coarser
+   * (vtkDeepShadowVolumeMapper::InteractiveShadowSubsampling); the still render looks them up
+   * per sample, in full. Default 8; 1 per sample on every frame.
+   */
+  void SetShadowInteractiveSubsampling(int pixels);
+  int GetShadowInteractiveSubsampling();
   /** Shadow structures built so far, counted per light (vtkDeepShadowVolumeMapper::GetShadowBuilds). */
   int GetShadowBuilds();
   ///@}
