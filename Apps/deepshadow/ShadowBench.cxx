@@ -176,9 +176,13 @@ int RunShadowBench(const Options& options)
         m.RebuiltForCamera && !info.FollowsView ? "  (rebuilt when the camera moved!)" : "");
       // Log axes: an error of exactly 0 would sit on the edge.
       const double chartError = std::max(error.RMSE, 1e-6);
-      if (info.TexelBytes)
+      // The bits per texel as built where the technique says (dsm-fixed with an error), else
+      // the registry's.
+      const double builtBits = vtkDeepShadowTechnique::FindStatistic(m.Statistics, "texel_bits");
+      if (builtBits > 0.0 || info.TexelBytes)
       {
-        bitsPoints.push_back({ info.Name, 8.0 * static_cast<double>(info.TexelBytes(shadow->GetParameters())), chartError });
+        bitsPoints.push_back({ info.Name,
+          builtBits > 0.0 ? builtBits : 8.0 * static_cast<double>(info.TexelBytes(shadow->GetParameters())), chartError });
       }
       ratioPoints.push_back({ info.Name, m.CameraMs / baseline, chartError });
       std::fflush(stdout);

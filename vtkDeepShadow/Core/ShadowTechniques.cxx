@@ -195,6 +195,11 @@ std::vector<ShadowParameterInfo> MakeParameters()
   fixedBits.Allowed = { 64, 128, 256, 512 };
   fixedBits.ExtraDefault = { 256 };
   list.push_back(fixedBits);
+  auto fixedError = Numeric("dsm-fixed-error", Type::Number, 0.0, 0.5, "E",
+    "an error bound instead of dsm-bits: nodes per texel from the 99th percentile of what each "
+    "texel needs to stay within it (0: the budget dsm-bits)");
+  fixedError.ExtraDefault = { 0.0 };
+  list.push_back(fixedError);
   auto slices = Numeric("slices", Type::Integer, 8, 64, "N",
     "transmittances per texel, a byte each, evenly spaced over the light's depth range");
   slices.Allowed = { 8, 16, 32, 64 };
@@ -349,17 +354,25 @@ std::vector<ShadowTechniqueInfo> MakeTechniques()
 
   // Deep shadow maps at a fixed memory budget: per texel the smallest bound whose nodes fit.
   auto fixed = LightSpaceMap(Technique("dsm-fixed", "deep shadow map, fixed budget", FixedBudgetKind,
-    { "dsm-bits" }, { { "", true }, { ":dsm-bits=64" }, { ":dsm-bits=128", true }, { ":dsm-bits=512" }, { "-cached" } }));
+    { "dsm-bits", "dsm-fixed-error" },
+    { { "", true }, { ":dsm-bits=64" }, { ":dsm-bits=128", true }, { ":dsm-bits=512" }, { ":dsm-fixed-error=0.02" },
+      { "-cached" } }));
   // N nodes fit an exponential within about 1 / (2 N^2) (linear segments through a convex
   // curve), and each texel's bound is the smallest that fits; not a bound stated in
-  // advance. What the closed-form bodies show, with room.
+  // advance. What the closed-form bodies show, with room. With an error E instead, 99 % of
+  // the texels keep it; a smooth body's all do.
   fixed.StatedError = [](const ShadowParameters& p, const StatedErrorCase&) {
+    if (FixedBudgetError(p) > 0.0)
+    {
+      return FixedBudgetError(p);
+    }
     const double nodes = FixedBudgetNodes(p);
     return 0.8 / (nodes * nodes);
   };
   fixed.MakeShadow = MakeTwin<FixedBudgetDeepShadowMap>;
   fixed.TexelBytes = [](const ShadowParameters& p) -> std::uint64_t {
-    return static_cast<std::uint64_t>(FixedBudgetBits(p)) / 8;
+    // With an error, the most it may ask for (the memory budget's worst case).
+    return static_cast<std::uint64_t>(FixedBudgetError(p) > 0.0 ? 32 * MaxFixedNodes : FixedBudgetBits(p)) / 8;
   };
   list.push_back(Menu(fixed, "Deep maps", "Deep shadow map, fixed budget"));
 

@@ -15,6 +15,30 @@ int FixedBudgetBits(const ShadowParameters& parameters)
   return static_cast<int>(FindShadowParameter("dsm-bits")->Get(parameters).at(0));
 }
 
+double FixedBudgetError(const ShadowParameters& parameters)
+{
+  return FindShadowParameter("dsm-fixed-error")->Get(parameters).at(0);
+}
+
+int FixedNodesForError(const std::vector<long long>& histogram)
+{
+  long long total = 0;
+  for (long long count : histogram)
+  {
+    total += count;
+  }
+  int nodes = 0;
+  long long below = 0;
+  // The smallest n with at least the percentile of the texels at n nodes or fewer.
+  while (nodes + 1 < static_cast<int>(histogram.size()) &&
+    static_cast<double>(below + histogram[static_cast<size_t>(nodes)]) < FixedNodePercentile * static_cast<double>(total))
+  {
+    below += histogram[static_cast<size_t>(nodes)];
+    ++nodes;
+  }
+  return std::clamp(nodes + (nodes % 2), 2, MaxFixedNodes);
+}
+
 namespace
 {
 constexpr double UnormMax = 65535.0;
@@ -60,6 +84,14 @@ std::uint16_t Unorm(double x)
 {
   return static_cast<std::uint16_t>(std::clamp(std::round(x * UnormMax), 0.0, UnormMax));
 }
+}
+
+int FixedNodesWithin(const ShadowCaster& caster, const glm::dvec3& origin, const glm::dvec3& direction,
+  double step, double bound, double depthRange)
+{
+  bool hit = false;
+  const size_t nodes = CompressFromFirstHit(caster, origin, direction, step, bound, depthRange / UnormMax, hit).size();
+  return hit ? static_cast<int>(nodes) : 0;
 }
 
 FixedBudgetTexel FitFixedBudget(const ShadowCaster& caster, const glm::dvec3& origin,
@@ -136,6 +168,23 @@ FixedBudgetDeepShadowMap::FixedBudgetDeepShadowMap(const ShadowParameters& param
   , DepthRange(LightDepthRange(
       CasterBoundsOf(caster.Grid->GetIndexToWorld(), caster.Grid->GetDims(), caster.Surfaces).Radius))
 {
+  const double error = FixedBudgetError(parameters);
+  std::vector<long long> needed(MaxFixedNodes + 2, 0); // texels by the nodes they need (last: more)
+  if (error > 0.0)
+  {
+    // An error instead of a budget: the nodes each texel needs within it, their percentile.
+    std::mutex countMutex;
+    this->ForEachTexel(threads, [&](int f, int, int, const glm::dvec3& origin, const glm::dvec3& direction) {
+      const int nodes = FixedNodesWithin(this->FaceCaster(f), origin, direction, step, error, this->DepthRange);
+      if (nodes > 0)
+      {
+        const std::lock_guard<std::mutex> lock(countMutex);
+        ++needed[static_cast<size_t>(std::min(nodes, MaxFixedNodes + 1))];
+      }
+    });
+    this->Count = FixedNodesForError(needed);
+  }
+  this->Statistics.Nodes = this->Count;
   this->Nodes.assign(this->TexelCount() * 2 * this->Count, static_cast<std::uint16_t>(UnormMax));
   std::mutex statisticsMutex;
   double epsilonTotal = 0.0;
@@ -154,6 +203,12 @@ FixedBudgetDeepShadowMap::FixedBudgetDeepShadowMap(const ShadowParameters& param
   if (this->Statistics.TexelsHit > 0)
   {
     this->Statistics.EpsilonMean = epsilonTotal / this->Statistics.TexelsHit;
+    long long beyond = 0;
+    for (size_t n = static_cast<size_t>(this->Count) + 1; n < needed.size(); ++n)
+    {
+      beyond += needed[n];
+    }
+    this->Statistics.BeyondError = static_cast<double>(beyond) / static_cast<double>(this->Statistics.TexelsHit);
   }
 }
 

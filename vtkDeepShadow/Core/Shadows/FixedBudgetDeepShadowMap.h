@@ -19,6 +19,13 @@
 // bilinear across the four nearest texels (on a CPU rasterizer the GLSL stops at the first
 // node beyond z, whose later terms are 0: in front of a medium one texel fetch). Casting meshes are steps among the nodes, as in
 // the deep shadow map. Grey only.
+//
+// An error instead of a budget (`dsm-fixed-error` E > 0): each texel whose ray absorbs
+// something is first compressed within E alone, its nodes counted; N is the 99th percentile
+// of those counts (FixedNodesForError: rounded up to even, two nodes a layer, 2 to
+// MaxFixedNodes), and the map is then fitted at N nodes as above. So 99 % of the texels keep
+// E or better, and the 1 % that need more nodes (the tail a layout sized from the mean loses)
+// get the finest bound N nodes fit.
 // GLSL twins: Shaders/Shadows/FixedBudgetDeepShadowMapBuild.glsl and ...Map.glsl.
 #ifndef deepshadow_FixedBudgetDeepShadowMap_h
 #define deepshadow_FixedBudgetDeepShadowMap_h
@@ -37,11 +44,30 @@ constexpr ShadowKind FixedBudgetKind = ShadowKind(9);
 
 /** The dsm-bits parameter: bits per texel (ShadowParameters::Extra). */
 VTKDEEPSHADOWCORE_EXPORT int FixedBudgetBits(const ShadowParameters& parameters);
-/** Nodes per texel: 32 bits each. */
+/** The dsm-fixed-error parameter: a bound instead of a budget (0: the budget dsm-bits). */
+VTKDEEPSHADOWCORE_EXPORT double FixedBudgetError(const ShadowParameters& parameters);
+/**
+ * Nodes per texel of the budget, 32 bits each (with an error instead, as many as the build
+ * finds: see FixedNodesForError).
+ */
 inline int FixedBudgetNodes(const ShadowParameters& parameters)
 {
   return FixedBudgetBits(parameters) / 32;
 }
+
+/** The most nodes an error may ask for per texel (1024 bits), and the share that must fit. */
+constexpr int MaxFixedNodes = 32;
+constexpr double FixedNodePercentile = 0.99;
+/**
+ * N for an error: the smallest count at or above which FixedNodePercentile of the texels
+ * lie, from `histogram` (texels by the nodes they need within the error, the last bin for
+ * that many or more), rounded up to even and clamped to [2, MaxFixedNodes]; 2 with no texel.
+ */
+VTKDEEPSHADOWCORE_EXPORT int FixedNodesForError(const std::vector<long long>& histogram);
+
+/** Nodes the texel's ray needs to stay within `bound` (0 where it absorbs nothing). */
+VTKDEEPSHADOWCORE_EXPORT int FixedNodesWithin(const ShadowCaster& caster, const glm::dvec3& origin,
+  const glm::dvec3& direction, double step, double bound, double depthRange);
 
 /** The bisection: the finest bound tried first, and the steps of log2 epsilon after it. */
 constexpr int FixedBoundLog2Min = -14;
@@ -71,6 +97,9 @@ struct FixedBudgetStatistics
   long TexelsHit = 0;       // texels whose ray meets something absorbing
   double EpsilonMean = 0.0; // over them
   double EpsilonMax = 0.0;
+  int Nodes = 0;            // per texel: the budget's, or what the error asked for
+  /** With an error: the share of TexelsHit that needed more than Nodes to stay within it. */
+  double BeyondError = 0.0;
 };
 
 class VTKDEEPSHADOWCORE_EXPORT FixedBudgetDeepShadowMap : public LightSpaceShadow
@@ -86,7 +115,7 @@ protected:
   glm::dvec3 MapVisibility(const MapPoint& point) const override;
 
 private:
-  int Count;         // nodes per texel
+  int Count;         // nodes per texel (with an error, found by the build)
   double DepthRange; // world depth of unorm 1
   std::vector<std::uint16_t> Nodes;
   FixedBudgetStatistics Statistics;

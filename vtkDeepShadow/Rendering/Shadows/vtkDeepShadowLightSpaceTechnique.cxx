@@ -152,9 +152,8 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   // Coarser while interacting (GetBuildCoarsening): N times smaller a side, down to 64 texels.
   const int coarsening = self->GetBuildCoarsening();
   const int size = coarsening > 1 ? std::max(std::min(self->MapSize, 64), self->MapSize / coarsening) : self->MapSize;
-  GLint maxSize = 0, maxLayers = 0;
+  GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
   if (self->MapSize > maxSize)
   {
     self->LastError = "shadow map size " + std::to_string(self->MapSize) +
@@ -214,40 +213,49 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateStructures(
   const bool keep = sameShape && !exchanging;
   const int slabs = std::max(keep ? maps.Slabs : 1, slots.Count());
   facesPerLight = std::max(facesPerLight, keep ? maps.FacesPerLight : 1);
-  const long long layers = static_cast<long long>(slabs) * facesPerLight * layersPerFace;
-  if (layers > maxLayers)
-  {
-    self->LastError = std::to_string(layers) + " light-space layers (" + std::to_string(slabs) +
-      " lights x " + std::to_string(facesPerLight) + " faces x " + std::to_string(layersPerFace) +
-      " per face) exceed this GL's limit of " + std::to_string(maxLayers);
-    return false;
-  }
   if (!sameShape || maps.Slabs != slabs || maps.FacesPerLight != facesPerLight)
   {
-    deepshadow::DeleteTexture(maps.Texture);
-    while (glGetError() != GL_NO_ERROR)
-    {
-      // errors of earlier GL calls are not ours to report
-    }
-    // Bound on a unit of our own while it is made, chosen through VTK's state: VTK caches the
-    // active unit and what its textures are bound to (ParaView warns every frame when they
-    // change behind it).
-    maps.Texture = deepshadow::NewArrayTexture(
-      context.Window, format, size, size, static_cast<int>(layers));
-    if (glGetError() != GL_NO_ERROR)
-    {
-      self->LastError = "the GL could not allocate " +
-        std::to_string(layers * size * size * BytesPerTexel(format)) +
-        " bytes of light-space maps";
-      deepshadow::DeleteTexture(maps.Texture);
-      return false;
-    }
     maps.Format = format;
     maps.Size = size;
     maps.Slabs = slabs;
     maps.FacesPerLight = facesPerLight;
     maps.LayersPerFace = layersPerFace;
     slots.Invalidate();
+    return this->AllocateMapTexture(context);
+  }
+  return true;
+}
+
+bool vtkDeepShadowLightSpaceTechnique::Hooks::AllocateMapTexture(const deepshadow::ShadowContext& context)
+{
+  vtkDeepShadowLightSpaceTechnique* self = this->Self;
+  Maps& maps = *self->LightMaps;
+  const long long layers = static_cast<long long>(maps.Slabs) * maps.FacesPerLight * maps.LayersPerFace;
+  GLint maxLayers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+  if (layers > maxLayers)
+  {
+    self->LastError = std::to_string(layers) + " light-space layers (" + std::to_string(maps.Slabs) +
+      " lights x " + std::to_string(maps.FacesPerLight) + " faces x " + std::to_string(maps.LayersPerFace) +
+      " per face) exceed this GL's limit of " + std::to_string(maxLayers);
+    deepshadow::DeleteTexture(maps.Texture);
+    return false;
+  }
+  deepshadow::DeleteTexture(maps.Texture);
+  while (glGetError() != GL_NO_ERROR)
+  {
+    // errors of earlier GL calls are not ours to report
+  }
+  // Bound on a unit of our own while it is made, chosen through VTK's state: VTK caches the
+  // active unit and what its textures are bound to (ParaView warns every frame when they
+  // change behind it).
+  maps.Texture = deepshadow::NewArrayTexture(context.Window, maps.Format, maps.Size, maps.Size, static_cast<int>(layers));
+  if (glGetError() != GL_NO_ERROR)
+  {
+    self->LastError = "the GL could not allocate " +
+      std::to_string(layers * maps.Size * maps.Size * BytesPerTexel(maps.Format)) + " bytes of light-space maps";
+    deepshadow::DeleteTexture(maps.Texture);
+    return false;
   }
   return true;
 }
@@ -284,17 +292,25 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
 {
   vtkDeepShadowLightSpaceTechnique* self = this->Self;
   Maps& maps = *self->LightMaps;
-  // Clustered faces march their cluster's box only.
-  if (!Internals::BeginBuildPass(self, maps.Build, vtkDeepShadowLightSpaceCS, context, "Build",
-        maps.Clusters.BuildDefines() + self->GetBuildSource()))
+  deepshadow::UniformSink sink(&maps.Build);
+  // The build program for the current layout. Clustered faces march their cluster's box only.
+  auto beginPass = [&] {
+    if (!Internals::BeginBuildPass(self, maps.Build, vtkDeepShadowLightSpaceCS, context, "Build",
+          maps.Clusters.BuildDefines() + self->GetBuildSource()))
+    {
+      return false;
+    }
+    maps.Build.Set("u_size", maps.Size);
+    maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
+    maps.Build.Set("u_lightDepthRange", static_cast<float>(deepshadow::LightDepthRange(maps.CasterRadius)));
+    this->SetBuildUniforms(sink, context);
+    glBindImageTexture(0, maps.Texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, maps.Format);
+    return true;
+  };
+  if (!beginPass())
   {
     return false;
   }
-  deepshadow::UniformSink sink(&maps.Build);
-  maps.Build.Set("u_size", maps.Size);
-  maps.Build.Set("u_layersPerFace", maps.LayersPerFace);
-  maps.Build.Set("u_lightDepthRange", static_cast<float>(deepshadow::LightDepthRange(maps.CasterRadius)));
-  this->SetBuildUniforms(sink, context);
   const bool defers = self->DefersTexels();
   if (defers)
   {
@@ -313,7 +329,6 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, maps.Deferred);
   }
-  glBindImageTexture(0, maps.Texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, maps.Format);
   maps.Clusters.ActivateLabels();
   // One slot's faces: a dispatch each, and one more for a face's deferred texels.
   auto buildSlot = [&](int slot) {
@@ -353,10 +368,27 @@ bool vtkDeepShadowLightSpaceTechnique::Hooks::BuildStructures(deepshadow::Shadow
       }
     }
   };
-  // A technique may ask for slots again (the deep shadow map's node pool was short).
+  // A technique may ask for slots again: the deep shadow map's node pool was short, or
+  // dsm-fixed's build found that an error asks for other layers per face (then every slot is
+  // built again in the new layout).
   for (std::vector<int> building = stale; !building.empty();
        building = this->AfterBuild(building, slots.Count()))
   {
+    const int layersPerFace = this->GetLayersPerFace(context);
+    if (layersPerFace != maps.LayersPerFace)
+    {
+      maps.LayersPerFace = layersPerFace;
+      Internals::EndBuildPass(self, context);
+      if (!this->AllocateMapTexture(context) || !beginPass())
+      {
+        return false;
+      }
+      building.clear();
+      for (int slot = 0; slot < slots.Count(); ++slot)
+      {
+        building.push_back(slot);
+      }
+    }
     self->BeginMapBuild();
     for (int slot : building)
     {

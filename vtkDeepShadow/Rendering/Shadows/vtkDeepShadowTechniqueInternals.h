@@ -91,9 +91,12 @@ public:
   /**
    * After a build of the slots `built` (of `slotCount`), read back by EndMapBuild: keeps what
    * the build found, and returns the slots to build again (the deep shadow map's node pool
-   * ran out); none by default.
+   * ran out); none by default. Should GetLayersPerFace() now say otherwise, the maps are laid
+   * out again and every slot is built.
    */
   virtual std::vector<int> AfterBuild(const std::vector<int>& /*built*/, int /*slotCount*/) { return {}; }
+  /** (Re)allocates the maps' texture for their current shape; false (and LastError) if it cannot. */
+  bool AllocateMapTexture(const deepshadow::ShadowContext& context);
   virtual void SetMapLookupUniforms(deepshadow::UniformSink&, const deepshadow::ShadowContext&) {}
 
   bool AllocateStructures(deepshadow::ShadowContext& context, deepshadow::ShadowSlots& slots) override;

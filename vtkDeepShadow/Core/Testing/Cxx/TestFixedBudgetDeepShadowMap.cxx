@@ -142,3 +142,70 @@ TEST(FixedBudgetDeepShadowMap, FirstNodeIsExactWhereTheRayFirstAbsorbs)
   EXPECT_LT(grey, 0.9) << "the variable-node map at two layers leaks the sheet forward";
   EXPECT_NEAR(fixed->Visibility({ 16.0, 16.0, 8.0 }).r, 0.0, 1e-3);
 }
+
+// An error instead of a budget: the nodes are the 99th percentile of what the texels need,
+// rounded up to even (two a layer), 2 to 32.
+TEST(FixedBudgetDeepShadowMap, NodesForAnErrorAreThe99thPercentileRoundedUpToEven)
+{
+  std::vector<long long> histogram(MaxFixedNodes + 2, 0);
+  EXPECT_EQ(FixedNodesForError(histogram), 2) << "no texel absorbs anything";
+  histogram[4] = 990;
+  histogram[20] = 10;
+  EXPECT_EQ(FixedNodesForError(histogram), 4) << "99 % need 4";
+  histogram[20] = 11;
+  EXPECT_EQ(FixedNodesForError(histogram), 20) << "more than 1 % need 20";
+  histogram[20] = 0;
+  histogram[5] = 11;
+  EXPECT_EQ(FixedNodesForError(histogram), 6) << "5, rounded up";
+  histogram.assign(histogram.size(), 0);
+  histogram.back() = 3;
+  EXPECT_EQ(FixedNodesForError(histogram), MaxFixedNodes) << "more than the most";
+}
+
+// A slab that few nodes fit within the error, and a column of thin opaque layers that needs
+// many: a column under 1 % of the texels is left beyond the error (the finest bound the
+// slab's nodes fit), one over 1 % sizes every texel's nodes, and then no texel is beyond.
+TEST(FixedBudgetDeepShadowMap, AnErrorSizesTheNodesSo99PercentKeepIt)
+{
+  auto volume = [](int columnTexels) {
+    std::vector<float> values(33 * 33 * 33, 0.0f);
+    for (int k = 0; k < 33; ++k)
+      for (int j = 0; j < 33; ++j)
+        for (int i = 0; i < 33; ++i)
+        {
+          const bool column = i < columnTexels && j < columnTexels && k >= 4 && k <= 28;
+          values[i + 33 * (j + 33 * k)] = column ? (k % 3 == 0 ? 2.0f : 0.0f) : (k >= 12 && k <= 20 ? 1.0f : 0.0f);
+        }
+    return std::make_shared<VolumeGrid>(glm::ivec3(33), values, glm::dmat4(1.0));
+  };
+  const TransferFunction transfer = TransferFunction::Grey({ { 0.0, 0.0 }, { 0.999, 0.0 }, { 1.0, 0.2 }, { 2.0, 0.6 } });
+  ShadowParameters p = Fixed(256);
+  FindShadowParameter("dsm-fixed-error")->Set(p, { 0.01 });
+  int narrow = 0, wide = 0;
+  for (int columnTexels : { 2, 6 })
+  {
+    const auto grid = volume(columnTexels);
+    ShadowCaster caster;
+    caster.Grid = grid.get();
+    caster.Transfer = &transfer;
+    caster.Sampling = Interpolation::Nearest;
+    const auto map = MakeLightShadow(p, caster, FromAbove(), 0.5, 2);
+    const FixedBudgetStatistics& stats = dynamic_cast<const FixedBudgetDeepShadowMap&>(*map).GetStatistics();
+    std::printf("column of %d^2 voxels: %d nodes, %.4f of %ld texels beyond the error, bound at most %.4f\n",
+      columnTexels, stats.Nodes, stats.BeyondError, stats.TexelsHit, stats.EpsilonMax);
+    EXPECT_LE(stats.BeyondError, 1.0 - FixedNodePercentile);
+    EXPECT_EQ(map->Bytes(), 32u * 32 * stats.Nodes * 4);
+    (columnTexels == 2 ? narrow : wide) = stats.Nodes;
+    if (columnTexels == 2)
+    {
+      EXPECT_GT(stats.BeyondError, 0.0) << "the column's texels need more";
+      EXPECT_GT(stats.EpsilonMax, 0.01) << "and get a coarser bound";
+    }
+    else
+    {
+      EXPECT_EQ(stats.BeyondError, 0.0);
+      EXPECT_LE(stats.EpsilonMax, 0.01);
+    }
+  }
+  EXPECT_GT(wide, narrow);
+}

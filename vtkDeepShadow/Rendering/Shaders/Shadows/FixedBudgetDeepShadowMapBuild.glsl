@@ -5,8 +5,19 @@
 // finest bound that fits FIXED_NODES nodes (2^FIXED_BOUND_LOG2_MIN, else a bisection of
 // log2 epsilon in FIXED_BISECTION_STEPS steps; each attempt marches the ray again and stops
 // once it needs more nodes). Two nodes per RGBA16 layer: depth / u_lightDepthRange, visibility.
+// With an error instead of a budget (FIXED_COUNT_BINS: FixedNodesWithin's twin), each texel
+// first counts the nodes it needs within u_countBound, into FixedNodeCounts: the technique
+// sizes the map from their percentile and builds it again when that changed.
 //@Dec
 layout(rgba16, binding = 0) uniform writeonly image2DArray u_output;
+#ifdef FIXED_COUNT_BINS
+layout(std430, binding = 1) buffer FixedNodeCounts
+{
+  uint u_nodeCounts[]; // per slot FIXED_COUNT_BINS: texels by the nodes they need (last: more)
+};
+uniform float u_countBound;
+uniform int u_countSlot;
+#endif
 uniform float u_lightDepthRange; // world depth of unorm 1 (LightDepthRange; set by the base class)
 const float UnormMax = 65535.0;
 
@@ -15,7 +26,8 @@ float g_depth[FIXED_NODES];
 float g_value[FIXED_NODES];
 float g_bestDepth[FIXED_NODES];
 float g_bestValue[FIXED_NODES];
-int g_count; // nodes emitted, beyond FIXED_NODES too (then the attempt failed)
+int g_count; // nodes emitted, beyond g_limit too (then the attempt failed)
+int g_limit; // nodes this attempt may emit
 // The compressor's state (VisibilityCompressor's), for one channel.
 float g_bound;
 bool g_hasSegment;
@@ -114,7 +126,7 @@ bool addPoint(float t)
   float v = g_transmittance;
   bool beyond = v <= g_bound;
   addBounded(floor(t / u_lightDepthRange * UnormMax + 0.5), v - g_bound, beyond ? g_bound : v + g_bound, v);
-  return !beyond && g_count <= FIXED_NODES;
+  return !beyond && g_count <= g_limit;
 }
 
 bool visitSample(int j, float t, float scalar)
@@ -167,10 +179,12 @@ bool visitSurface(float t, int surface)
   return addPoint(t);
 }
 //@Texel
-// One attempt at `bound`; true if the nodes fit (or the ray absorbs nothing).
-bool attemptTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit, float bound)
+// One attempt at `bound` within `limit` nodes; true if they fit (or the ray absorbs nothing),
+// and then they are kept as the best when `limit` is FIXED_NODES.
+bool attemptTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit, float bound, int limit)
 {
   g_bound = bound;
+  g_limit = limit;
   g_count = 0;
   g_hasSegment = false;
   g_hit = false;
@@ -179,11 +193,15 @@ bool attemptTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tEx
   g_lastDepth = -1.0;
   marchTexel(indexOrigin, indexDirection, tEnter, tExit);
   // A level last segment needs no end node.
-  if (g_hasSegment && g_count <= FIXED_NODES && !(g_slopeLow <= 0.0 && 0.0 <= g_slopeHigh))
+  if (g_hasSegment && g_count <= g_limit && !(g_slopeLow <= 0.0 && 0.0 <= g_slopeHigh))
   {
     endSegment();
   }
-  bool fits = g_count <= FIXED_NODES;
+  bool fits = g_count <= g_limit;
+  if (limit != FIXED_NODES)
+  {
+    return fits;
+  }
   float last = g_count > 0 ? g_value[max(g_count - 1, 0)] : 1.0;
   for (int i = 0; fits && i < FIXED_NODES; ++i)
   {
@@ -195,7 +213,14 @@ bool attemptTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tEx
 
 void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit)
 {
-  if (!attemptTexel(indexOrigin, indexDirection, tEnter, tExit, exp2(float(FIXED_BOUND_LOG2_MIN))) && g_hit)
+#ifdef FIXED_COUNT_BINS
+  attemptTexel(indexOrigin, indexDirection, tEnter, tExit, u_countBound, FIXED_COUNT_BINS - 2);
+  if (g_hit)
+  {
+    atomicAdd(u_nodeCounts[u_countSlot * FIXED_COUNT_BINS + min(g_count, FIXED_COUNT_BINS - 1)], 1u);
+  }
+#endif
+  if (!attemptTexel(indexOrigin, indexDirection, tEnter, tExit, exp2(float(FIXED_BOUND_LOG2_MIN)), FIXED_NODES) && g_hit)
   {
     // lo never fits, hi always does (one node at a bound of 1).
     float lo = float(FIXED_BOUND_LOG2_MIN), hi = 0.0;
@@ -203,7 +228,7 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     for (int i = 0; i < FIXED_BISECTION_STEPS; ++i)
     {
       float middle = 0.5 * (lo + hi);
-      if (attemptTexel(indexOrigin, indexDirection, tEnter, tExit, exp2(middle)))
+      if (attemptTexel(indexOrigin, indexDirection, tEnter, tExit, exp2(middle), FIXED_NODES))
       {
         hi = middle;
         found = true;
@@ -215,7 +240,7 @@ void buildTexel(vec3 indexOrigin, vec3 indexDirection, float tEnter, float tExit
     }
     if (!found)
     {
-      attemptTexel(indexOrigin, indexDirection, tEnter, tExit, 1.0);
+      attemptTexel(indexOrigin, indexDirection, tEnter, tExit, 1.0, FIXED_NODES);
     }
   }
   // As grid steps plus a quarter, so that a conversion that truncates stores them as one
