@@ -30,11 +30,11 @@ ShadowRatioTexel MakeShadowRatioTexel(const glm::dvec4& shadowed, const glm::dve
     }
   }
   texel.Alpha = shadowed.a;
-  texel.Unlit = unshadowed;
+  texel.Unshadowed = unshadowed;
   return texel;
 }
 
-glm::dvec3 UpsampleShadowRatio(const ShadowRatioImage& ratio, int x, int y, const glm::dvec3& unlit)
+glm::dvec3 UpsampleShadowRatio(const ShadowRatioImage& ratio, int x, int y, const glm::dvec3& unshadowed)
 {
   // The pixel's centre in coarse texels, whose centres sit at integers.
   const glm::dvec2 u = (glm::dvec2(x, y) + 0.5) / static_cast<double>(ratio.Scale) - 0.5;
@@ -47,7 +47,7 @@ glm::dvec3 UpsampleShadowRatio(const ShadowRatioImage& ratio, int x, int y, cons
     const glm::ivec2 offset(corner & 1, corner >> 1);
     const glm::ivec2 texel = glm::clamp(glm::ivec2(base) + offset, glm::ivec2(0), ratio.Size - 1);
     const ShadowRatioTexel& r = ratio.At(texel.x, texel.y);
-    const double apart = glm::distance(r.Unlit, unlit) / ShadowRatioGuideScale;
+    const double apart = glm::distance(r.Unshadowed, unshadowed) / ShadowRatioGuideScale;
     const double w = (offset.x ? f.x : 1.0 - f.x) * (offset.y ? f.y : 1.0 - f.y) * r.Alpha / (1.0 + apart * apart);
     sum += w * r.Ratio;
     weight += w;
@@ -89,11 +89,12 @@ Image RenderShadowSubsampled(const Scene& scene, const MarchSettings& settings, 
         const glm::dvec2 at = ShadowRatioRayPosition(i, j, scale);
         const Ray ray = scene.View.RayThrough(at.x, at.y);
         const double offset = offsetAt(static_cast<uint32_t>(at.x), static_cast<uint32_t>(at.y));
-        const glm::dvec4 lit =
+        const glm::dvec4 shadowedComposite =
           ReferenceRenderer::MarchRay(scene, shadowed, withShadows, ray, unlimited, offset, settings);
-        const glm::dvec4 unlit =
+        const glm::dvec4 unshadowedComposite =
           ReferenceRenderer::MarchRay(scene, unshadowed, without, ray, unlimited, offset, settings);
-        ratio.Texels[static_cast<size_t>(j) * ratio.Size.x + i] = MakeShadowRatioTexel(lit, glm::dvec3(unlit));
+        ratio.Texels[static_cast<size_t>(j) * ratio.Size.x + i] =
+          MakeShadowRatioTexel(shadowedComposite, glm::dvec3(unshadowedComposite));
       }
     },
     threads);

@@ -53,7 +53,7 @@ struct ShadowRatioTexel
 {
   glm::dvec3 Ratio{ 1.0 }; // shadowed / unshadowed composite, per channel
   double Alpha = 0.0;      // its opacity
-  glm::dvec3 Unlit{ 0.0 }; // the unshadowed composite (premultiplied), the upsampling's guide
+  glm::dvec3 Unshadowed{ 0.0 }; // the unshadowed composite (premultiplied), the upsampling's guide
 };
 
 /**
@@ -79,12 +79,12 @@ struct ShadowRatioImage
 };
 
 /**
- * The ratio at full-resolution pixel (x, y) whose unshadowed composite is `unlit`: the four
+ * The ratio at full-resolution pixel (x, y) whose unshadowed composite is `unshadowed`: the four
  * coarse texels around its centre, clamped to the grid, each weighted by its bilinear weight,
- * its opacity and 1 / (1 + (|its Unlit - unlit| / ShadowRatioGuideScale)^2); 1 where those
+ * its opacity and 1 / (1 + (|its Unshadowed - unshadowed| / ShadowRatioGuideScale)^2); 1 where those
  * weights sum to 1e-6 or less.
  */
-VTKDEEPSHADOWCORE_EXPORT glm::dvec3 UpsampleShadowRatio(const ShadowRatioImage& ratio, int x, int y, const glm::dvec3& unlit);
+VTKDEEPSHADOWCORE_EXPORT glm::dvec3 UpsampleShadowRatio(const ShadowRatioImage& ratio, int x, int y, const glm::dvec3& unshadowed);
 
 /**
  * The mapper's interactive frame of a scene of one volume and no meshes: the coarse pass of

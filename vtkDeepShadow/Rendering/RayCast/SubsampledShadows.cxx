@@ -10,35 +10,20 @@
 namespace deepshadow
 {
 
-std::string WhyShadowsPerSample(const RayCastFrame& frame)
+bool CanSubsampleShadows(const RayCastFrame& frame)
 {
   const ShadowContext& context = frame.Context;
-  if (frame.ShadowTerm)
-  {
-    return "the shadow term is drawn";
-  }
-  if (frame.Projection.Mode != BlendMode::Composite || !context.IsoValues.empty())
-  {
-    return "not composited";
-  }
-  if (frame.Layers || frame.Segments)
-  {
-    return "translucent meshes or another volume along the rays";
-  }
-  if (frame.UserCode)
-  {
-    return "the volume's shader code";
-  }
-  if (!context.OtherComponents.empty() || context.MaskFeature() == "LabelMap")
-  {
-    return "several components or a label map";
-  }
-  return "";
+  // Whatever composites other than the volume's samples, or lights them its own way, keeps
+  // the lookup per sample: the shadow term, projections and isosurfaces, translucent meshes
+  // or another volume along the rays, the user's code, several components, a label map.
+  return !frame.ShadowTerm && frame.Projection.Mode == BlendMode::Composite && context.IsoValues.empty() &&
+    !frame.Layers && !frame.Segments && !frame.UserCode && context.OtherComponents.empty() &&
+    context.MaskFeature() != "LabelMap";
 }
 
 int ShadowSubsampling(const RayCastFrame& frame, int requested)
 {
-  return frame.Interactive && requested > 1 && WhyShadowsPerSample(frame).empty() ? requested : 1;
+  return frame.Interactive && requested > 1 && CanSubsampleShadows(frame) ? requested : 1;
 }
 
 RayCastFrame CoarsePassOf(const RayCastFrame& frame, int scale)

@@ -12,7 +12,6 @@
 
 #include <glm/vec2.hpp>
 
-#include <string>
 
 class vtkOpenGLRenderWindow;
 class vtkWindow;
@@ -21,12 +20,12 @@ namespace deepshadow
 {
 
 /**
- * Why `frame` (interactive, with a technique) cannot take its shadows from the coarse grid,
- * or "" when it can: a volume of one component composited alone (no translucent meshes, no
- * other volume interleaved, no shader code of the user's, no label map or isosurface, the
- * colour not the shadow term). The others keep a lookup per sample.
+ * Whether `frame` (interactive, with a technique) can take its shadows from the coarse grid:
+ * a volume of one component composited alone (no translucent meshes, no other volume
+ * interleaved, no shader code of the user's, no label map or isosurface, the colour not the
+ * shadow term). The others keep a lookup per sample.
  */
-std::string WhyShadowsPerSample(const RayCastFrame& frame);
+bool CanSubsampleShadows(const RayCastFrame& frame);
 
 /**
  * Pixels a coarse ray for `frame` with a technique at the mapper's `requested` subsampling:
@@ -46,7 +45,7 @@ RayCastFrame FullPassOf(const RayCastFrame& frame, int scale, const ShadowRatioT
 
 /**
  * The coarse pass's render targets: per coarse ray, two RGBA16F texels (the ratio and the
- * opacity; the unlit composite).
+ * opacity; the unshadowed composite).
  */
 class ShadowRatioTarget
 {

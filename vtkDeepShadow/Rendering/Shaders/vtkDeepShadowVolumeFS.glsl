@@ -129,7 +129,7 @@ void main()
       continue;
     }
     vec3 color = transfer.rgb;
-    //DeepShadow::ShadowRatio::Unlit
+    //DeepShadow::ShadowRatio::Unshadowed
     //DeepShadow::Lighting::Impl
     //DeepShadow::LabelMap::Lit
     //DeepShadow::VolumeSegments::Impl

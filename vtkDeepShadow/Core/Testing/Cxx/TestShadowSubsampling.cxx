@@ -10,7 +10,7 @@ using namespace deepshadow;
 
 namespace
 {
-// A 2 x 2 grid of 4 pixels a ray, every texel seeing the same unlit colour.
+// A 2 x 2 grid of 4 pixels a ray, every texel seeing the same unshadowed colour.
 ShadowRatioImage Grid(const glm::dvec3& r00, const glm::dvec3& r10, const glm::dvec3& r01, const glm::dvec3& r11)
 {
   ShadowRatioImage image;
@@ -21,7 +21,7 @@ ShadowRatioImage Grid(const glm::dvec3& r00, const glm::dvec3& r10, const glm::d
     ShadowRatioTexel texel;
     texel.Ratio = r;
     texel.Alpha = 1.0;
-    texel.Unlit = glm::dvec3(0.5);
+    texel.Unshadowed = glm::dvec3(0.5);
     image.Texels.push_back(texel);
   }
   return image;
@@ -42,7 +42,7 @@ TEST(ShadowSubsampling, TexelIsShadowedOverUnshadowedPerChannel)
   EXPECT_DOUBLE_EQ(t.Ratio.g, 1.0);
   EXPECT_DOUBLE_EQ(t.Ratio.b, 1.0); // nothing unshadowed to scale: 1
   EXPECT_DOUBLE_EQ(t.Alpha, 0.8);
-  EXPECT_EQ(t.Unlit, glm::dvec3(0.4, 0.3, 0.0));
+  EXPECT_EQ(t.Unshadowed, glm::dvec3(0.4, 0.3, 0.0));
 }
 
 TEST(ShadowSubsampling, UpsamplingIsBilinearBetweenRayCentres)
@@ -69,9 +69,9 @@ TEST(ShadowSubsampling, RaysThatSawNothingOrSomethingElseCountLess)
   EXPECT_NEAR(UpsampleShadowRatio(image, 3, 4, glm::dvec3(0.5)).r, 0.625 * 0.2 + 0.375 * 1.0, 1e-12);
   image.Texels[1].Alpha = image.Texels[3].Alpha = 0.0;
   EXPECT_NEAR(UpsampleShadowRatio(image, 3, 4, glm::dvec3(0.5)).r, 0.2, 1e-12);
-  // Rays whose unlit composite differs by the guide's scale count half.
+  // Rays whose unshadowed composite differs by the guide's scale count half.
   image.Texels[1].Alpha = image.Texels[3].Alpha = 1.0;
-  image.Texels[1].Unlit = image.Texels[3].Unlit = glm::dvec3(0.5 + ShadowRatioGuideScale, 0.5, 0.5);
+  image.Texels[1].Unshadowed = image.Texels[3].Unshadowed = glm::dvec3(0.5 + ShadowRatioGuideScale, 0.5, 0.5);
   EXPECT_NEAR(UpsampleShadowRatio(image, 3, 4, glm::dvec3(0.5)).r,
     (0.625 * 0.2 + 0.5 * 0.375 * 1.0) / (0.625 + 0.5 * 0.375), 1e-12);
   // No ray saw anything: unshadowed.

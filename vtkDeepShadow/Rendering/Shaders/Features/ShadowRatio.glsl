@@ -15,19 +15,19 @@ layout(location = 1) out vec4 ratioGuide;
 //@Pixel
   pixel = gl_FragCoord.xy * u_ratioScale; // the block's centre, in the view's pixels
 //@Init
-  vec3 unlitAccumulated = vec3(0.0);
-//@Unlit
+  vec3 unshadowedAccumulated = vec3(0.0);
+//@Unshadowed
 #ifdef SHADOW_RATIO_SHADED
     g_shadowsOff = true;
-    vec3 unlitColor = lightSample(color, index, rayOrigin + receiverT * rayDirection, -rayDirection);
+    vec3 unshadowedColor = lightSample(color, index, rayOrigin + receiverT * rayDirection, -rayDirection);
     g_shadowsOff = false;
 #else
-    vec3 unlitColor = color;
+    vec3 unshadowedColor = color;
 #endif
 //@Impl
-    unlitAccumulated += (1.0 - accumulated.a) * transfer.a * unlitColor;
+    unshadowedAccumulated += (1.0 - accumulated.a) * transfer.a * unshadowedColor;
 //@Output
-  fragColor = vec4(mix(vec3(1.0), accumulated.rgb / max(unlitAccumulated, vec3(1e-30)),
-                     greaterThan(unlitAccumulated, vec3(1e-6))),
+  fragColor = vec4(mix(vec3(1.0), accumulated.rgb / max(unshadowedAccumulated, vec3(1e-30)),
+                     greaterThan(unshadowedAccumulated, vec3(1e-6))),
     accumulated.a);
-  ratioGuide = vec4(unlitAccumulated, 0.0);
+  ratioGuide = vec4(unshadowedAccumulated, 0.0);
