@@ -597,7 +597,8 @@ bool vtkDeepShadowVolumeMapper::PrepareLightsAndShadows(deepshadow::RayCastFrame
   if (technique)
   {
     context.Transfer = adapter::MakeTransferFunction(frame.Property, context.OpacityUnitScale);
-    // Shadows from the coarse grid while interacting: structures rebuilt as coarse.
+    // Shadows from the coarse grid while interacting (drawn so by Draw): structures rebuilt as
+    // coarse.
     context.RebuildCoarsening = deepshadow::ShadowSubsampling(frame, this->InteractiveShadowSubsampling);
     const bool prepared = vtkDeepShadowTechnique::Internals::Prepare(technique, context);
     const std::vector<std::string>& passes = technique->GetLastPasses();
@@ -656,7 +657,8 @@ bool vtkDeepShadowVolumeMapper::Draw(deepshadow::RayCastFrame& frame)
   // With layers the shader composited the opaque image itself; segments are not colours.
   const bool blend = !frame.Layers && !frame.Segments;
 
-  const int scale = frame.Technique ? deepshadow::ShadowSubsampling(frame, this->InteractiveShadowSubsampling) : 1;
+  // Decided once, before the technique prepared its structures for it.
+  const int scale = frame.Technique ? frame.Context.RebuildCoarsening : 1;
   if (scale > 1 && !impl.Ratio.Allocate(window, frame.Width, frame.Height, scale))
   {
     this->ReportError("no room for the coarse grid of shadows while interacting: shadows per sample");

@@ -80,7 +80,8 @@ struct ShadowContext
    * InteractiveShadowSubsampling N > 1): a structure that must be rebuilt is built N times
    * coarser (a light-space technique's maps N times smaller a side, as the coarse rays are N
    * pixels apart) and stays so while these frames last; the first frame without this builds it
-   * in full again. 1: full detail.
+   * in full again. 1: full detail. It is the frame's subsampling, decided once
+   * (deepshadow::ShadowSubsampling) and read again by the mapper's draw.
    */
   int RebuildCoarsening = 1;
   const BoundTextures* Bound = nullptr; // null: the volume fills its box
