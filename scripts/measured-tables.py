@@ -2,9 +2,11 @@
 """Measures one of the documentation's tables and writes it, stamped, as a page of its own.
 
     scripts/measured-tables.py TABLE [--tool build/bin/deepshadow] [--out Documentation/Measured]
+                               [--page NAME]
     scripts/measured-tables.py --check FILE...
 
-TABLE is one of the names below. The page says what measured it (the command), where (commit,
+TABLE is one of the names below; the page is OUT/TABLE.md, or OUT/NAME.md with --page (the same
+table measured elsewhere, e.g. frame-budget-gpu on a GPU). The page says what measured it (the command), where (commit,
 machine, GL renderer) and when, and ends with a digest of its text: --check recomputes the
 digest and fails on a page edited by hand (Documentation.MeasuredTables runs it over every
 page). --quick measures a tiny case instead, to test the script itself; its pages are marked
