@@ -3,8 +3,8 @@
 # EGL on its driver instead of llvmpipe. Writes OUTDIR (default out/gpu): probe.json (which
 # driver drew), ctest.txt, bench.json (ours against VTK's mapper), shadows.json (every
 # technique: frame times, build times, errors), measured/frame-budget-gpu.md (the deep shadow
-# maps' frame budget page, to commit as Documentation/Measured/frame-budget-gpu.md), gallery/
-# and scenes/ (pictures to look at).
+# maps' frame budget page, to commit as Documentation/Measured/frame-budget-gpu.md; its
+# progress in frame-budget.txt), gallery/ and scenes/ (pictures to look at).
 # Needs a build (scripts/setup.sh). Where the driver's EGL vendor file is outside glvnd's
 # default folders (containers often mount it elsewhere), point __EGL_VENDOR_LIBRARY_FILENAMES
 # at it. GPU_CHECK_CTEST_ARGS adds ctest arguments (e.g. -E to leave out tests whose tools the
@@ -35,7 +35,7 @@ echo "ctest: $(grep -E 'tests passed|tests failed' "$out/ctest.txt" | tail -1) (
 step "$bin/deepshadow" bench --json "$out/bench.json"
 step "$bin/deepshadow" shadow-bench --json "$out/shadows.json"
 step python3 "$root/scripts/measured-tables.py" frame-budget --page frame-budget-gpu --tool "$bin/deepshadow" \
-  --out "$out/measured" 2>/dev/null
+  --out "$out/measured" 2>"$out/frame-budget.txt" || echo "frame budget page: failed (see $out/frame-budget.txt)"
 step "$bin/deepshadow" gallery --out "$out/gallery" | tail -1
 step "$bin/deepshadow" all --out "$out/scenes" | tail -1
 step "$bin/deepshadow" bench --blend-modes all --json "$out/bench-modes.json"
